@@ -1,0 +1,117 @@
+#pragma once
+// The building model every part of villa speaks: the layout JSON of shared/design/FORMAT.md, as types.
+// Units are metres; x, y in the plan; levels stack upward kLevelHeight apart (level 0 = ground floor).
+// Polygons are counter-clockwise rings without a repeated closing point.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace villa {
+
+inline constexpr double kLevelHeight = 2.8;    // m between floors
+inline constexpr double kTolerance = 1e-6;     // m, geometric tolerance of every rule
+inline constexpr double kStairRoomSize = 4.0;  // m, the utility room holding the staircase is 4 x 4
+inline constexpr int kMaxFloors = 3;
+inline constexpr int kMaxRoomsPerFloor = 6;
+
+struct Point {
+  double x = 0.0;
+  double y = 0.0;
+  friend bool operator==(const Point&, const Point&) = default;
+};
+
+// A simple polygon: counter-clockwise, first vertex not repeated at the end.
+using Ring = std::vector<Point>;
+
+// A 1D element's straight segment.
+struct Segment {
+  Point a;
+  Point b;
+  friend bool operator==(const Segment&, const Segment&) = default;
+};
+
+// The ten functional areas, plus kRoom for an unlabelled room straight out of the partitioner.
+enum class Category {
+  kRoom,
+  kLivingRoom,
+  kBedroom,
+  kKitchen,
+  kBathroom,
+  kDiningRoom,
+  kChildrenRoom,
+  kOffice,
+  kMeetingRoom,
+  kUtilityRoom,  // holds the staircase
+  kBalcony,
+};
+inline constexpr int kCategoryCount = 11;
+
+// "living-room", "utility-room", "room", ...
+std::string_view CategoryName(Category category);
+// Accepts every CategoryName and the alias "staircase-room" (= utility-room).
+std::optional<Category> ParseCategory(std::string_view name);
+// The ten labelled categories in a fixed order (without kRoom).
+const std::vector<Category>& LabelledCategories();
+
+// Room names are "category_L/i": category, level L (0 = ground), index i of that category on that level.
+struct RoomName {
+  Category category = Category::kRoom;
+  int level = 0;
+  int index = 0;
+};
+std::optional<RoomName> ParseRoomName(std::string_view name);
+std::string FormatRoomName(const RoomName& name);
+
+struct Room {
+  Category category = Category::kRoom;
+  int level = 0;
+  int index = 0;
+  Ring polygon;
+  std::string name() const { return FormatRoomName({category, level, index}); }
+};
+
+enum class ElementKind { kEntrance, kDoor, kOpen, kWindow, kInterior };
+// The JSON key of each kind: "entrance", "doors", "opens", "windows", "interiors".
+std::string_view ElementKindKey(ElementKind kind);
+
+inline constexpr int kAllLevels = -1;  // a 1D element without "level" belongs to every floor
+
+struct Element {
+  std::string name;     // free text, e.g. "living0_kitchen0"
+  ElementKind kind = ElementKind::kDoor;
+  Segment shape;
+  int level = 0;        // or kAllLevels
+  bool panoramic = false;  // windows only
+  bool OnLevel(int l) const { return level == kAllLevels || level == l; }
+};
+
+// A whole building. Order is kept as read (JSON object order), so files round-trip unchanged.
+struct Layout {
+  std::vector<Room> rooms;
+  std::vector<Element> entrances;
+  std::vector<Element> doors;
+  std::vector<Element> opens;
+  std::vector<Element> windows;
+  std::vector<Element> interiors;
+
+  std::vector<Element>& elements(ElementKind kind);
+  const std::vector<Element>& elements(ElementKind kind) const;
+
+  // 1 + the highest room level; 0 for a layout without rooms.
+  int LevelCount() const;
+  // Indices into `rooms` of the rooms on `level`, in order.
+  std::vector<int> RoomsOnLevel(int level) const;
+  // Index into `rooms` of the room with this name, or -1.
+  int FindRoom(std::string_view name) const;
+};
+
+inline constexpr ElementKind kAllElementKinds[] = {ElementKind::kEntrance, ElementKind::kDoor, ElementKind::kOpen,
+                                                   ElementKind::kWindow, ElementKind::kInterior};
+
+// Plain polygon measures used everywhere (shoelace; positive for counter-clockwise).
+double SignedArea(const Ring& ring);
+double Area(const Ring& ring);
+double Length(const Segment& segment);
+
+}  // namespace villa

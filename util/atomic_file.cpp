@@ -1,0 +1,80 @@
+#include "util/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace villa {
+namespace {
+
+std::filesystem::path TempPathFor(const std::filesystem::path& path) {
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  std::ostringstream name;
+  name << "." << path.filename().string() << ".tmp-" << ::getpid() << "-" << std::hex << (rng() & 0xffffff);
+  return path.parent_path() / name.str();
+}
+
+std::string Describe(const std::filesystem::path& path, const char* what) {
+  return path.string() + ": " + what + ": " + std::strerror(errno);
+}
+
+}  // namespace
+
+Status WriteFileAtomic(const std::filesystem::path& path, std::string_view content) {
+  AtomicFileWriter writer(path);
+  if (!writer.ok()) return Error{writer.error()};
+  writer.Write(content);
+  return writer.Commit();
+}
+
+Result<std::string> ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{Describe(path, "cannot open")};
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) return Error{Describe(path, "cannot read")};
+  return buffer.str();
+}
+
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
+  temp_ = TempPathFor(path_.has_parent_path() ? path_ : std::filesystem::path(".") / path_);
+  file_ = std::fopen(temp_.c_str(), "wb");
+  if (!file_) error_ = Describe(temp_, "cannot create");
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (file_) {
+    std::fclose(file_);
+    std::error_code ignored;
+    std::filesystem::remove(temp_, ignored);
+  }
+}
+
+void AtomicFileWriter::Write(std::string_view data) {
+  if (file_ && !data.empty() && std::fwrite(data.data(), 1, data.size(), file_) != data.size() && error_.empty()) {
+    error_ = Describe(temp_, "cannot write");
+  }
+}
+
+Status AtomicFileWriter::Commit() {
+  if (!file_) return Error{error_};
+  bool flushed = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  if (!flushed && error_.empty()) error_ = Describe(temp_, "cannot flush");
+  std::fclose(file_);
+  file_ = nullptr;
+  if (error_.empty() && std::rename(temp_.c_str(), path_.c_str()) != 0) error_ = Describe(path_, "cannot rename into place");
+  if (!error_.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(temp_, ignored);
+    return Error{error_};
+  }
+  return {};
+}
+
+}  // namespace villa
