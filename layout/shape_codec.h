@@ -4,7 +4,7 @@
 //   shapely.Polygon([(x1, y1), (x2, y2), ...])
 //   shapely.LineString([(x1, y1), (x2, y2)])
 // Parsing accepts integers or decimals, signs, any spacing, and a repeated closing point; it returns
-// polygons counter-clockwise without the closing point. Writing is canonical: at most 2 decimals, no
+// polygons counter-clockwise without the closing point, starting at the smallest vertex (least x, then y). Writing is canonical: at most 2 decimals, no
 // exponent, counter-clockwise, axis-aligned rectangles as shapely.box, everything else as Polygon.
 // Errors name the problem and quote the text with a caret line; callers prefix the element path.
 #include <string>

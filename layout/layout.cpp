@@ -1,0 +1,142 @@
+#include "layout/layout.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+namespace villa {
+namespace {
+
+struct CategoryEntry {
+  Category category;
+  std::string_view name;
+};
+
+constexpr std::array<CategoryEntry, kCategoryCount> kCategories = {{
+    {Category::kRoom, "room"},
+    {Category::kLivingRoom, "living-room"},
+    {Category::kBedroom, "bedroom"},
+    {Category::kKitchen, "kitchen"},
+    {Category::kBathroom, "bathroom"},
+    {Category::kDiningRoom, "dining-room"},
+    {Category::kChildrenRoom, "children-room"},
+    {Category::kOffice, "office"},
+    {Category::kMeetingRoom, "meeting-room"},
+    {Category::kUtilityRoom, "utility-room"},
+    {Category::kBalcony, "balcony"},
+}};
+
+std::optional<int> ParseNonNegative(std::string_view text) {
+  if (text.empty() || (text.size() > 1 && text[0] == '0')) return std::nullopt;
+  int value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value < 0) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::string_view CategoryName(Category category) {
+  for (const auto& entry : kCategories)
+    if (entry.category == category) return entry.name;
+  return "room";
+}
+
+std::optional<Category> ParseCategory(std::string_view name) {
+  for (const auto& entry : kCategories)
+    if (entry.name == name) return entry.category;
+  if (name == "staircase-room") return Category::kUtilityRoom;
+  return std::nullopt;
+}
+
+const std::vector<Category>& LabelledCategories() {
+  static const std::vector<Category> categories = [] {
+    std::vector<Category> out;
+    for (const auto& entry : kCategories)
+      if (entry.category != Category::kRoom) out.push_back(entry.category);
+    return out;
+  }();
+  return categories;
+}
+
+std::optional<RoomName> ParseRoomName(std::string_view name) {
+  auto underscore = name.rfind('_');
+  if (underscore == std::string_view::npos) return std::nullopt;
+  auto slash = name.find('/', underscore);
+  if (slash == std::string_view::npos) return std::nullopt;
+  auto category = ParseCategory(name.substr(0, underscore));
+  auto level = ParseNonNegative(name.substr(underscore + 1, slash - underscore - 1));
+  auto index = ParseNonNegative(name.substr(slash + 1));
+  if (!category || !level || !index) return std::nullopt;
+  return RoomName{*category, *level, *index};
+}
+
+std::string FormatRoomName(const RoomName& name) {
+  return std::string(CategoryName(name.category)) + "_" + std::to_string(name.level) + "/" + std::to_string(name.index);
+}
+
+std::string_view ElementKindKey(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::kEntrance: return "entrance";
+    case ElementKind::kDoor: return "doors";
+    case ElementKind::kOpen: return "opens";
+    case ElementKind::kWindow: return "windows";
+    case ElementKind::kInterior: return "interiors";
+  }
+  return "doors";
+}
+
+std::vector<Element>& Layout::elements(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::kEntrance: return entrances;
+    case ElementKind::kDoor: return doors;
+    case ElementKind::kOpen: return opens;
+    case ElementKind::kWindow: return windows;
+    case ElementKind::kInterior: return interiors;
+  }
+  return doors;
+}
+
+const std::vector<Element>& Layout::elements(ElementKind kind) const {
+  return const_cast<Layout*>(this)->elements(kind);
+}
+
+int Layout::LevelCount() const {
+  int count = 0;
+  for (const auto& room : rooms) count = std::max(count, room.level + 1);
+  return count;
+}
+
+std::vector<int> Layout::RoomsOnLevel(int level) const {
+  std::vector<int> out;
+  for (int i = 0; i < static_cast<int>(rooms.size()); ++i)
+    if (rooms[i].level == level) out.push_back(i);
+  return out;
+}
+
+int Layout::FindRoom(std::string_view name) const {
+  auto parsed = ParseRoomName(name);
+  if (!parsed) return -1;
+  for (int i = 0; i < static_cast<int>(rooms.size()); ++i) {
+    const auto& r = rooms[i];
+    if (r.category == parsed->category && r.level == parsed->level && r.index == parsed->index) return i;
+  }
+  return -1;
+}
+
+double SignedArea(const Ring& ring) {
+  double twice = 0.0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = ring[i];
+    const Point& q = ring[(i + 1) % n];
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * twice;
+}
+
+double Area(const Ring& ring) { return std::abs(SignedArea(ring)); }
+
+double Length(const Segment& s) { return std::hypot(s.b.x - s.a.x, s.b.y - s.a.y); }
+
+}  // namespace villa
