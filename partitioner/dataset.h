@@ -1,0 +1,67 @@
+#pragma once
+// Synthesized datasets (`villa synth`): DIR/layouts.jsonl, one record a line, compact, keys in this order:
+//   {"id": "villa-000042", "seed": <uint64>, "shape": "L", "floors": 2, "layout": {...LayoutToJson...}}
+// plus DIR/manifest.json (the recipe and tool version) and DIR/stats.json. The annotator reads exactly
+// these records.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "layout/layout_io.h"
+#include "partitioner/partitioner.h"
+#include "util/result.h"
+
+namespace villa {
+
+// "villa-000042": the dataset-wide index, at least six digits.
+std::string DatasetRecordId(uint64_t index);
+// The record of layout `index` (summary.ok() required).
+Json DatasetRecord(uint64_t index, uint64_t seed, const PartitionSummary& summary);
+// The record as one compact line, without the newline.
+std::string DatasetRecordLine(uint64_t index, uint64_t seed, const PartitionSummary& summary);
+
+struct SynthOptions {
+  uint64_t count = 0;          // layouts in the whole dataset
+  uint64_t seed = 0;           // dataset seed; layout i uses DatasetLayoutSeed(seed, i)
+  double floor_weights[3] = {2.0, 4.0, 4.0};  // single : two : three stories, exact by index
+  int threads = 0;             // 0: all hardware threads
+  uint64_t shard_index = 0;    // this run writes layouts [count*i/n, count*(i+1)/n)
+  uint64_t shard_count = 1;
+  int previews = 0;            // preview PNGs of the first layouts of this shard (needs the renderer)
+  bool force = false;          // write into a non-empty directory
+  PartitionOptions partition;  // grid and priors; floors and shape are set per layout
+  std::filesystem::path out;
+
+  bool IsValid(std::string* message) const;
+};
+
+// What the dataset holds (stats.json and the printed summary).
+struct SynthStats {
+  uint64_t layouts = 0;
+  uint64_t first_index = 0;    // shard range [first_index, first_index + layouts)
+  uint64_t failures = 0;       // seeds with no valid layout (written nowhere; should be 0)
+  uint64_t retries = 0;        // discarded attempts over all layouts
+  uint64_t validated = 0;      // layouts that passed ValidateLayout
+  uint64_t angled = 0;         // layouts whose footprint has an angled edge
+  std::map<int, uint64_t> floors;                // floors -> layouts
+  std::map<std::string, uint64_t> shapes;        // shape class -> layouts
+  std::map<int, uint64_t> rooms_per_floor;       // rooms on a floor -> floors
+  std::map<std::string, uint64_t> categories;    // category -> rooms
+  double seconds = 0.0;
+
+  Json ToJson() const;
+  std::string Report() const;  // the summary printed by `villa synth`
+};
+
+// Generates the shard's layouts with `threads` workers. `write_line(line)` receives each record line
+// (without newline) in index order regardless of threads; `on_progress(n)` is called after layouts are
+// done (from worker threads). Failed seeds (no valid layout) are counted in stats and listed in
+// `failures` ("villa-000042 (seed 123): message"); they are not written.
+SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void(const std::string&)>& write_line,
+                           const std::function<void(std::size_t)>& on_progress,
+                           std::vector<std::string>* failures = nullptr);
+
+}  // namespace villa
