@@ -23,6 +23,16 @@ struct Connection {
 // rooms with identical polygons on adjacent levels.
 std::vector<Connection> RoomConnections(const Layout& layout, double tolerance = kTolerance);
 
+// The rooms of one level along a segment: those whose boundary holds all of it (within tolerance) and
+// those whose boundary holds a part longer than tolerance. A door is in place when `holding` has exactly
+// two rooms; a window or the entrance when `touching` is exactly one room that also holds it.
+struct SegmentRooms {
+  std::vector<int> holding;   // indices into Layout::rooms
+  std::vector<int> touching;  // includes `holding`
+};
+SegmentRooms RoomsAlongSegment(const Layout& layout, int level, const Segment& segment,
+                               double tolerance = kTolerance);
+
 // Indices of rooms touching the entrance segment(s) (normally one).
 std::vector<int> EntranceRooms(const Layout& layout, double tolerance = kTolerance);
 

@@ -1,0 +1,462 @@
+#include "layout/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+
+namespace villa {
+namespace {
+
+namespace bg = boost::geometry;
+using BgPoint = bg::model::d2::point_xy<double>;
+using BgPolygon = bg::model::polygon<BgPoint, /*clockwise=*/false, /*closed=*/false>;
+using BgMultiPolygon = bg::model::multi_polygon<BgPolygon>;
+
+double Cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+// The ring counter-clockwise (a copy reversed when it was given clockwise).
+Ring Ccw(const Ring& ring) {
+  if (SignedArea(ring) >= 0) return ring;
+  return Ring(ring.rbegin(), ring.rend());
+}
+
+BgPolygon ToBoost(const Ring& ring) {
+  BgPolygon polygon;
+  for (const auto& p : Ccw(ring)) polygon.outer().emplace_back(p.x, p.y);
+  return polygon;
+}
+
+Ring FromBoost(const bg::model::ring<BgPoint, false, false>& ring) {
+  Ring out;
+  out.reserve(ring.size());
+  for (const auto& p : ring) out.push_back({p.x(), p.y()});
+  return out;
+}
+
+// Convex polygon clipping (Sutherland-Hodgman): `subject` clipped by the convex CCW `clip`.
+Ring ClipConvex(const Ring& subject, const Ring& clip) {
+  Ring output = subject;
+  for (std::size_t i = 0; i < clip.size() && !output.empty(); ++i) {
+    const Point& a = clip[i];
+    const Point& b = clip[(i + 1) % clip.size()];
+    auto side = [&](const Point& p) { return Cross(b.x - a.x, b.y - a.y, p.x - a.x, p.y - a.y); };
+    Ring input;
+    input.swap(output);
+    for (std::size_t j = 0; j < input.size(); ++j) {
+      const Point& p = input[j];
+      const Point& q = input[(j + 1) % input.size()];
+      double sp = side(p), sq = side(q);
+      if (sp >= 0) output.push_back(p);
+      if ((sp >= 0) != (sq >= 0)) {
+        double t = sp / (sp - sq);
+        output.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+      }
+    }
+  }
+  return output;
+}
+
+// Convex hull (Andrew's monotone chain), counter-clockwise, no collinear points.
+Ring ConvexHull(Ring points) {
+  std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (points.size() < 3) return points;
+  Ring hull(2 * points.size());
+  std::size_t k = 0;
+  auto turn = [](const Point& o, const Point& a, const Point& b) { return Cross(a.x - o.x, a.y - o.y, b.x - o.x, b.y - o.y); };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && turn(hull[k - 2], hull[k - 1], points[i - 1]) <= 0) --k;
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+}  // namespace
+
+Box2 BoundingBox(const Ring& ring) {
+  Box2 box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const auto& p : ring) {
+    box.min_x = std::min(box.min_x, p.x), box.max_x = std::max(box.max_x, p.x);
+    box.min_y = std::min(box.min_y, p.y), box.max_y = std::max(box.max_y, p.y);
+  }
+  return box;
+}
+
+Box2 BoundingBox(const Segment& s) {
+  return {std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)};
+}
+
+double Distance(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+double PointSegmentDistance(const Point& p, const Segment& s) {
+  double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  double len2 = dx * dx + dy * dy;
+  if (len2 == 0) return Distance(p, s.a);
+  double t = std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2, 0.0, 1.0);
+  return Distance(p, {s.a.x + t * dx, s.a.y + t * dy});
+}
+
+double SegmentOffDistance(const Segment& s, const Segment& target) {
+  // The distance to a convex set is convex along s, so its maximum is at an endpoint.
+  return std::max(PointSegmentDistance(s.a, target), PointSegmentDistance(s.b, target));
+}
+
+std::vector<Interval> MergeIntervals(std::vector<Interval> intervals, double tolerance) {
+  std::sort(intervals.begin(), intervals.end());
+  std::vector<Interval> merged;
+  for (const auto& iv : intervals) {
+    if (!merged.empty() && iv.first <= merged.back().second + tolerance)
+      merged.back().second = std::max(merged.back().second, iv.second);
+    else
+      merged.push_back(iv);
+  }
+  std::erase_if(merged, [&](const Interval& iv) { return iv.second - iv.first <= tolerance; });
+  return merged;
+}
+
+double TotalLength(const std::vector<Interval>& intervals) {
+  double total = 0;
+  for (const auto& iv : intervals) total += iv.second - iv.first;
+  return total;
+}
+
+std::vector<Interval> IntersectIntervals(const std::vector<Interval>& a, const std::vector<Interval>& b, double tolerance) {
+  std::vector<Interval> out;
+  for (const auto& x : a)
+    for (const auto& y : b) {
+      double from = std::max(x.first, y.first), to = std::min(x.second, y.second);
+      if (to - from > tolerance) out.push_back({from, to});
+    }
+  return MergeIntervals(std::move(out), tolerance);
+}
+
+Point PointAt(const Segment& s, double t) {
+  double len = Length(s);
+  if (len == 0) return s.a;
+  double f = t / len;
+  return {s.a.x + f * (s.b.x - s.a.x), s.a.y + f * (s.b.y - s.a.y)};
+}
+
+std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance) {
+  double ls = Length(s), le = Length(edge);
+  if (ls <= tolerance || le <= tolerance) return {};
+  double ux = (s.b.x - s.a.x) / ls, uy = (s.b.y - s.a.y) / ls;
+  // Edge endpoints relative to s: along (t) and across (h).
+  double t1 = (edge.a.x - s.a.x) * ux + (edge.a.y - s.a.y) * uy;
+  double t2 = (edge.b.x - s.a.x) * ux + (edge.b.y - s.a.y) * uy;
+  double from = std::max(0.0, std::min(t1, t2)), to = std::min(ls, std::max(t1, t2));
+  if (to - from <= tolerance) return {};
+  double h1 = Cross(ux, uy, edge.a.x - s.a.x, edge.a.y - s.a.y);
+  double h2 = Cross(ux, uy, edge.b.x - s.a.x, edge.b.y - s.a.y);
+  // Offsets across s at both ends of the overlap (linear along the edge).
+  auto across = [&](double t) { return t1 == t2 ? h1 : h1 + (h2 - h1) * (t - t1) / (t2 - t1); };
+  if (std::abs(across(from)) > tolerance || std::abs(across(to)) > tolerance) return {};
+  return {{from, to}};
+}
+
+std::vector<Interval> IntervalsOnBoundary(const Segment& s, const Ring& ring, double tolerance) {
+  std::vector<Interval> all;
+  Box2 sb = BoundingBox(s);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    Segment edge{ring[i], ring[(i + 1) % ring.size()]};
+    if (!sb.Touches(BoundingBox(edge), tolerance)) continue;
+    for (const auto& iv : CollinearOverlap(s, edge, tolerance)) all.push_back(iv);
+  }
+  return MergeIntervals(std::move(all), tolerance);
+}
+
+double LengthOnBoundary(const Segment& s, const Ring& ring, double tolerance) {
+  return TotalLength(IntervalsOnBoundary(s, ring, tolerance));
+}
+
+std::vector<Segment> SharedBoundaries(const Ring& a, const Ring& b, double tolerance) {
+  std::vector<Segment> out;
+  if (!BoundingBox(a).Touches(BoundingBox(b), tolerance)) return out;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    Segment edge{a[i], a[(i + 1) % a.size()]};
+    for (const auto& iv : IntervalsOnBoundary(edge, b, tolerance)) out.push_back({PointAt(edge, iv.first), PointAt(edge, iv.second)});
+  }
+  return out;
+}
+
+double SharedBoundaryLength(const Ring& a, const Ring& b, double tolerance) {
+  double total = 0;
+  for (const auto& s : SharedBoundaries(a, b, tolerance)) total += Length(s);
+  return total;
+}
+
+Point Centroid(const Ring& ring) {
+  double a = 0, cx = 0, cy = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point& p = ring[i];
+    const Point& q = ring[(i + 1) % ring.size()];
+    double c = Cross(p.x, p.y, q.x, q.y);
+    a += c, cx += (p.x + q.x) * c, cy += (p.y + q.y) * c;
+  }
+  if (a == 0) {
+    Point m;
+    for (const auto& p : ring) m.x += p.x / ring.size(), m.y += p.y / ring.size();
+    return m;
+  }
+  return {cx / (3 * a), cy / (3 * a)};
+}
+
+bool IsConvex(const Ring& input) {
+  if (input.size() < 3) return false;
+  Ring ring = Ccw(input);
+  double turning = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point& p = ring[i];
+    const Point& q = ring[(i + 1) % ring.size()];
+    const Point& r = ring[(i + 2) % ring.size()];
+    double ax = q.x - p.x, ay = q.y - p.y, bx = r.x - q.x, by = r.y - q.y;
+    if ((ax == 0 && ay == 0) || (bx == 0 && by == 0)) return false;
+    double c = Cross(ax, ay, bx, by), d = ax * bx + ay * by;
+    if (c < 0 || (c == 0 && d < 0)) return false;  // a reflex corner or a spike
+    turning += std::atan2(c, d);
+  }
+  return std::abs(turning - 2 * std::numbers::pi) < 1e-6;  // a star turns 4 pi
+}
+
+bool IsAxisAlignedBox(const Ring& ring, double tolerance) {
+  if (ring.size() != 4) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point& p = ring[i];
+    const Point& q = ring[(i + 1) % 4];
+    bool horizontal = std::abs(p.y - q.y) <= tolerance, vertical = std::abs(p.x - q.x) <= tolerance;
+    if (horizontal == vertical) return false;
+    const Point& r = ring[(i + 2) % 4];
+    bool next_horizontal = std::abs(q.y - r.y) <= tolerance;
+    if (horizontal == next_horizontal) return false;
+  }
+  return true;
+}
+
+Ring WithoutCollinearCorners(const Ring& ring, double tolerance) {
+  Ring out;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& prev = ring[(i + n - 1) % n];
+    const Point& p = ring[i];
+    const Point& next = ring[(i + 1) % n];
+    Segment chord{prev, next};
+    double ax = p.x - prev.x, ay = p.y - prev.y, bx = next.x - p.x, by = next.y - p.y;
+    bool straight = ax * bx + ay * by > 0 && PointSegmentDistance(p, chord) <= tolerance;
+    if (!straight) out.push_back(p);
+  }
+  return out.size() >= 3 ? out : ring;
+}
+
+bool SameRing(const Ring& a_in, const Ring& b_in, double tolerance) {
+  Ring a = WithoutCollinearCorners(Ccw(a_in), tolerance), b = WithoutCollinearCorners(Ccw(b_in), tolerance);
+  if (a.size() != b.size() || a.empty()) return false;
+  const std::size_t n = a.size();
+  for (std::size_t shift = 0; shift < n; ++shift) {
+    bool all = true;
+    for (std::size_t i = 0; i < n && all; ++i) all = Distance(a[i], b[(i + shift) % n]) <= tolerance;
+    if (all) return true;
+  }
+  return false;
+}
+
+bool PointInRing(const Point& p, const Ring& ring, double tolerance) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Point& a = ring[i];
+    const Point& b = ring[j];
+    if (tolerance > 0 && PointSegmentDistance(p, {a, b}) <= tolerance) return true;
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+  }
+  return inside;
+}
+
+std::string RingProblem(const Ring& ring) {
+  if (ring.size() < 3) return "has fewer than 3 corners";
+  // Fast path: a convex ring without repeated points or spikes, turning once, is valid.
+  if (IsConvex(ring)) return Area(ring) > 0 ? "" : "has zero area";
+  BgPolygon polygon = ToBoost(ring);
+  std::string message;
+  if (!bg::is_valid(polygon, message)) return message;
+  if (Area(ring) <= 0) return "has zero area";
+  return "";
+}
+
+double IntersectionArea(const Ring& a, const Ring& b) {
+  Box2 ba = BoundingBox(a), bb = BoundingBox(b);
+  double w = std::min(ba.max_x, bb.max_x) - std::max(ba.min_x, bb.min_x);
+  double h = std::min(ba.max_y, bb.max_y) - std::max(ba.min_y, bb.min_y);
+  if (w <= 0 || h <= 0) return 0;
+  if (IsAxisAlignedBox(a, 0) && IsAxisAlignedBox(b, 0)) return w * h;
+  if (IsConvex(a) && IsConvex(b)) {
+    Ring clipped = ClipConvex(Ccw(a), Ccw(b));
+    return clipped.size() >= 3 ? Area(clipped) : 0;
+  }
+  BgMultiPolygon out;
+  bg::intersection(ToBoost(a), ToBoost(b), out);
+  return bg::area(out);
+}
+
+std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
+  BgMultiPolygon acc;
+  for (const auto& ring : rings) {
+    if (ring.size() < 3) continue;
+    BgMultiPolygon next;
+    bg::union_(acc, ToBoost(ring), next);
+    acc.swap(next);
+  }
+  std::vector<PolygonWithHoles> out;
+  for (const auto& polygon : acc) {
+    PolygonWithHoles p;
+    p.outer = FromBoost(polygon.outer());
+    for (const auto& inner : polygon.inners()) p.holes.push_back(Ccw(FromBoost(inner)));
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double tolerance) {
+  ExteriorBoundary result;
+  std::vector<Ring> rooms;
+  std::vector<Box2> boxes;
+  for (const auto& r : input) rooms.push_back(Ccw(r)), boxes.push_back(BoundingBox(rooms.back()));
+
+  // 1. Every edge part not covered by another room's edge.
+  for (std::size_t i = 0; i < rooms.size(); ++i) {
+    const Ring& ring = rooms[i];
+    for (std::size_t e = 0; e < ring.size(); ++e) {
+      Segment edge{ring[e], ring[(e + 1) % ring.size()]};
+      double len = Length(edge);
+      if (len <= tolerance) continue;
+      Box2 eb = BoundingBox(edge);
+      std::vector<Interval> covered;
+      for (std::size_t j = 0; j < rooms.size(); ++j) {
+        if (j == i || !boxes[j].Touches(eb, tolerance)) continue;
+        for (const auto& iv : IntervalsOnBoundary(edge, rooms[j], tolerance)) covered.push_back(iv);
+      }
+      covered = MergeIntervals(std::move(covered), tolerance);
+      double at = 0;
+      auto emit = [&](double from, double to) {
+        if (to - from <= tolerance) return;
+        Point a = from == 0 ? edge.a : PointAt(edge, from);
+        Point b = to == len ? edge.b : PointAt(edge, to);
+        result.pieces.push_back({a, b});
+        result.owners.push_back(static_cast<int>(i));
+      };
+      for (const auto& iv : covered) emit(at, iv.first), at = std::max(at, iv.second);
+      emit(at, len);
+    }
+  }
+
+  // 2. Chain the pieces into rings. At a vertex where several pieces start (two rings touching at a
+  //    point), take the first one clockwise from the way back: the ring keeps the same side of the union.
+  const std::size_t n = result.pieces.size();
+  const double match = 4 * tolerance;
+  std::vector<bool> used(n, false);
+  for (std::size_t start = 0; start < n; ++start) {
+    if (used[start]) continue;
+    BoundaryRing ring;
+    std::size_t current = start;
+    while (true) {
+      used[current] = true;
+      const Segment& s = result.pieces[current];
+      ring.pieces.push_back(s);
+      ring.owners.push_back(result.owners[current]);
+      ring.signed_area += Cross(s.a.x, s.a.y, s.b.x, s.b.y) / 2;
+      double bx = s.a.x - s.b.x, by = s.a.y - s.b.y;  // the way back
+      std::size_t best = n;
+      double best_angle = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Segment& c = result.pieces[k];
+        if (Distance(c.a, s.b) > match) continue;
+        double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
+        double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
+        double cw = ccw <= 0 ? -ccw : 2 * std::numbers::pi - ccw;
+        if (cw <= 0) cw = 2 * std::numbers::pi;
+        if (best == n || cw < best_angle) best = k, best_angle = cw;
+      }
+      if (best == start) break;
+      if (best == n || used[best]) {
+        result.closed = false;
+        break;
+      }
+      current = best;
+    }
+    result.rings.push_back(std::move(ring));
+  }
+  return result;
+}
+
+double RoomWidth(const Ring& input, double tolerance) {
+  Ring ring = Ccw(input);
+  const std::size_t n = ring.size();
+  if (n < 3) return 0;
+  // Minimum caliper width of the convex hull.
+  Ring hull = ConvexHull(ring);
+  double width = INFINITY;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Point& a = hull[i];
+    const Point& b = hull[(i + 1) % hull.size()];
+    double len = Distance(a, b);
+    if (len <= 0) continue;
+    double far = 0;
+    for (const auto& p : hull) far = std::max(far, std::abs(Cross(b.x - a.x, b.y - a.y, p.x - a.x, p.y - a.y)) / len);
+    width = std::min(width, far);
+  }
+  if (hull.size() < 3) return 0;
+  if (IsConvex(ring)) return width;
+  // Thin arms: facing anti-parallel edges with overlapping projections.
+  const double cos_limit = std::cos(std::numbers::pi / 180);
+  for (std::size_t i = 0; i < n; ++i) {
+    Segment e{ring[i], ring[(i + 1) % n]};
+    double le = Length(e);
+    if (le <= tolerance) continue;
+    double ux = (e.b.x - e.a.x) / le, uy = (e.b.y - e.a.y) / le;
+    double nx = -uy, ny = ux;  // inward normal of a counter-clockwise ring
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      Segment f{ring[j], ring[(j + 1) % n]};
+      double lf = Length(f);
+      if (lf <= tolerance) continue;
+      double vx = (f.b.x - f.a.x) / lf, vy = (f.b.y - f.a.y) / lf;
+      if (ux * vx + uy * vy > -cos_limit) continue;
+      double t1 = (f.a.x - e.a.x) * ux + (f.a.y - e.a.y) * uy;
+      double t2 = (f.b.x - e.a.x) * ux + (f.b.y - e.a.y) * uy;
+      double from = std::max(0.0, std::min(t1, t2)), to = std::min(le, std::max(t1, t2));
+      if (to - from <= tolerance) continue;
+      double mid = (from + to) / 2;
+      Point on_e{e.a.x + ux * mid, e.a.y + uy * mid};
+      // Distance from e across to f's line along e's inward normal (the same all along: they are parallel).
+      double gap = (f.a.x - on_e.x) * nx + (f.a.y - on_e.y) * ny;
+      if (gap <= tolerance || gap >= width) continue;
+      Point middle{on_e.x + nx * gap / 2, on_e.y + ny * gap / 2};
+      if (PointInRing(middle, ring, 0)) width = gap;
+    }
+  }
+  return width;
+}
+
+std::pair<double, double> RectangleSides(const Ring& input, double tolerance) {
+  Ring r = WithoutCollinearCorners(Ccw(input), tolerance);
+  if (r.size() != 4) return {0, 0};
+  double s[4];
+  for (int i = 0; i < 4; ++i) {
+    const Point& p = r[i];
+    const Point& q = r[(i + 1) % 4];
+    const Point& t = r[(i + 2) % 4];
+    s[i] = Distance(p, q);
+    double dot = (q.x - p.x) * (t.x - q.x) + (q.y - p.y) * (t.y - q.y);
+    if (std::abs(dot) > tolerance * (s[i] + Distance(q, t))) return {0, 0};
+  }
+  if (std::abs(s[0] - s[2]) > tolerance || std::abs(s[1] - s[3]) > tolerance) return {0, 0};
+  return {s[0], s[1]};
+}
+
+}  // namespace villa

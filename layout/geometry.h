@@ -1,0 +1,109 @@
+#pragma once
+// 2D helpers on the layout's plain types (Point, Segment, Ring), shared by the validator, the topology and
+// anyone who needs the same answers: shared boundaries between rooms, a segment's length on a room's
+// boundary, overlap areas, floor footprints, room widths. Units are metres; rings are counter-clockwise
+// without a repeated closing point (a clockwise ring is accepted and treated as its reverse).
+// Boost.Geometry stays inside geometry.cpp.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace villa {
+
+struct Box2 {
+  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
+  // True when the boxes, each grown by `margin`, share a point.
+  bool Touches(const Box2& other, double margin) const {
+    return min_x <= other.max_x + margin && other.min_x <= max_x + margin && min_y <= other.max_y + margin &&
+           other.min_y <= max_y + margin;
+  }
+};
+Box2 BoundingBox(const Ring& ring);
+Box2 BoundingBox(const Segment& segment);
+
+double Distance(const Point& a, const Point& b);
+double PointSegmentDistance(const Point& p, const Segment& s);
+// Largest distance from a point of `s` to `target` (the Hausdorff distance from s to target): how far s is
+// "off" the target segment.
+double SegmentOffDistance(const Segment& s, const Segment& target);
+
+// A closed interval [from, to] of a segment's arc length, in m from its first point.
+using Interval = std::pair<double, double>;
+// Sorts and merges overlapping intervals; drops those not longer than `tolerance`.
+std::vector<Interval> MergeIntervals(std::vector<Interval> intervals, double tolerance);
+double TotalLength(const std::vector<Interval>& intervals);
+std::vector<Interval> IntersectIntervals(const std::vector<Interval>& a, const std::vector<Interval>& b,
+                                         double tolerance);
+
+// The part of `s` that lies on `edge` (both endpoints of the overlap within `tolerance` of the other's
+// line), as an interval of s's arc length; empty when they are not collinear or overlap by <= tolerance.
+std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance);
+// The parts of `s` that lie on the boundary of `ring`, merged, as intervals of s's arc length.
+std::vector<Interval> IntervalsOnBoundary(const Segment& s, const Ring& ring, double tolerance);
+// Length of `s` lying on the boundary of `ring`.
+double LengthOnBoundary(const Segment& s, const Ring& ring, double tolerance);
+// The point of `s` at arc length t.
+Point PointAt(const Segment& s, double t);
+
+// Pieces of boundary two rings share: collinear, overlapping edge parts longer than `tolerance`.
+std::vector<Segment> SharedBoundaries(const Ring& a, const Ring& b, double tolerance);
+double SharedBoundaryLength(const Ring& a, const Ring& b, double tolerance);
+
+// Polygon measures.
+Point Centroid(const Ring& ring);  // area centroid
+bool IsConvex(const Ring& ring);   // no reflex corner (collinear corners allowed)
+bool IsAxisAlignedBox(const Ring& ring, double tolerance);
+// The ring without corners whose edges continue straight on (within tolerance).
+Ring WithoutCollinearCorners(const Ring& ring, double tolerance);
+// Same point set: equal vertex lists up to a cyclic shift and collinear corners, within tolerance.
+bool SameRing(const Ring& a, const Ring& b, double tolerance);
+// Inside or on the boundary (within tolerance).
+bool PointInRing(const Point& p, const Ring& ring, double tolerance);
+
+// Empty when `ring` is a valid simple polygon with positive area; otherwise why not ("self-intersecting",
+// "has spikes", "has fewer than 3 distinct corners", "has zero area", ...). Boost.Geometry's is_valid.
+std::string RingProblem(const Ring& ring);
+
+// Area of the intersection of two simple polygons (exact clipping for convex pairs, Boost.Geometry otherwise).
+double IntersectionArea(const Ring& a, const Ring& b);
+
+// The footprint of a floor from its rooms by polygon union (Boost.Geometry): each polygon of the union
+// with its holes. Rooms may overlap or not touch at all; a floor that tiles properly gives exactly one
+// polygon with no holes.
+struct PolygonWithHoles {
+  Ring outer;
+  std::vector<Ring> holes;  // counter-clockwise like every Ring here; subtract their areas
+};
+std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings);
+
+// The exterior boundary of a set of non-overlapping rooms without polygon booleans: every room edge part
+// not shared with another room, chained into closed rings. Outer rings come out counter-clockwise
+// (positive area), holes clockwise (negative area). Each piece of a ring remembers its room.
+struct BoundaryRing {
+  std::vector<Segment> pieces;
+  std::vector<int> owners;  // index into the input rooms for each piece
+  double signed_area = 0;
+};
+struct ExteriorBoundary {
+  std::vector<Segment> pieces;  // every exterior piece
+  std::vector<int> owners;
+  std::vector<BoundaryRing> rings;
+  bool closed = true;  // false when a piece could not be chained (rooms overlap or are broken)
+};
+ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& rooms, double tolerance);
+
+// Width of a room, the narrowest of two measures (m):
+//  - the minimum caliper width of its convex hull (a thin sliver, a thin parallelogram);
+//  - for a non-convex room, the distance between two facing anti-parallel edges (within 1 degree) whose
+//    projections overlap by more than tolerance and with the strip between them inside the room
+//    (a thin arm of an L or a U).
+// An acute corner alone does not make a room narrow: a triangle is as wide as its smallest height.
+double RoomWidth(const Ring& ring, double tolerance);
+
+// Side lengths of a rectangle (width along its first edge, then the other), or {0, 0} when `ring` is not a
+// rectangle within tolerance.
+std::pair<double, double> RectangleSides(const Ring& ring, double tolerance);
+
+}  // namespace villa
