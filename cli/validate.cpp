@@ -41,7 +41,7 @@ constexpr const char* kRuleSummaries[] = {
     "interior walls cover shared boundaries",
     "widths: door/open 0.8, window 0.6, room 1.0 m",
     "at most 3 floors and 6 rooms a floor",
-    "4 x 4 m staircase room stacked, off centre",
+    "staircase room 4 x 4 m, stacked, off centre",
     "every room reachable from the entrance",
     "windows in kitchens/bathrooms; balconies",
     "kitchen-dining-living links; nested rooms use doors",
