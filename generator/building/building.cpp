@@ -1,0 +1,881 @@
+// Layout -> building volume. Per level: the footprint (from the rooms' edges), exterior walls along it
+// (mitred at every corner), interior walls along `interiors` (cut at junctions by the bisectors between
+// neighbouring walls, so any angle and any number of walls meet without overlap), openings cut through
+// them, door leaves and glass, staircases in the utility rooms and slabs with their stair holes.
+#include "generator/building/building.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "generator/building/geometry2d.h"
+#include "generator/building/solids.h"
+
+namespace villa {
+namespace {
+
+using namespace geo;
+
+constexpr double kOnLine = 1e-4;  // m: a point this close to a line or node is on it
+
+std::string Fmt(double v) {
+  std::ostringstream out;
+  out.precision(3);
+  out << v;
+  return out.str();
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Regions from directed edges: the boundary of a union of CCW polygons (or of a difference, with the
+// subtracted one given CW) is what is left after cancelling every edge against its reverse.
+
+struct Edge {
+  Point a;
+  Point b;
+};
+
+using Key = std::pair<long long, long long>;
+Key KeyOf(Point p) { return {std::llround(p.x * 1e5), std::llround(p.y * 1e5)}; }
+
+// Splits every edge at the given points lying strictly inside it.
+std::vector<Edge> SplitAtPoints(const std::vector<Edge>& edges, const std::vector<Point>& points) {
+  std::vector<Edge> out;
+  for (const Edge& e : edges) {
+    double len = Dist(e.a, e.b);
+    if (len < kOnLine) continue;
+    Point d = Scale(Sub(e.b, e.a), 1.0 / len);
+    std::vector<double> cuts;
+    for (Point p : points) {
+      double s = Dot(Sub(p, e.a), d);
+      if (s > kOnLine && s < len - kOnLine && std::abs(Cross(d, Sub(p, e.a))) < kOnLine) cuts.push_back(s);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    Point from = e.a;
+    for (double s : cuts) {
+      Point to = Add(e.a, Scale(d, s));
+      if (Dist(from, to) > kOnLine) out.push_back({from, to});
+      from = to;
+    }
+    out.push_back({from, e.b});
+  }
+  return out;
+}
+
+struct Region {
+  Ring outer;
+  std::vector<Ring> holes;
+};
+
+std::vector<Region> RegionsFromEdges(std::vector<Edge> edges) {
+  std::vector<Point> points;
+  for (const Edge& e : edges) {
+    points.push_back(e.a);
+    points.push_back(e.b);
+  }
+  edges = SplitAtPoints(edges, points);
+  std::map<std::pair<Key, Key>, int> count;
+  for (const Edge& e : edges) ++count[{KeyOf(e.a), KeyOf(e.b)}];
+  std::vector<Edge> kept;
+  for (const Edge& e : edges) {
+    auto forward = count.find({KeyOf(e.a), KeyOf(e.b)});
+    auto backward = count.find({KeyOf(e.b), KeyOf(e.a)});
+    if (backward != count.end() && backward->second > 0 && forward->second > 0) {
+      --backward->second;
+      --forward->second;
+      continue;
+    }
+    if (forward->second > 0) {
+      --forward->second;
+      kept.push_back(e);
+    }
+  }
+  std::multimap<Key, int> outgoing;
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) outgoing.emplace(KeyOf(kept[i].a), i);
+  std::vector<bool> used(kept.size(), false);
+  std::vector<Ring> loops;
+  for (size_t start = 0; start < kept.size(); ++start) {
+    if (used[start]) continue;
+    Ring loop;
+    int current = static_cast<int>(start);
+    while (current >= 0 && !used[current]) {
+      used[current] = true;
+      loop.push_back(kept[current].a);
+      Point dir = Sub(kept[current].b, kept[current].a);
+      // At a vertex shared by two loops, take the sharpest left turn: each loop stays simple.
+      int next = -1;
+      double best = -10.0;
+      auto [lo, hi] = outgoing.equal_range(KeyOf(kept[current].b));
+      for (auto it = lo; it != hi; ++it) {
+        if (used[it->second]) continue;
+        Point out = Sub(kept[it->second].b, kept[it->second].a);
+        double turn = std::atan2(Cross(dir, out), Dot(dir, out));
+        if (turn > best) {
+          best = turn;
+          next = it->second;
+        }
+      }
+      current = next;
+    }
+    if (loop.size() >= 3) loops.push_back(loop);
+  }
+  std::vector<Region> regions;
+  std::vector<Ring> holes;
+  for (Ring& loop : loops) {
+    bool is_hole = SignedArea(loop) < 0.0;
+    Ring clean = CleanRing(loop);
+    if (clean.empty()) continue;
+    if (is_hole)
+      holes.push_back(clean);
+    else
+      regions.push_back({clean, {}});
+  }
+  for (Ring& hole : holes) {
+    // The smallest outer ring holding the hole's first vertex nudged inward.
+    int best = -1;
+    for (int i = 0; i < static_cast<int>(regions.size()); ++i) {
+      Point probe = hole[0];
+      bool inside = Inside(Lerp(probe, hole[1 % hole.size()], 0.5), regions[i].outer) ||
+                    Inside(probe, regions[i].outer);
+      if (inside && (best < 0 || Area(regions[i].outer) < Area(regions[best].outer))) best = i;
+    }
+    if (best >= 0) regions[best].holes.push_back(hole);
+  }
+  return regions;
+}
+
+std::vector<Edge> RingEdges(const Ring& ring, bool reversed = false) {
+  std::vector<Edge> out;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    Point a = ring[i], b = ring[(i + 1) % ring.size()];
+    out.push_back(reversed ? Edge{b, a} : Edge{a, b});
+  }
+  return out;
+}
+
+// Starts the ring at its lowest, then leftmost vertex: wall names do not depend on room order.
+Ring Canonical(Ring ring) {
+  auto it = std::min_element(ring.begin(), ring.end(), [](Point a, Point b) {
+    return a.y < b.y - 1e-9 || (std::abs(a.y - b.y) <= 1e-9 && a.x < b.x);
+  });
+  std::rotate(ring.begin(), it, ring.end());
+  return ring;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Walls
+
+struct WallPiece {
+  std::string name;
+  std::string element;  // layout element ("" for exterior walls)
+  bool exterior = false;
+  Ring plan;
+  WallFrame frame;
+  SRange full;
+  std::vector<WallOpening> openings;
+};
+
+// Intersection of the lines p + s d and q + t e.
+std::optional<Point> LineIntersection(Point p, Point d, Point q, Point e) {
+  double den = Cross(d, e);
+  if (std::abs(den) < 1e-12) return std::nullopt;
+  double s = Cross(Sub(q, p), e) / den;
+  return Add(p, Scale(d, s));
+}
+
+// Exterior walls along `footprint` (CCW): returns the pieces and the inner outline (their inner faces).
+std::vector<WallPiece> ExteriorWalls(const Ring& footprint, int level, double thickness, Ring& inner,
+                                     std::vector<std::string>& warnings) {
+  size_t n = footprint.size();
+  double t = thickness;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    inner.assign(n, Point{});
+    for (size_t i = 0; i < n; ++i) {
+      size_t prev = (i + n - 1) % n;
+      Point d0 = Unit(Sub(footprint[i], footprint[prev]));
+      Point d1 = Unit(Sub(footprint[(i + 1) % n], footprint[i]));
+      auto q = LineIntersection(Add(footprint[prev], Scale(Left(d0), t)), d0, Add(footprint[i], Scale(Left(d1), t)), d1);
+      inner[i] = q ? *q : Add(footprint[i], Scale(Left(d1), t));
+    }
+    bool ok = true;
+    for (size_t i = 0; i < n && ok; ++i) {
+      Point d = Unit(Sub(footprint[(i + 1) % n], footprint[i]));
+      ok = Dot(Sub(inner[(i + 1) % n], inner[i]), d) > 0.05;
+    }
+    if (ok) break;
+    t *= 0.7;
+  }
+  if (t < thickness)
+    warnings.push_back("level " + std::to_string(level) + ": exterior walls thinned to " + Fmt(t) +
+                       " m to fit short footprint edges");
+  std::vector<WallPiece> pieces;
+  for (size_t i = 0; i < n; ++i) {
+    Point a = footprint[i], b = footprint[(i + 1) % n];
+    Point d = Unit(Sub(b, a));
+    WallPiece piece;
+    piece.name = "exterior_" + std::to_string(level) + "_" + std::to_string(i);
+    piece.exterior = true;
+    piece.frame = {Add(a, Scale(Left(d), t / 2.0)), d, Left(d), t};
+    piece.plan = CleanRing({a, b, inner[(i + 1) % n], inner[i]}, 1e-9);
+    if (piece.plan.empty()) continue;
+    piece.full = FullSection(piece.plan, piece.frame);
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+struct Span {
+  std::string name;
+  std::string element;
+  Point a;
+  Point b;
+};
+
+// Interior walls of one level: `interiors` minus `opens`, de-duplicated, split at junctions, each cut by
+// the bisectors with its neighbours at both ends and clipped to the inner outline of the exterior walls.
+std::vector<WallPiece> InteriorWalls(const Layout& layout, int level, const Ring& footprint, const Ring& inner,
+                                     double thickness, std::vector<std::string>& warnings) {
+  const std::string suffix_all = "@" + std::to_string(level);
+  std::vector<Span> spans;
+  for (const Element& wall : layout.interiors) {
+    if (!wall.OnLevel(level)) continue;
+    std::string base = wall.name + (wall.level == kAllLevels ? suffix_all : "");
+    Point a = wall.shape.a, b = wall.shape.b;
+    double len = Dist(a, b);
+    if (len < 0.02) continue;
+    Point d = Scale(Sub(b, a), 1.0 / len);
+    if (DistToRing(Lerp(a, b, 0.5), footprint) < kOnLine && DistToRing(a, footprint) < kOnLine &&
+        DistToRing(b, footprint) < kOnLine) {
+      warnings.push_back("interior " + base + ": lies on the exterior boundary; the exterior wall stands there");
+      continue;
+    }
+    // Intervals of [0, len] left after removing opens and walls already placed on the same line.
+    std::vector<std::pair<double, double>> keep = {{0.0, len}};
+    auto subtract = [&](Point p, Point q) {
+      if (std::abs(Cross(d, Sub(p, a))) > kOnLine || std::abs(Cross(d, Sub(q, a))) > kOnLine) return;
+      double s0 = Dot(Sub(p, a), d), s1 = Dot(Sub(q, a), d);
+      if (s0 > s1) std::swap(s0, s1);
+      std::vector<std::pair<double, double>> next;
+      for (auto [k0, k1] : keep) {
+        if (s1 <= k0 || s0 >= k1) {
+          next.push_back({k0, k1});
+          continue;
+        }
+        if (s0 > k0) next.push_back({k0, s0});
+        if (s1 < k1) next.push_back({s1, k1});
+      }
+      keep = next;
+    };
+    for (const Element& open : layout.opens)
+      if (open.OnLevel(level)) subtract(open.shape.a, open.shape.b);
+    for (const Span& s : spans) subtract(s.a, s.b);
+    int part = 0;
+    for (auto [k0, k1] : keep) {
+      if (k1 - k0 < 0.02) continue;
+      ++part;
+      spans.push_back({part == 1 ? base : base + ":" + std::to_string(part), base, Add(a, Scale(d, k0)),
+                       Add(a, Scale(d, k1))});
+    }
+  }
+  // Split at T-junctions (another span's end inside this one) and crossings.
+  std::vector<Span> split;
+  for (size_t i = 0; i < spans.size(); ++i) {
+    const Span& s = spans[i];
+    double len = Dist(s.a, s.b);
+    Point d = Scale(Sub(s.b, s.a), 1.0 / len);
+    std::vector<double> cuts;
+    for (size_t j = 0; j < spans.size(); ++j) {
+      if (j == i) continue;
+      const Span& o = spans[j];
+      for (Point p : {o.a, o.b}) {
+        double t = Dot(Sub(p, s.a), d);
+        if (t > kOnLine && t < len - kOnLine && std::abs(Cross(d, Sub(p, s.a))) < kOnLine) cuts.push_back(t);
+      }
+      Point e = Sub(o.b, o.a);
+      double den = Cross(d, e);
+      if (std::abs(den) > 1e-9) {
+        double t = Cross(Sub(o.a, s.a), e) / den;
+        double u = Cross(Sub(o.a, s.a), d) / den;
+        double olen = Len(e);
+        if (t > kOnLine && t < len - kOnLine && u * olen > kOnLine && u * olen < olen - kOnLine) cuts.push_back(t);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](double x, double y) { return y - x < kOnLine; }), cuts.end());
+    Point from = s.a;
+    int part = 0;
+    for (size_t k = 0; k <= cuts.size(); ++k) {
+      Point to = k < cuts.size() ? Add(s.a, Scale(d, cuts[k])) : s.b;
+      ++part;
+      split.push_back({cuts.empty() ? s.name : s.name + "#" + std::to_string(part), s.element, from, to});
+      from = to;
+    }
+  }
+  // Nodes: span ends within kOnLine are one.
+  std::vector<Point> nodes;
+  auto node_of = [&](Point p) {
+    for (size_t i = 0; i < nodes.size(); ++i)
+      if (Dist(nodes[i], p) < kOnLine) return static_cast<int>(i);
+    nodes.push_back(p);
+    return static_cast<int>(nodes.size()) - 1;
+  };
+  struct End {
+    int span;
+    Point direction;  // away from the node, along the span
+  };
+  std::map<int, std::vector<End>> at_node;
+  std::vector<std::array<int, 2>> span_nodes;
+  for (size_t i = 0; i < split.size(); ++i) {
+    Point d = Unit(Sub(split[i].b, split[i].a));
+    int na = node_of(split[i].a), nb = node_of(split[i].b);
+    at_node[na].push_back({static_cast<int>(i), d});
+    at_node[nb].push_back({static_cast<int>(i), Scale(d, -1.0)});
+    span_nodes.push_back({na, nb});
+  }
+  const double half = thickness / 2.0;
+  std::vector<WallPiece> pieces;
+  for (size_t i = 0; i < split.size(); ++i) {
+    const Span& s = split[i];
+    Point d = Unit(Sub(s.b, s.a));
+    Point n = Left(d);
+    double len = Dist(s.a, s.b);
+    bool on_boundary[2];
+    double extend[2];
+    for (int e = 0; e < 2; ++e) {
+      int node = span_nodes[i][e];
+      on_boundary[e] = DistToRing(nodes[node], footprint) < kOnLine;
+      extend[e] = at_node[node].size() > 1 ? 2.0 : on_boundary[e] ? 0.8 : 0.0;
+    }
+    WallFrame frame{s.a, d, n, thickness};
+    Ring plan = {frame.ToPlan(-extend[0], -half), frame.ToPlan(len + extend[1], -half),
+                 frame.ToPlan(len + extend[1], half), frame.ToPlan(-extend[0], half)};
+    for (int e = 0; e < 2; ++e) {
+      int node = span_nodes[i][e];
+      Point p = nodes[node];
+      Point away = e == 0 ? d : Scale(d, -1.0);
+      const auto& ends = at_node[node];
+      if (ends.size() == 1) {
+        if (!on_boundary[e]) plan = ClipHalfPlane(plan, p, away);
+        continue;
+      }
+      // Neighbours next counter-clockwise and clockwise; cut along the bisector of each gap.
+      double own = std::atan2(away.y, away.x);
+      double ccw = 10.0, cw = -10.0;
+      for (const End& other : ends) {
+        if (other.span == static_cast<int>(i)) continue;
+        double gap = std::atan2(other.direction.y, other.direction.x) - own;
+        while (gap <= 1e-9) gap += 2.0 * std::numbers::pi;
+        while (gap > 2.0 * std::numbers::pi) gap -= 2.0 * std::numbers::pi;
+        ccw = std::min(ccw, gap);
+        cw = std::max(cw, gap);
+      }
+      for (double angle : {own + ccw / 2.0, own - (2.0 * std::numbers::pi - cw) / 2.0}) {
+        Point b = {std::cos(angle), std::sin(angle)};
+        Point m = Left(b);
+        double side = Dot(m, away);
+        if (std::abs(side) < 1e-9) continue;
+        plan = ClipHalfPlane(plan, p, side > 0 ? m : Scale(m, -1.0));
+      }
+    }
+    plan = CleanRing(plan, 1e-9);
+    if (!plan.empty() && (on_boundary[0] || on_boundary[1])) plan = CleanRing(ClipConvex(inner, plan), 1e-9);
+    if (plan.empty() || Area(plan) < 1e-6) {
+      warnings.push_back("interior " + s.name + ": nothing left of it between the other walls");
+      continue;
+    }
+    WallPiece piece;
+    piece.name = s.name;
+    piece.element = s.element;
+    piece.plan = plan;
+    piece.frame = frame;
+    piece.full = FullSection(plan, frame);
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Openings, leaves and glass
+
+struct PlacedOpening {
+  const Element* element = nullptr;
+  std::string name;
+  int piece = -1;
+  WallOpening cut;
+};
+
+// The wall piece an element lies on: parallel, within the wall's thickness, overlapping its full section.
+int FindWall(const std::vector<WallPiece>& walls, const Segment& seg, bool prefer_exterior) {
+  int best = -1;
+  double best_overlap = 0.0;
+  for (int pass = 0; pass < 2 && best < 0; ++pass) {
+    for (int i = 0; i < static_cast<int>(walls.size()); ++i) {
+      const WallPiece& w = walls[i];
+      if ((pass == 0) != (w.exterior == prefer_exterior)) continue;
+      const WallFrame& f = w.frame;
+      double limit = f.thickness / 2.0 + 1e-3;
+      if (std::abs(f.Q(seg.a)) > limit || std::abs(f.Q(seg.b)) > limit) continue;
+      double s0 = std::min(f.S(seg.a), f.S(seg.b)), s1 = std::max(f.S(seg.a), f.S(seg.b));
+      double overlap = std::min(s1, w.full.hi) - std::max(s0, w.full.lo);
+      if (overlap > best_overlap) {
+        best_overlap = overlap;
+        best = i;
+      }
+    }
+  }
+  return best;
+}
+
+TriangleMesh BoxInFrame(const WallFrame& f, double s0, double s1, double q0, double q1, double z0, double z1) {
+  Ring ring = {f.ToPlan(s0, q0), f.ToPlan(s1, q0), f.ToPlan(s1, q1), f.ToPlan(s0, q1)};
+  return ExtrudePlan(CleanRing(ring, 1e-9), {}, z0, z1);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Staircases
+
+struct StairPlan {
+  Ring footprint;
+  TriangleMesh mesh;
+};
+
+// `near_side`: the side of the room's bounding rectangle (0..3) the flights start from; -1 picks the side
+// by the room's opening and returns it, so stairs stacked above reuse it (each starts where the one
+// below arrives: the only floor left around the hole).
+std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const Ring& footprint, int level,
+                                   double z0, const BuildOptions& options, int& near_side,
+                                   std::vector<std::string>& warnings) {
+  const Ring& poly = room.polygon;
+  // The room's minimum-area bounding rectangle over its edge directions.
+  double best_area = 1e300;
+  Point u{1, 0}, v{0, 1};
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    Point du = Unit(Sub(poly[(i + 1) % poly.size()], poly[i]));
+    Point dv = Left(du);
+    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
+    for (Point p : poly) {
+      a0 = std::min(a0, Dot(p, du));
+      a1 = std::max(a1, Dot(p, du));
+      b0 = std::min(b0, Dot(p, dv));
+      b1 = std::max(b1, Dot(p, dv));
+    }
+    if ((a1 - a0) * (b1 - b0) < best_area - 1e-9) {
+      best_area = (a1 - a0) * (b1 - b0);
+      u = du, v = dv, u0 = a0, u1 = a1, v0 = b0, v1 = b1;
+    }
+  }
+  if (Area(poly) < 0.98 * best_area)
+    warnings.push_back("staircase in " + room.name() + ": the room is not a rectangle; the stair uses its bounding box");
+  auto at = [&](double a, double b) { return Add(Scale(u, a), Scale(v, b)); };
+  // Rectangle sides: 0 = v0 (bottom), 1 = u1 (right), 2 = v1 (top), 3 = u0 (left); inset by the wall there.
+  Point side_mid[4] = {at((u0 + u1) / 2, v0), at(u1, (v0 + v1) / 2), at((u0 + u1) / 2, v1), at(u0, (v0 + v1) / 2)};
+  double inset[4];
+  for (int k = 0; k < 4; ++k)
+    inset[k] = (DistToRing(side_mid[k], footprint) < kOnLine ? options.exterior_wall_thickness
+                                                             : options.interior_wall_thickness / 2.0) + 0.02;
+  double fu0 = u0 + inset[3], fu1 = u1 - inset[1], fv0 = v0 + inset[0], fv1 = v1 - inset[2];
+  // Arrive (and leave) beside the room's opening: on the level above, else this one.
+  std::optional<Point> access;
+  for (int l : {level + 1, level}) {
+    for (const auto* list : {&layout.opens, &layout.doors}) {
+      for (const Element& e : *list) {
+        Point mid = Lerp(e.shape.a, e.shape.b, 0.5);
+        if (e.OnLevel(l) && DistToRing(mid, poly) < kOnLine) access = mid;
+        if (access) break;
+      }
+      if (access) break;
+    }
+    if (access) break;
+  }
+  int near = 0;
+  if (near_side >= 0) {
+    near = near_side;
+  } else if (access) {
+    double best = 1e300;
+    for (int k = 0; k < 4; ++k) {
+      double dist = Dist(*access, side_mid[k]);
+      if (dist < best) best = dist, near = k;
+    }
+  }
+  // Frame of the stair: origin at a corner of the free rectangle on the near side, `along` into the
+  // room, `across` along the near side (so along x across points up: the solid maker orients faces).
+  Point origin, along, across;
+  double depth, width;
+  switch (near) {
+    case 0: origin = at(fu0, fv0), along = v, across = u, depth = fv1 - fv0, width = fu1 - fu0; break;
+    case 1: origin = at(fu1, fv0), along = Scale(u, -1), across = v, depth = fu1 - fu0, width = fv1 - fv0; break;
+    case 2: origin = at(fu1, fv1), along = Scale(v, -1), across = Scale(u, -1), depth = fv1 - fv0, width = fu1 - fu0; break;
+    default: origin = at(fu0, fv1), along = u, across = Scale(v, -1), depth = fu1 - fu0, width = fv1 - fv0; break;
+  }
+  near_side = near;
+  const int risers = options.stair_risers / 2;  // per flight
+  const int treads = risers - 1;
+  const double r = kLevelHeight / options.stair_risers;
+  double g = std::min(0.28, (depth - 1.4) / treads);
+  if (g < 0.15 || width < 1.2) {
+    warnings.push_back("staircase in " + room.name() + ": the room is too small for two flights (" + Fmt(depth) +
+                       " x " + Fmt(width) + " m free); no staircase");
+    return std::nullopt;
+  }
+  double arrival = (depth - treads * g) / 2.0;
+  double run_end = arrival + treads * g;  // where flight 1 meets the landing
+  auto profile = [&](double a_start, double z_base) {
+    Ring ring = {{a_start, z_base}, {a_start + g, z_base}, {a_start + treads * g, z_base + (treads - 1) * r}};
+    for (int k = treads - 1; k >= 0; --k) {
+      ring.push_back({a_start + (k + 1) * g, z_base + (k + 1) * r});
+      ring.push_back({a_start + k * g, z_base + (k + 1) * r});
+    }
+    return CleanRing(ring, 1e-9);
+  };
+  StairPlan plan;
+  plan.mesh = ExtrudeProfile(profile(arrival, z0), origin, along, across, 0.0, width / 2.0);
+  Point back = Add(origin, Scale(along, run_end));
+  plan.mesh.Append(ExtrudeProfile(profile(0.0, z0 + risers * r), back, Scale(along, -1.0), across, width / 2.0, width));
+  Ring landing = {Add(origin, Add(Scale(along, run_end), Scale(across, 0.0))),
+                  Add(origin, Add(Scale(along, depth), Scale(across, 0.0))),
+                  Add(origin, Add(Scale(along, depth), Scale(across, width))),
+                  Add(origin, Add(Scale(along, run_end), Scale(across, width)))};
+  plan.mesh.Append(ExtrudePlan(CleanRing(landing, 1e-9), {}, z0 + (risers - 2) * r, z0 + risers * r));
+  plan.footprint = CleanRing({Add(origin, Scale(along, arrival)), Add(origin, Scale(along, depth)),
+                              Add(origin, Add(Scale(along, depth), Scale(across, width))),
+                              Add(origin, Add(Scale(along, arrival), Scale(across, width)))},
+                             1e-9);
+  return plan;
+}
+
+bool RingInside(const Ring& inner, const Ring& outer) {
+  for (Point p : inner)
+    if (!Inside(p, outer) && DistToRing(p, outer) > kOnLine) return false;
+  return true;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------
+
+std::string BuildOptions::Check() const {
+  auto range = [](const char* name, double v, double lo, double hi) -> std::string {
+    if (!(v > lo && v <= hi))
+      return std::string(name) + " = " + Fmt(v) + ": must be in (" + Fmt(lo) + ", " + Fmt(hi) + "]";
+    return "";
+  };
+  for (std::string m : {range("slab_thickness", slab_thickness, 0.0, 0.5),
+                        range("exterior_wall_thickness", exterior_wall_thickness, 0.0, 1.0),
+                        range("interior_wall_thickness", interior_wall_thickness, 0.0, 0.5),
+                        range("door_height", door_height, 1.0, kLevelHeight - slab_thickness - 0.05),
+                        range("window_head", window_head, window_sill, kLevelHeight - slab_thickness - 0.05),
+                        range("door_leaf_thickness", door_leaf_thickness, 0.0, 0.2),
+                        range("glass_thickness", glass_thickness, 0.0, 0.1)})
+    if (!m.empty()) return m;
+  if (window_sill <= 0.0) return "window_sill = " + Fmt(window_sill) + ": must be > 0";
+  if (panoramic_sill <= 0.0 || panoramic_sill >= window_head)
+    return "panoramic_sill = " + Fmt(panoramic_sill) + ": must be in (0, window_head)";
+  if (panoramic_head_gap <= 0.0 || panoramic_head_gap > 1.0)
+    return "panoramic_head_gap = " + Fmt(panoramic_head_gap) + ": must be in (0, 1]";
+  if (stair_risers < 8 || stair_risers % 2 != 0 || stair_risers > 40)
+    return "stair_risers = " + std::to_string(stair_risers) + ": must be even, in [8, 40]";
+  return "";
+}
+
+std::string_view PartKindName(PartKind kind) {
+  switch (kind) {
+    case PartKind::kFloor: return "floor";
+    case PartKind::kTerrace: return "terrace";
+    case PartKind::kRoof: return "roof";
+    case PartKind::kExteriorWall: return "exterior-wall";
+    case PartKind::kInteriorWall: return "interior-wall";
+    case PartKind::kDoorLeaf: return "door";
+    case PartKind::kWindowGlass: return "glass";
+    case PartKind::kStair: return "stair";
+  }
+  return "part";
+}
+
+Box3 BuildingMesh::Bounds() const {
+  Box3 box;
+  for (const MeshPart& p : parts) box.Add(p.mesh.Bounds());
+  return box;
+}
+
+int BuildingMesh::CountParts(PartKind kind) const {
+  return static_cast<int>(std::count_if(parts.begin(), parts.end(), [kind](const MeshPart& p) { return p.kind == kind; }));
+}
+
+double BuildingMesh::FloorZ(int level) const { return level * kLevelHeight + slab_thickness; }
+
+Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& options) {
+  if (std::string problem = options.Check(); !problem.empty()) return Error{"build options: " + problem};
+  const int levels = layout.LevelCount();
+  if (levels == 0) return Error{"layout has no rooms"};
+  BuildingMesh building;
+  building.levels = levels;
+  building.slab_thickness = options.slab_thickness;
+  building.slab_holes.assign(levels, {});
+  const double ts = options.slab_thickness;
+
+  // Rooms, cleaned, and the footprint of each level.
+  std::vector<Ring> room_rings(layout.rooms.size());
+  std::vector<Ring> footprints(levels);
+  for (int level = 0; level < levels; ++level) {
+    std::vector<Edge> edges;
+    for (int i : layout.RoomsOnLevel(level)) {
+      const Room& room = layout.rooms[i];
+      room_rings[i] = CleanRing(room.polygon);
+      if (room_rings[i].empty() || Area(room_rings[i]) < 1e-4)
+        return Error{"rooms[\"" + room.name() + "\"].shape: degenerate polygon (area " + Fmt(Area(room.polygon)) + " m2)"};
+      auto e = RingEdges(room_rings[i]);
+      edges.insert(edges.end(), e.begin(), e.end());
+      building.rooms.push_back({room.name(), room.category, level, Area(room_rings[i])});
+    }
+    if (edges.empty()) return Error{"level " + std::to_string(level) + " has no rooms (levels must stack from 0)"};
+    auto regions = RegionsFromEdges(edges);
+    size_t holes = 0;
+    for (const Region& r : regions) holes += r.holes.size();
+    if (regions.size() != 1 || holes != 0)
+      return Error{"level " + std::to_string(level) + ": rooms do not tile one polygon (" + std::to_string(regions.size()) +
+                   " outline(s), " + std::to_string(holes) + " hole(s)); run `villa validate`"};
+    footprints[level] = Canonical(regions[0].outer);
+  }
+
+  // Staircases: one in each utility room below the top level, with the hole it needs in the slab above.
+  std::map<std::vector<Key>, int> stack_side;  // utility room outline -> near side of its stair stack
+  for (int level = 0; level + 1 < levels; ++level) {
+    for (int i : layout.RoomsOnLevel(level)) {
+      const Room& room = layout.rooms[i];
+      if (room.category != Category::kUtilityRoom) continue;
+      Room clean = room;
+      clean.polygon = room_rings[i];
+      std::vector<Key> outline;
+      for (Point p : clean.polygon) outline.push_back(KeyOf(p));
+      std::sort(outline.begin(), outline.end());
+      int& near_side = stack_side.emplace(outline, -1).first->second;
+      auto stair = PlanStair(layout, clean, footprints[level], level, building.FloorZ(level), options, near_side,
+                             building.warnings);
+      if (!stair) continue;
+      bool above = false;
+      for (int j : layout.RoomsOnLevel(level + 1))
+        above = above || (layout.rooms[j].category == Category::kUtilityRoom && RingInside(stair->footprint, room_rings[j]));
+      if (!above)
+        building.warnings.push_back("staircase in " + room.name() + ": no utility room above it on level " +
+                                    std::to_string(level + 1) + "; it rises into whatever is there");
+      MeshPart part;
+      part.name = "stair_" + room.name();
+      part.kind = PartKind::kStair;
+      part.level = level;
+      part.category = room.category;
+      part.element = room.name();
+      part.mesh = std::move(stair->mesh);
+      building.parts.push_back(std::move(part));
+      building.stairs.push_back({level, room.name(), stair->footprint, stair->footprint});
+      building.slab_holes[level + 1].push_back(stair->footprint);
+    }
+  }
+
+  // Slabs: room floors (with the holes inside them), terraces over the part of the level below that this
+  // level does not cover, and the roof.
+  for (int level = 0; level < levels; ++level) {
+    const double z0 = level * kLevelHeight;
+    std::vector<bool> hole_used(building.slab_holes[level].size(), false);
+    auto holes_in = [&](const Ring& outer) {
+      std::vector<Ring> inside;
+      for (size_t h = 0; h < hole_used.size(); ++h)
+        if (!hole_used[h] && RingInside(building.slab_holes[level][h], outer)) {
+          inside.push_back(building.slab_holes[level][h]);
+          hole_used[h] = true;
+        }
+      return inside;
+    };
+    for (int i : layout.RoomsOnLevel(level)) {
+      const Room& room = layout.rooms[i];
+      MeshPart part;
+      part.name = room.name();
+      part.kind = PartKind::kFloor;
+      part.level = level;
+      part.category = room.category;
+      part.element = room.name();
+      part.mesh = ExtrudePlan(room_rings[i], holes_in(room_rings[i]), z0, z0 + ts);
+      building.parts.push_back(std::move(part));
+    }
+    if (level > 0) {
+      auto edges = RingEdges(footprints[level - 1]);
+      auto minus = RingEdges(footprints[level], true);
+      edges.insert(edges.end(), minus.begin(), minus.end());
+      int k = 0;
+      for (const Region& region : RegionsFromEdges(edges)) {
+        std::vector<Ring> holes = region.holes;
+        for (Ring& h : holes_in(region.outer)) holes.push_back(h);
+        MeshPart part;
+        part.name = "terrace_" + std::to_string(level) + (k > 0 ? ":" + std::to_string(k + 1) : "");
+        part.kind = PartKind::kTerrace;
+        part.level = level;
+        part.mesh = ExtrudePlan(region.outer, holes, z0, z0 + ts);
+        building.parts.push_back(std::move(part));
+        ++k;
+      }
+    }
+    for (size_t h = 0; h < hole_used.size(); ++h) {
+      if (hole_used[h]) continue;
+      building.warnings.push_back("level " + std::to_string(level) + ": a stair hole straddles rooms; not cut");
+      for (BuiltStair& s : building.stairs)
+        if (s.level + 1 == level && s.hole == building.slab_holes[level][h]) s.hole.clear();
+    }
+    std::vector<Ring> kept;
+    for (size_t h = 0; h < hole_used.size(); ++h)
+      if (hole_used[h]) kept.push_back(building.slab_holes[level][h]);
+    building.slab_holes[level] = kept;
+  }
+  {
+    MeshPart roof;
+    roof.name = "roof";
+    roof.kind = PartKind::kRoof;
+    roof.level = levels - 1;
+    roof.mesh = ExtrudePlan(footprints[levels - 1], {}, levels * kLevelHeight, levels * kLevelHeight + ts);
+    building.parts.push_back(std::move(roof));
+  }
+
+  // Walls, openings, leaves and glass, level by level.
+  for (int level = 0; level < levels; ++level) {
+    const double zb = building.FloorZ(level);
+    const double zt = (level + 1) * kLevelHeight;
+    Ring inner;
+    auto walls = ExteriorWalls(footprints[level], level, options.exterior_wall_thickness, inner, building.warnings);
+    auto interior = InteriorWalls(layout, level, footprints[level], inner, options.interior_wall_thickness, building.warnings);
+    walls.insert(walls.end(), std::make_move_iterator(interior.begin()), std::make_move_iterator(interior.end()));
+
+    std::vector<PlacedOpening> placed;
+    auto place = [&](const std::vector<Element>& elements, ElementKind kind) {
+      for (const Element& e : elements) {
+        if (!(e.OnLevel(level) || (kind == ElementKind::kEntrance && level == 0))) continue;
+        std::string name = e.name + (e.level == kAllLevels && kind != ElementKind::kEntrance ? "@" + std::to_string(level) : "");
+        bool exterior = kind == ElementKind::kWindow || kind == ElementKind::kEntrance;
+        int w = FindWall(walls, e.shape, exterior);
+        if (w < 0) {
+          building.warnings.push_back(std::string(ElementKindKey(kind)) + " " + name + ": no wall under it; left out");
+          continue;
+        }
+        const WallPiece& wall = walls[w];
+        double s0 = std::min(wall.frame.S(e.shape.a), wall.frame.S(e.shape.b));
+        double s1 = std::max(wall.frame.S(e.shape.a), wall.frame.S(e.shape.b));
+        double lo = wall.full.lo + 0.03, hi = wall.full.hi - 0.03;
+        if (s0 < lo || s1 > hi) {
+          s0 = std::max(s0, lo);
+          s1 = std::min(s1, hi);
+          building.warnings.push_back(std::string(ElementKindKey(kind)) + " " + name + ": runs into a wall junction; narrowed to " +
+                                      Fmt(std::max(0.0, s1 - s0)) + " m");
+        }
+        if (s1 - s0 < 0.3) {
+          building.warnings.push_back(std::string(ElementKindKey(kind)) + " " + name + ": no room for it on wall " + wall.name + "; left out");
+          continue;
+        }
+        WallOpening cut{s0, s1, zb, zb + options.door_height};
+        if (kind == ElementKind::kWindow) {
+          cut.z0 = zb + (e.panoramic ? options.panoramic_sill : options.window_sill);
+          cut.z1 = e.panoramic ? zt - options.panoramic_head_gap : zb + options.window_head;
+        }
+        placed.push_back({&e, name, w, cut});
+      }
+    };
+    place(layout.entrances, ElementKind::kEntrance);
+    place(layout.doors, ElementKind::kDoor);
+    place(layout.windows, ElementKind::kWindow);
+
+    for (int w = 0; w < static_cast<int>(walls.size()); ++w) {
+      std::vector<WallOpening> cuts;
+      for (const PlacedOpening& p : placed)
+        if (p.piece == w) cuts.push_back(p.cut);
+      std::sort(cuts.begin(), cuts.end(), [](const WallOpening& a, const WallOpening& b) { return a.s0 < b.s0; });
+      std::vector<WallOpening> merged;
+      for (const WallOpening& c : cuts) {
+        if (!merged.empty() && c.s0 < merged.back().s1 + 0.05) {
+          building.warnings.push_back("wall " + walls[w].name + ": overlapping openings merged into one");
+          merged.back().s1 = std::max(merged.back().s1, c.s1);
+          merged.back().z0 = std::min(merged.back().z0, c.z0);
+          merged.back().z1 = std::max(merged.back().z1, c.z1);
+        } else {
+          merged.push_back(c);
+        }
+      }
+      MeshPart part;
+      part.name = walls[w].name;
+      part.kind = walls[w].exterior ? PartKind::kExteriorWall : PartKind::kInteriorWall;
+      part.level = level;
+      part.element = walls[w].element;
+      part.mesh = WallSolid(walls[w].plan, walls[w].frame, zb, zt, merged);
+      building.parts.push_back(std::move(part));
+    }
+    for (const PlacedOpening& p : placed) {
+      const WallFrame& f = walls[p.piece].frame;
+      const double half = f.thickness / 2.0;
+      const double gap = 0.002;  // m between a leaf or pane and the reveals: no touching faces
+      MeshPart part;
+      part.name = p.name;
+      part.level = level;
+      part.element = p.element->name;
+      if (p.element->kind == ElementKind::kWindow) {
+        part.kind = PartKind::kWindowGlass;
+        double g = options.glass_thickness / 2.0;
+        part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s1 - gap, -g, g, p.cut.z0 + gap, p.cut.z1 - gap);
+      } else {
+        part.kind = PartKind::kDoorLeaf;
+        double lt = options.door_leaf_thickness;
+        double width = p.cut.s1 - p.cut.s0 - 2 * gap;
+        if (options.door_leaves_open)  // hinged at s0, swung 90 degrees to the +normal side (inward for exterior walls)
+          part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s0 + gap + lt, half + gap, half + gap + width,
+                                 p.cut.z0 + 0.01, p.cut.z1 - gap);
+        else
+          part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s1 - gap, -lt / 2, lt / 2, p.cut.z0 + 0.01, p.cut.z1 - gap);
+      }
+      building.parts.push_back(std::move(part));
+    }
+  }
+  return building;
+}
+
+// ---------------------------------------------------------------------------------------------------
+
+double ConvexOverlapArea(const Ring& a, const Ring& b) {
+  if (a.size() < 3 || b.size() < 3) return 0.0;
+  Ring clip = b;
+  if (SignedArea(clip) < 0) std::reverse(clip.begin(), clip.end());
+  Ring result = ClipConvex(a, clip);
+  return result.size() < 3 ? 0.0 : std::abs(SignedArea(result));
+}
+
+int VcrReport::connected_pairs() const {
+  return static_cast<int>(std::count_if(pairs.begin(), pairs.end(), [](const auto& p) { return p.connected(); }));
+}
+
+double VcrReport::vcr() const { return pairs.empty() ? 1.0 : static_cast<double>(connected_pairs()) / pairs.size(); }
+
+VcrReport MeasureVcr(const BuildingMesh& building) {
+  VcrReport report;
+  for (int level = 0; level + 1 < building.levels; ++level) {
+    VerticalConnection pair;
+    pair.lower_level = level;
+    for (const MeshPart& part : building.parts) {
+      if (part.kind != PartKind::kStair || part.level != level) continue;
+      // The staircase's plan outline from its mesh: the convex hull of its vertices.
+      std::vector<Point> pts;
+      for (const Vec3& v : part.mesh.vertices) pts.push_back({v.x, v.y});
+      std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+      Ring hull;
+      for (int pass = 0; pass < 2; ++pass) {
+        size_t start = hull.size();
+        for (Point p : pts) {
+          while (hull.size() >= start + 2 && Cross(Sub(hull.back(), hull[hull.size() - 2]), Sub(p, hull.back())) <= 0)
+            hull.pop_back();
+          hull.push_back(p);
+        }
+        hull.pop_back();
+        std::reverse(pts.begin(), pts.end());
+      }
+      for (const Ring& hole : building.slab_holes[level + 1]) pair.overlap_area += ConvexOverlapArea(hull, hole);
+    }
+    report.pairs.push_back(pair);
+  }
+  return report;
+}
+
+}  // namespace villa
