@@ -1,0 +1,1861 @@
+// The brief parser: tokeniser, phrase lexicons, and a per-sentence interpretation of what was matched
+// (counts, floors, connections, attachments). See brief.h for what it understands.
+#include "generator/text/brief.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace villa {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// ---------------------------------------------------------------------------------------------------
+// Tokens
+
+struct Token {
+  std::string word;  // lower-case, apostrophes dropped ("children's" -> "children", "don't" -> "dont")
+  std::string stem;  // singular form of `word`
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  bool joined = false;  // glued to the previous token by a hyphen ("three-story")
+  char punct = 0;       // non-zero: a punctuation token
+  bool number = false;  // all digits
+  int value = 0;        // its value when `number`
+  int ordinal = 0;      // "1st", "2nd", ... as digits
+  int sentence = 0;
+  bool consumed = false;  // part of something understood
+  bool filler = false;    // a word that carries no requirement (articles, politeness, "villa", ...)
+  int item = -1;          // the item it belongs to
+};
+
+bool IsWordByte(unsigned char c) { return std::isalnum(c) || c >= 0x80; }
+
+std::string Singular(const std::string& w) {
+  static const std::unordered_map<std::string, std::string> kIrregular = {
+      {"shelves", "shelf"}, {"children", "children"}, {"stories", "story"}, {"storeys", "storey"},
+      {"series", "series"}, {"glass", "glass"}, {"bus", "bus"}, {"this", "this"}, {"its", "its"},
+      {"has", "has"}, {"was", "was"}, {"is", "is"}, {"us", "us"}, {"yes", "yes"}, {"does", "does"},
+      {"always", "always"}, {"plus", "plus"}, {"ensuites", "ensuite"}, {"wcs", "wc"}, {"tvs", "tv"},
+      {"couches", "couch"}, {"benches", "bench"}, {"lavatories", "lavatory"}, {"nurseries", "nursery"},
+      {"studies", "study"}, {"balconies", "balcony"}, {"libraries", "library"}, {"verandas", "veranda"},
+      {"less", "less"}, {"across", "across"}, {"upstairs", "upstairs"}, {"downstairs", "downstairs"},
+      {"stairs", "stairs"}, {"towards", "towards"}, {"kids", "kid"}, {"lounges", "lounge"},
+      {"offices", "office"}, {"terraces", "terrace"}, {"wardrobes", "wardrobe"}, {"houses", "house"},
+      {"spaces", "space"}, {"places", "place"}, {"sides", "side"}, {"suites", "suite"},
+  };
+  if (auto it = kIrregular.find(w); it != kIrregular.end()) return it->second;
+  if (w.size() > 4 && w.ends_with("ies")) return w.substr(0, w.size() - 3) + "y";
+  if (w.size() > 4 && (w.ends_with("ches") || w.ends_with("shes") || w.ends_with("sses") || w.ends_with("xes")))
+    return w.substr(0, w.size() - 2);
+  if (w.size() > 3 && w.back() == 's' && !w.ends_with("ss") && !w.ends_with("us") && !w.ends_with("is"))
+    return w.substr(0, w.size() - 1);
+  return w;
+}
+
+std::vector<Token> Tokenise(std::string_view text) {
+  std::vector<Token> tokens;
+  std::size_t i = 0;
+  int sentence = 0;
+  bool pending_hyphen = false;
+  auto is_apostrophe = [&](std::size_t at) -> int {  // byte length of an apostrophe at `at`, or 0
+    if (at < text.size() && text[at] == '\'') return 1;
+    if (at + 2 < text.size() && static_cast<unsigned char>(text[at]) == 0xE2 &&
+        static_cast<unsigned char>(text[at + 1]) == 0x80 && static_cast<unsigned char>(text[at + 2]) == 0x99)
+      return 3;
+    return 0;
+  };
+  while (i < text.size()) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (IsWordByte(c) && !(c >= 0x80 && is_apostrophe(i))) {
+      Token t;
+      t.begin = i;
+      std::string word;
+      while (i < text.size()) {
+        unsigned char d = static_cast<unsigned char>(text[i]);
+        if (int a = is_apostrophe(i); a) {
+          // "children's" -> "children"; "don't" -> "dont"; "kids'" -> "kids".
+          std::size_t after = i + a;
+          if (after < text.size() && IsWordByte(static_cast<unsigned char>(text[after])) &&
+              !is_apostrophe(after)) {
+            std::size_t j = after;
+            while (j < text.size() && IsWordByte(static_cast<unsigned char>(text[j])) && !is_apostrophe(j)) ++j;
+            std::string tail(text.substr(after, j - after));
+            for (auto& ch : tail) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+            if (tail != "s") word += tail;
+            i = j;
+          } else {
+            i = after;
+          }
+          break;
+        }
+        if (!IsWordByte(d)) break;
+        // Digits followed by a decimal point and digits stay one number ("2.5").
+        if (d == '.' && i + 1 < text.size() && !word.empty() && std::isdigit(static_cast<unsigned char>(word.back())) &&
+            std::isdigit(static_cast<unsigned char>(text[i + 1]))) {
+          word += '.';
+          ++i;
+          continue;
+        }
+        word += static_cast<char>(std::tolower(d));
+        ++i;
+      }
+      // A decimal point inside a number was consumed by the loop above only when followed by a digit.
+      while (i < text.size() && text[i] == '.' && i + 1 < text.size() &&
+             std::isdigit(static_cast<unsigned char>(text[i + 1])) && !word.empty() &&
+             std::all_of(word.begin(), word.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)) || ch == '.'; })) {
+        word += '.';
+        ++i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) word += text[i++];
+      }
+      t.end = i;
+      t.word = word;
+      t.joined = pending_hyphen;
+      pending_hyphen = false;
+      t.sentence = sentence;
+      if (!word.empty() && std::all_of(word.begin(), word.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); })) {
+        t.number = true;
+        t.value = word.size() > 6 ? 1000000 : std::stoi(word);
+      } else if (word.size() >= 3 && std::isdigit(static_cast<unsigned char>(word[0]))) {
+        std::string digits, suffix;
+        std::size_t k = 0;
+        while (k < word.size() && std::isdigit(static_cast<unsigned char>(word[k]))) digits += word[k++];
+        suffix = word.substr(k);
+        if ((suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th") && digits.size() < 4)
+          t.ordinal = std::stoi(digits);
+      }
+      t.stem = Singular(word);
+      tokens.push_back(std::move(t));
+      continue;
+    }
+    if (c == '-' && !tokens.empty() && tokens.back().punct == 0 && tokens.back().end == i && i + 1 < text.size() &&
+        IsWordByte(static_cast<unsigned char>(text[i + 1]))) {
+      pending_hyphen = true;
+      ++i;
+      continue;
+    }
+    pending_hyphen = false;
+    if (c == '.' || c == '!' || c == '?' || c == ';' || c == '\n') {
+      Token t;
+      t.begin = i;
+      t.end = i + 1;
+      t.punct = static_cast<char>(c);
+      t.sentence = sentence;
+      t.word = std::string(1, static_cast<char>(c));
+      t.stem = t.word;
+      tokens.push_back(std::move(t));
+      ++sentence;
+      ++i;
+      continue;
+    }
+    if (c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' || c == '-' || c == '*') {
+      Token t;
+      t.begin = i;
+      t.end = i + 1;
+      t.punct = static_cast<char>(c);
+      t.sentence = sentence;
+      t.word = std::string(1, static_cast<char>(c));
+      t.stem = t.word;
+      tokens.push_back(std::move(t));
+      ++i;
+      continue;
+    }
+    ++i;  // quotes, spaces and other symbols carry nothing
+  }
+  return tokens;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Word classes
+
+const std::unordered_map<std::string, int>& CardinalWords() {
+  static const std::unordered_map<std::string, int> words = {
+      {"zero", 0}, {"one", 1}, {"two", 2}, {"three", 3}, {"four", 4}, {"five", 5}, {"six", 6},
+      {"seven", 7}, {"eight", 8}, {"nine", 9}, {"ten", 10}, {"eleven", 11}, {"twelve", 12},
+      {"single", 1}, {"double", 2}, {"triple", 3}};
+  return words;
+}
+
+std::optional<int> Cardinal(const Token& t) {
+  if (t.punct) return std::nullopt;
+  if (t.number) return t.value;
+  auto it = CardinalWords().find(t.word);
+  if (it != CardinalWords().end()) return it->second;
+  return std::nullopt;
+}
+
+std::optional<int> Ordinal(const Token& t) {
+  static const std::unordered_map<std::string, int> words = {
+      {"first", 1}, {"second", 2}, {"third", 3}, {"fourth", 4}, {"fifth", 5}, {"sixth", 6}};
+  if (t.ordinal) return t.ordinal;
+  auto it = words.find(t.word);
+  if (it != words.end()) return it->second;
+  return std::nullopt;
+}
+
+bool IsFloorNoun(const Token& t) {
+  static const std::unordered_set<std::string> nouns = {"floor", "story", "storey", "level", "storied",
+                                                        "storeyed", "stories", "storeys", "floors", "levels"};
+  return !t.punct && (nouns.count(t.stem) || nouns.count(t.word));
+}
+
+bool In(const Token& t, std::initializer_list<std::string_view> words) {
+  for (auto w : words)
+    if (t.word == w || t.stem == w) return true;
+  return false;
+}
+
+// Words that carry no requirement of their own: they are understood as glue and never reported.
+const std::unordered_set<std::string>& FillerWords() {
+  static const std::unordered_set<std::string> words = {
+      // articles, pronouns, conjunctions, prepositions
+      "a", "an", "the", "this", "that", "these", "those", "it", "its", "they", "them", "their", "there",
+      "here", "i", "me", "my", "we", "us", "our", "you", "your", "he", "she", "his", "her", "and", "or",
+      "but", "nor", "so", "as", "of", "for", "to", "in", "on", "at", "by", "from", "into", "onto", "with",
+      "within", "inside", "upon", "over", "across", "throughout", "between", "also", "too", "well",
+      "both", "each", "every", "all", "any", "some", "which", "where", "what", "who", "whose", "whom",
+      "then", "than", "while", "whereas", "plus", "including", "include", "includes", "included",
+      "along", "together", "other", "another", "such", "either", "neither", "just", "only", "one",
+      "ones", "if", "possible", "ideally", "preferably", "maybe", "perhaps", "altogether", "total",
+      "overall", "in", "about", "around", "like", "alike", "same", "more", "most", "much", "many", "very",
+      "really", "quite", "rather", "somewhat", "really", "s", "etc", "e", "g", "ie", "eg", "x", "via",
+      "through", "up", "out", "down", "off", "per", "respectively", "additionally", "addition",
+      "furthermore", "moreover", "finally", "lastly", "first", "firstly", "second", "secondly", "next",
+      "then", "further", "else", "whole", "entire", "rest", "remaining", "other", "others", "own",
+      "directly", "direct", "immediately", "right", "straight", "conveniently", "easily", "kindly",
+      // verbs of wanting, having, building, placing
+      "want", "wants", "wanted", "would", "like", "love", "need", "needs", "needed", "require",
+      "requires", "required", "hope", "wish", "prefer", "please", "thank", "thanks", "can", "could",
+      "should", "must", "may", "might", "will", "shall", "be", "is", "are", "was", "were", "been",
+      "being", "am", "have", "has", "had", "having", "do", "does", "did", "get", "got", "let", "make",
+      "made", "build", "built", "building", "design", "designed", "designing", "create", "created",
+      "plan", "planned", "planning", "place", "placed", "put", "add", "added", "provide", "provided",
+      "contain", "contains", "containing", "feature", "features", "featuring", "featured", "hold",
+      "holds", "holding", "house", "houses", "housing", "offer", "offers", "give", "gives", "host",
+      "hosts", "keep", "set", "sit", "sits", "lie", "lies", "located", "situated", "positioned",
+      "arranged", "arrange", "find", "found", "see", "go", "goes", "come", "comes", "take", "takes",
+      "use", "used", "serve", "serves", "serving", "equip", "equipped", "furnish", "furnished",
+      "fit", "fitted", "occupy", "occupies", "stack", "stacked", "spread", "split", "divided",
+      "distributed", "organised", "organized", "laid", "lay", "layout", "come", "look", "looking",
+      "think", "thinking", "imagine", "picture", "envision", "dream", "consider", "request", "asking",
+      "ask", "suggest", "wanting", "needing", "sketch", "draw", "generate", "produce", "new", "own",
+      "reserve", "reserved", "dedicate", "dedicated", "allocate", "allocated", "go", "follow",
+      "following", "below", "above", "overall", "share", "shares", "shared", "rise", "rises",
+      // the building itself and generic nouns
+      "villa", "home", "building", "residence", "mansion", "cottage", "dwelling", "property", "family",
+      "footprint", "structure", "floorplan", "project", "place", "space", "area", "room", "rooms",
+      "design", "style", "version", "option", "setup", "arrangement", "configuration", "program",
+      "programme", "brief", "request", "requirement", "requirements", "spec", "specification",
+      "summary", "note", "notes", "detail", "details", "yes", "no", "ok", "okay", "hi", "hello",
+      "dear", "regards", "architect", "everything", "something", "thing", "things", "lot", "lots",
+      "kind", "sort", "type", "way", "part", "stairs", "staircase", "stairway", "stair", "staircases",
+      "stairwell", "window", "windows", "wall", "walls", "door", "doors", "shaped", "shape", "form",
+      "floors", "mix", "people", "guests", "guest", "friends", "kid", "kids", "children", "parents",
+      "we're", "im", "ive", "id", "youre", "theyre", "its", "dont", "count", "storey", "story",
+      // quality adjectives and adverbs that ask for nothing checkable
+      "large", "big", "huge", "spacious", "generous", "roomy", "small", "little", "compact", "tiny",
+      "cozy", "cosy", "bright", "sunny", "airy", "light", "modern", "contemporary", "classic",
+      "traditional", "elegant", "luxurious", "luxury", "comfortable", "nice", "beautiful", "lovely",
+      "good", "great", "quiet", "calm", "simple", "practical", "functional", "separate", "private",
+      "additional", "extra", "main", "decent", "proper", "sizable", "sizeable", "wide", "long",
+      "bigger", "smaller", "larger", "warm", "welcoming", "open", "convenient", "typical", "standard",
+      "usual", "neat", "clean", "fine", "real", "actual", "dream", "perfect", "ideal", "charming",
+      "stylish", "lavish", "grand", "stunning", "gorgeous", "pleasant", "relaxing", "peaceful",
+      "fully", "nicely", "properly", "generously", "comfortably", "totally", "exactly", "precisely",
+      "approximately", "roughly", "least", "most", "highly", "clearly", "simply", "naturally",
+      "respective", "individual", "current", "several", "multiple", "few", "couple", "pair",
+      "number", "also", "always", "definitely", "certainly", "absolutely", "especially",
+      "particularly", "mainly", "mostly", "primarily", "primary", "important", "essential", "key",
+      "nearby", "close", "near", "adjacent", "beside", "next", "side", "end", "corner", "part",
+      "portion", "half", "wing", "toward", "towards", "facing", "face", "faces", "level",
+  };
+  return words;
+}
+
+bool IsFiller(const Token& t) {
+  if (t.punct) return true;
+  return FillerWords().count(t.word) > 0 || FillerWords().count(t.stem) > 0;
+}
+
+// Words allowed between a quantifier and its room noun ("two large, bright bedrooms").
+bool IsAdjective(const Token& t) {
+  static const std::unordered_set<std::string> words = {
+      "large", "big", "huge", "spacious", "generous", "roomy", "small", "little", "compact", "tiny",
+      "cozy", "cosy", "bright", "sunny", "airy", "light", "modern", "contemporary", "classic",
+      "elegant", "luxurious", "comfortable", "nice", "beautiful", "lovely", "good", "great", "quiet",
+      "simple", "practical", "functional", "separate", "private", "additional", "extra", "main",
+      "decent", "proper", "sizable", "sizeable", "wide", "warm", "welcoming", "open", "plan", "own",
+      "attached", "en", "suite", "ensuite", "full", "half", "dedicated", "shared", "second", "third",
+      "further", "new", "more", "stylish", "calm", "peaceful", "formal", "informal", "cosy", "home",
+      "adjoining", "connected", "spare", "fully", "equipped", "well", "lit", "sized", "large-sized"};
+  return !t.punct && (words.count(t.word) > 0 || words.count(t.stem) > 0);
+}
+
+bool IsNegation(const Token& t) {
+  return In(t, {"no", "not", "without", "dont", "doesnt", "never", "zero", "nor", "neither", "cannot",
+                "wont", "none", "exclude", "excluding", "except", "skip", "omit"});
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Lexicons: phrases as sequences of stems (hyphens and apostrophes already gone).
+
+struct Phrase {
+  std::vector<std::string> words;
+};
+
+std::vector<std::string> Split(std::string_view s) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s) {
+    if (c == ' ') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+// Length of the match of `phrase` at tokens[i], 0 if none. Words match a token's word or stem.
+int MatchPhrase(const std::vector<Token>& tokens, std::size_t i, const std::vector<std::string>& phrase) {
+  if (i + phrase.size() > tokens.size()) return 0;
+  for (std::size_t k = 0; k < phrase.size(); ++k) {
+    const Token& t = tokens[i + k];
+    if (t.punct || t.item >= 0) return 0;
+    if (k > 0 && t.sentence != tokens[i].sentence) return 0;
+    if (t.word != phrase[k] && t.stem != phrase[k]) return 0;
+  }
+  return static_cast<int>(phrase.size());
+}
+
+struct RoomWord {
+  std::vector<std::string> words;
+  Category category;
+  bool ensuite = false;    // "en-suite", "ensuite": a bathroom of a bedroom
+  bool open_plan = false;  // "open-plan kitchen"
+};
+
+const std::vector<RoomWord>& RoomLexicon() {
+  static const std::vector<RoomWord> lexicon = [] {
+    std::vector<RoomWord> out;
+    auto add = [&](Category c, std::initializer_list<std::string_view> phrases, bool ensuite = false,
+                   bool open_plan = false) {
+      for (auto p : phrases) out.push_back({Split(p), c, ensuite, open_plan});
+    };
+    using C = Category;
+    add(C::kLivingRoom, {"living room", "living", "lounge", "sitting room", "family room", "living area",
+                         "living space", "salon", "drawing room", "parlor", "parlour", "great room",
+                         "tv room", "media room", "day room", "living hall", "livingroom", "living-room",
+                         "lounge area", "sitting area", "den"});
+    add(C::kBedroom, {"bedroom", "master bedroom", "main bedroom", "primary bedroom", "guest bedroom",
+                      "guest room", "master suite", "sleeping room", "bed room", "parent bedroom",
+                      "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
+                      "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area"});
+    add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse"});
+    add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
+    add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
+                       "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
+                       "water closet", "toilet room", "bathroom suite", "shower"});
+    add(C::kBathroom, {"en suite bathroom", "ensuite bathroom", "en suite", "ensuite", "en suite shower room",
+                       "ensuite shower room", "en suite wc", "ensuite wc", "attached bathroom",
+                       "private bathroom", "own bathroom", "en suite bath", "ensuite bath"},
+        true);
+    add(C::kDiningRoom, {"dining room", "dining", "dining area", "dining hall", "dining space",
+                         "breakfast room", "eating area", "dining corner", "diningroom", "dining-room"});
+    add(C::kChildrenRoom, {"children room", "child room", "kid room", "kids room", "kid bedroom",
+                           "kids bedroom", "children bedroom", "child bedroom", "nursery", "playroom",
+                           "play room", "baby room", "youth room", "teen room", "kiddie room",
+                           "children-room", "childrens room", "childs room", "kid s room"});
+    add(C::kOffice, {"office", "study", "home office", "study room", "workroom", "work room",
+                     "workspace", "work space", "library", "studio", "home study", "office room",
+                     "working room", "den office"});
+    add(C::kMeetingRoom, {"meeting room", "conference room", "boardroom", "board room", "meeting space",
+                          "meeting area", "meeting-room", "conference area", "reception room"});
+    add(C::kUtilityRoom, {"utility room", "utility", "staircase room", "stair room", "stairwell room",
+                          "stair hall", "stairway room", "staircase-room", "utility-room", "stair core",
+                          "stairs room", "utility area", "service room"});
+    add(C::kBalcony, {"balcony", "terrace", "veranda", "verandah", "loggia", "deck", "sun deck",
+                      "roof terrace", "balconette"});
+    return out;
+  }();
+  return lexicon;
+}
+
+struct FurnitureWord {
+  std::vector<std::string> words;
+};
+
+const std::vector<std::vector<std::string>>& FurnitureLexicon() {
+  static const std::vector<std::vector<std::string>> lexicon = [] {
+    std::vector<std::vector<std::string>> out;
+    for (auto p : {"tv", "television", "tv set", "bed", "double bed", "single bed", "bunk bed", "king bed",
+                   "queen bed", "king size bed", "queen size bed", "twin bed", "crib", "cot", "sofa",
+                   "couch", "sofa bed", "armchair", "chair", "desk", "writing desk", "table", "dining table",
+                   "coffee table", "conference table", "meeting table", "side table", "bedside table",
+                   "wardrobe", "closet", "bookshelf", "bookcase", "shelf", "cabinet", "dresser",
+                   "nightstand", "night stand", "piano", "grand piano", "fireplace", "bathtub", "bath tub",
+                   "tub", "sink", "basin", "fridge", "refrigerator", "oven", "stove", "cooker", "hob",
+                   "dishwasher", "washing machine", "washer", "dryer", "lamp", "floor lamp", "rug",
+                   "carpet", "plant", "mirror", "whiteboard", "projector", "treadmill", "computer",
+                   "monitor", "kitchen island", "island", "bar counter", "sideboard", "bench", "ottoman",
+                   "stool", "bar stool", "toy", "toy box", "printer", "screen", "speaker", "aquarium",
+                   "painting", "curtain", "vanity", "chest of drawer", "drawer", "office chair",
+                   "gaming console", "console", "filing cabinet", "recliner", "sectional", "loveseat",
+                   "love seat", "futon", "hammock", "bunk", "changing table", "tv stand", "tv cabinet",
+                   "counter", "worktop", "microwave", "exercise bike", "pool table", "sound system"}) {
+      out.push_back(Split(p));
+    }
+    return out;
+  }();
+  return lexicon;
+}
+
+struct CueWord {
+  std::vector<std::string> words;
+  LinkKind kind;
+  bool mutual = false;  // "open to each other", "are connected": links the rooms before it
+};
+
+const std::vector<CueWord>& CueLexicon() {
+  static const std::vector<CueWord> lexicon = [] {
+    std::vector<CueWord> out;
+    auto add = [&](LinkKind k, std::initializer_list<std::string_view> phrases, bool mutual = false) {
+      for (auto p : phrases) out.push_back({Split(p), k, mutual});
+    };
+    add(LinkKind::kOpen,
+        {"open to", "open onto", "open into", "open out to", "open out onto", "open up to", "openly connected to",
+         "openly connected with", "openly connect to", "openly connect with", "openly linked to",
+         "openly linked with", "openly joined to", "openly joined with", "openly join", "openly connect",
+         "open connection to", "open connection with", "open plan with", "flow into", "flow onto",
+         "flowing into", "merge into", "merge with", "merging into", "blend into", "open passage to",
+         "open link to", "open link with", "open towards", "open toward", "opening to", "opening into",
+         "opening onto", "without a door to", "without a wall to", "open-plan with", "in an open plan with",
+         "openly adjoin", "openly adjoining"});
+    add(LinkKind::kOpen, {"open to each other", "open onto each other", "openly connected", "openly connect",
+                          "openly linked", "open to one another", "open plan", "openplan", "combined",
+                          "form an open plan", "share an open space", "flow into each other",
+                          "flow together", "openly joined"},
+        true);
+    add(LinkKind::kAny,
+        {"connected to", "connected with", "connect to", "connect with", "connecting to", "connecting with",
+         "linked to", "linked with", "link to", "link with", "lead to", "lead into", "lead onto", "leading to",
+         "leading into", "leading onto", "access to", "access into", "access onto", "access", "accessing",
+         "accessible from", "accessible via", "accessible through", "reach", "reaching", "reached from",
+         "reached via", "adjacent to", "next to", "adjoin", "adjoining", "adjoins", "communicate with",
+         "give onto", "giving onto", "give access to", "giving access to", "connect", "connecting",
+         "enter", "enter into", "entered from", "is off", "off of", "join", "joined to", "joined with",
+         "lead out to", "step out to", "step out onto", "walk out to", "go out to", "open directly to",
+         "open directly onto", "open directly into", "connection to", "connection with", "beside",
+         "alongside", "attached to", "connected directly to"});
+    add(LinkKind::kAny, {"connected", "linked", "connected to each other", "connected to one another",
+                         "adjacent", "next to each other", "joined"},
+        true);
+    add(LinkKind::kDoor,
+        {"door to", "door into", "door onto", "door leading to", "door opening to", "door opening onto",
+         "through a door to", "via a door to", "reached through", "reached only through",
+         "accessed through", "accessed only through", "accessible only through", "only through",
+         "only from", "reached only from", "entered through", "entered only through", "door with",
+         "by a door to", "a door to", "door connecting to", "door connection to"});
+    return out;
+  }();
+  return lexicon;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Items: what the matchers found
+
+enum class ItemKind { kFloorCount, kFloorRef, kShape, kRoom, kCue, kPanoramic, kFurniture, kEntrance, kSide };
+
+enum class RefType { kOrdinal, kNumbered, kGround, kTop, kUpper, kMiddle, kEach, kSame };
+
+struct Item {
+  ItemKind kind;
+  int first = 0;  // token range, inclusive
+  int last = 0;
+  // kFloorCount
+  int floors = 0;
+  bool floors_at_least = false;
+  // kFloorRef
+  RefType ref = RefType::kGround;
+  int n = 0;
+  // kShape
+  std::optional<ShapeClass> shape;  // unset: unsupported
+  // kRoom
+  Category category = Category::kRoom;
+  bool ensuite = false;
+  bool open_plan = false;
+  // kCue
+  LinkKind link = LinkKind::kAny;
+  bool mutual = false;
+  // kSide
+  std::string side;
+  // kFurniture
+  int item_first = 0;  // the item's words (modifiers + noun), for its name
+};
+
+// A room mention after interpretation.
+struct Mention {
+  int item = -1;
+  Category category = Category::kRoom;
+  bool counting = false;  // "a kitchen", "two bathrooms", "no balcony": states how many
+  int min = 1;
+  int max = 1;
+  bool plural = false;
+  bool every = false;  // "each bedroom"
+  bool with_before = false;
+  int with_token = -1;
+  int bound_ref = -1;   // floor ref item bound as an adjective ("second-floor bedroom")
+  int ref = -1;         // floor ref item that places it (bound, scope or trailing)
+  std::vector<int> partner_levels;  // levels taken from connection partners (resolved later)
+  std::vector<int> partners;        // mention indices it connects with
+  bool in_connection = false;
+  bool in_attachment = false;  // furniture, panoramic, side or entrance refer to it
+  int first = 0;  // token range of the whole phrase (quantifier included)
+  int last = 0;
+};
+
+class Parser {
+ public:
+  explicit Parser(std::string_view text) : text_(text), tokens_(Tokenise(text)) {}
+
+  Brief Run();
+
+ private:
+  // matching
+  void MatchAll();
+  int TryFloorCount(std::size_t i, Item& item);
+  int TryFloorRef(std::size_t i, Item& item);
+  int TryShape(std::size_t i, Item& item);
+  int TryRoom(std::size_t i, Item& item);
+  int TryCue(std::size_t i, Item& item);
+  int TryPanoramic(std::size_t i, Item& item);
+  int TryFurniture(std::size_t i, Item& item);
+  int TryEntrance(std::size_t i, Item& item);
+  int TrySide(std::size_t i, Item& item);
+  bool RoomStartsWithin(std::size_t i, int span) const;
+  bool FurnitureStartsWithin(std::size_t i, int span) const;
+
+  // interpretation
+  void Quantify(Mention& m);
+  void PlaceLevels();
+  void Connect();
+  void Attach();
+  void Finish(Brief& brief);
+  int ResolveRef(int ref_item) const;
+  int ItemAt(int token) const { return token >= 0 && token < static_cast<int>(tokens_.size()) ? tokens_[token].item : -1; }
+  int MentionOfItem(int item) const {
+    auto it = mention_of_item_.find(item);
+    return it == mention_of_item_.end() ? -1 : it->second;
+  }
+  TextSpan Span(int first, int last) const {
+    TextSpan s;
+    s.begin = tokens_[first].begin;
+    s.end = tokens_[last].end;
+    s.text = std::string(text_.substr(s.begin, s.end - s.begin));
+    return s;
+  }
+  void Consume(int first, int last) {
+    for (int k = first; k <= last; ++k) tokens_[k].consumed = true;
+  }
+  std::vector<int> MentionLevels(const Mention& m) const;
+  int OwnLevel(const Mention& m) const { return m.ref >= 0 ? ResolveRef(m.ref) : kAnyLevel; }
+  bool bare_mention_ = false;  // set by Quantify for the mention it just read
+
+  std::string_view text_;
+  std::vector<Token> tokens_;
+  std::vector<Item> items_;
+  std::vector<Mention> mentions_;
+  std::unordered_map<int, int> mention_of_item_;
+  bool british_ = false;
+  bool zero_based_numbers_ = false;
+  std::optional<int> floors_;
+  std::optional<TextSpan> floors_source_;
+  int floors_min_ = 0;
+  std::vector<std::string> conflicts_;
+  std::vector<int> sentence_scope_;  // per sentence: the floor ref scoping its end, or -1
+  std::vector<bool> bare_;           // per mention: no quantifier at all ("bedrooms")
+
+  struct PendingConnection {
+    int a = -1;  // mention indices
+    int b = -1;
+    LinkKind kind = LinkKind::kAny;
+    bool every = false;
+    TextSpan source;
+  };
+  std::vector<PendingConnection> connections_;
+  struct PendingAttachment {
+    ItemKind kind;
+    int item = -1;
+    int mention = -1;     // the room it belongs to, or -1
+    int ref = -1;         // a floor ref placing it when there is no room
+    TextSpan source;
+  };
+  std::vector<PendingAttachment> attachments_;
+};
+
+bool Parser::RoomStartsWithin(std::size_t i, int span) const {
+  for (std::size_t k = i; k < tokens_.size() && k < i + span; ++k) {
+    if (tokens_[k].punct) return false;
+    for (const auto& w : RoomLexicon())
+      if (MatchPhrase(tokens_, k, w.words)) return true;
+  }
+  return false;
+}
+
+bool Parser::FurnitureStartsWithin(std::size_t i, int span) const {
+  for (std::size_t k = i; k < tokens_.size() && k < i + span; ++k) {
+    if (tokens_[k].punct) return false;
+    for (const auto& w : FurnitureLexicon())
+      if (MatchPhrase(tokens_, k, w)) return true;
+  }
+  return false;
+}
+
+int Parser::TryFloorCount(std::size_t i, Item& item) {
+  const Token& t = tokens_[i];
+  if (t.punct) return 0;
+  if (In(t, {"bungalow"})) {
+    item.floors = 1;
+    return 1;
+  }
+  if (t.word == "duplex") {
+    item.floors = 2;
+    return 1;
+  }
+  if (t.word == "triplex") {
+    item.floors = 3;
+    return 1;
+  }
+  if (In(t, {"multi", "multistory", "multistorey", "multilevel", "multistoried"})) {
+    int len = 1;
+    if (t.word == "multi") {
+      if (i + 1 < tokens_.size() && IsFloorNoun(tokens_[i + 1])) len = 2;
+      else return 0;
+    }
+    item.floors = 2;
+    item.floors_at_least = true;
+    return len;
+  }
+  auto n = Cardinal(t);
+  if (!n || i + 1 >= tokens_.size()) return 0;
+  const Token& next = tokens_[i + 1];
+  if (!IsFloorNoun(next)) return 0;
+  // "floor plan", "floor area": not a count of floors.
+  if (i + 2 < tokens_.size() && In(tokens_[i + 2], {"plan", "area", "space", "lamp"})) return 0;
+  item.floors = *n;
+  return 2;
+}
+
+int Parser::TryFloorRef(std::size_t i, Item& item) {
+  const Token& t = tokens_[i];
+  if (t.punct) return 0;
+  auto floor_at = [&](std::size_t k) { return k < tokens_.size() && IsFloorNoun(tokens_[k]); };
+  if (In(t, {"upstairs", "upstair"})) {
+    item.ref = RefType::kUpper;
+    return 1;
+  }
+  if (In(t, {"downstairs", "downstair"})) {
+    item.ref = RefType::kGround;
+    return 1;
+  }
+  if (auto o = Ordinal(t); o && floor_at(i + 1)) {
+    item.ref = RefType::kOrdinal;
+    item.n = *o;
+    return 2;
+  }
+  if (In(t, {"ground"})) {
+    item.ref = RefType::kGround;
+    return floor_at(i + 1) ? 2 : 1;
+  }
+  if (In(t, {"top", "uppermost", "highest", "topmost", "last"}) && floor_at(i + 1)) {
+    item.ref = RefType::kTop;
+    return 2;
+  }
+  if (In(t, {"upper", "higher"}) && floor_at(i + 1)) {
+    item.ref = RefType::kUpper;
+    return 2;
+  }
+  if (In(t, {"lower", "bottom", "main", "entry", "street", "entrance", "lowest"}) && floor_at(i + 1)) {
+    item.ref = RefType::kGround;
+    return 2;
+  }
+  if (In(t, {"middle", "intermediate", "central"}) && floor_at(i + 1)) {
+    item.ref = RefType::kMiddle;
+    return 2;
+  }
+  if (In(t, {"each", "every", "all", "both", "per"}) && floor_at(i + 1)) {
+    item.ref = RefType::kEach;
+    return 2;
+  }
+  // "each of the floors", "on each of the three floors" (the count is matched on its own afterwards)
+  if (In(t, {"each", "every"}) && i + 3 < tokens_.size() && tokens_[i + 1].word == "of" &&
+      tokens_[i + 2].word == "the" && (floor_at(i + 3) || (Cardinal(tokens_[i + 3]) && floor_at(i + 4)))) {
+    item.ref = RefType::kEach;
+    return 3;
+  }
+  if (In(t, {"this", "that", "same"}) && floor_at(i + 1)) {
+    item.ref = RefType::kSame;
+    return 2;
+  }
+  if (IsFloorNoun(t) && !In(t, {"storied", "storeyed"}) && i + 1 < tokens_.size()) {
+    if (auto n = Cardinal(tokens_[i + 1]); n && tokens_[i + 1].word != "single" && tokens_[i + 1].word != "double") {
+      item.ref = RefType::kNumbered;
+      item.n = *n;
+      return 2;
+    }
+  }
+  return 0;
+}
+
+int Parser::TryShape(std::size_t i, Item& item) {
+  const Token& t = tokens_[i];
+  if (t.punct) return 0;
+  auto shape_word = [&](std::size_t k) {
+    return k < tokens_.size() && In(tokens_[k], {"shaped", "shape", "plan", "form", "footprint", "outline", "layout"});
+  };
+  int len = 0;
+  if (t.word.size() == 1 && std::isalpha(static_cast<unsigned char>(t.word[0])) && shape_word(i + 1)) {
+    char c = t.word[0];
+    len = 2;
+    if (c == 'l') item.shape = ShapeClass::kL;
+    else if (c == 'u') item.shape = ShapeClass::kU;
+    else if (c == 't') item.shape = ShapeClass::kT;
+    else if (c == 'h') item.shape = ShapeClass::kH;
+    else item.shape.reset();  // "Z-shaped", "S-shaped": no such class
+  } else if (In(t, {"rectangular", "rectangle", "oblong", "boxy", "box"})) {
+    if (t.word == "box" && !shape_word(i + 1)) return 0;
+    item.shape = ShapeClass::kRectangle;
+    len = 1;
+  } else if (t.word == "square") {
+    if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"meter", "metre", "m", "feet", "foot", "ft", "kilometer"}))
+      return 0;
+    item.shape = ShapeClass::kRectangle;
+    len = 1;
+  } else if (In(t, {"irregular", "irregularly", "slanted", "slanting", "angled", "angular", "chamfered",
+                    "diagonal", "trapezoidal", "polygonal", "asymmetric", "asymmetrical", "sloped", "skewed",
+                    "oblique", "bevelled", "beveled", "nonrectangular", "trapezoid", "wedge"})) {
+    item.shape = ShapeClass::kIrregular;
+    len = 1;
+  } else if (In(t, {"odd", "oddly", "unusual", "unusually", "free", "non"}) && i + 1 < tokens_.size() &&
+             (shape_word(i + 1) || In(tokens_[i + 1], {"rectangular", "form"}))) {
+    item.shape = ShapeClass::kIrregular;
+    len = 2;
+  } else if (In(t, {"round", "circular", "curved", "oval", "elliptical", "star", "hexagonal", "hexagon",
+                    "octagonal", "octagon", "pentagonal", "pentagon", "triangular", "triangle", "cylindrical",
+                    "dome", "domed", "spiral", "crescent", "cross", "heart", "semicircular", "zigzag", "circle",
+                    "ring", "curvy", "rounded"})) {
+    item.shape.reset();
+    len = 1;
+  } else {
+    return 0;
+  }
+  // A shape word describing a room or a piece of furniture ("a round table", "a rectangular living
+  // room") is not the footprint.
+  if (FurnitureStartsWithin(i + len, 2) || (RoomStartsWithin(i + len, 2) && !shape_word(i + len))) return 0;
+  if (shape_word(i + len)) ++len;
+  return len;
+}
+
+int Parser::TryRoom(std::size_t i, Item& item) {
+  int best = 0;
+  for (const auto& w : RoomLexicon()) {
+    int len = MatchPhrase(tokens_, i, w.words);
+    if (len > best) {
+      best = len;
+      item.category = w.category;
+      item.ensuite = w.ensuite;
+      item.open_plan = w.open_plan;
+    }
+  }
+  if (best == 0) return 0;
+  // "living" and "dining" alone name a room only where no other noun follows ("living and dining
+  // room"), not in "dining table" (furniture wins by length) or "living space" (in the lexicon).
+  // "master" alone only in "the master", and "study" / "office" as a verb is rare enough to accept.
+  const Token& t = tokens_[i];
+  if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
+      !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
+    return 0;
+  if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
+      i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "inside"}))
+    return 0;  // "a shower in the bathroom": furniture
+  return best;
+}
+
+int Parser::TryCue(std::size_t i, Item& item) {
+  int best = 0;
+  for (const auto& w : CueLexicon()) {
+    int len = MatchPhrase(tokens_, i, w.words);
+    if (len > best) {
+      best = len;
+      item.link = w.kind;
+      item.mutual = w.mutual;
+    }
+  }
+  return best;
+}
+
+int Parser::TryPanoramic(std::size_t i, Item& item) {
+  static const std::vector<std::vector<std::string>> phrases = [] {
+    std::vector<std::vector<std::string>> out;
+    for (auto p : {"panoramic window", "panoramic windows", "panoramic glazing", "panoramic glass",
+                   "panorama window", "panoramic view", "panoramic", "floor to ceiling window",
+                   "floor to ceiling glazing", "floor to ceiling glass", "full height window",
+                   "full height glazing", "picture window", "glass wall", "window wall", "panoramic glass wall",
+                   "panoramic glazed wall", "panoramic opening", "wall of glass", "wall of window"})
+      out.push_back(Split(p));
+    return out;
+  }();
+  int best = 0;
+  for (const auto& p : phrases) best = std::max(best, MatchPhrase(tokens_, i, p));
+  return best;
+}
+
+int Parser::TryFurniture(std::size_t i, Item& item) {
+  int best = 0;
+  for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
+  if (best == 0) return 0;
+  item.item_first = static_cast<int>(i);
+  // Modifiers before the noun belong to the item ("a large flat-screen TV"): unknown words and
+  // adjectives back to a determiner, number or verb.
+  int k = static_cast<int>(i) - 1;
+  while (k >= 0 && !tokens_[k].punct && tokens_[k].item < 0 && tokens_[k].sentence == tokens_[i].sentence &&
+         !Cardinal(tokens_[k]) &&
+         (IsAdjective(tokens_[k]) || !IsFiller(tokens_[k])) && !IsNegation(tokens_[k]) &&
+         !In(tokens_[k], {"a", "an", "the", "some", "own", "second"})) {
+    item.item_first = k;
+    --k;
+  }
+  return best;
+}
+
+int Parser::TryEntrance(std::size_t i, Item& item) {
+  static const std::vector<std::vector<std::string>> phrases = [] {
+    std::vector<std::vector<std::string>> out;
+    for (auto p : {"entrance", "entry", "front door", "main door", "main entrance", "front entrance",
+                   "entrance door", "entry door", "front entry", "way in", "entrance hall"})
+      out.push_back(Split(p));
+    return out;
+  }();
+  int best = 0;
+  for (const auto& p : phrases) best = std::max(best, MatchPhrase(tokens_, i, p));
+  // "entrance level" is a floor (matched before this), "entrance" alone an entrance.
+  return best;
+}
+
+int Parser::TrySide(std::size_t i, Item& item) {
+  const Token& t = tokens_[i];
+  std::string side;
+  if (In(t, {"north", "northern", "northward"})) side = "north";
+  else if (In(t, {"south", "southern", "southward"})) side = "south";
+  else if (In(t, {"east", "eastern", "eastward"})) side = "east";
+  else if (In(t, {"west", "western", "westward"})) side = "west";
+  else return 0;
+  // "north-east" corners are not one side: keep only the plain sides.
+  if (i + 1 < tokens_.size() && tokens_[i + 1].joined &&
+      In(tokens_[i + 1], {"north", "south", "east", "west", "eastern", "western"}))
+    return 0;
+  item.side = side;
+  int len = 1;
+  if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"side", "end", "part", "wing", "facing", "edge", "half"})) ++len;
+  return len;
+}
+
+void Parser::MatchAll() {
+  // Prescan for the numbering conventions.
+  bool ground = false, first = false;
+  for (std::size_t i = 0; i + 1 < tokens_.size(); ++i) {
+    if (tokens_[i].word == "ground" && IsFloorNoun(tokens_[i + 1])) ground = true;
+    if (Ordinal(tokens_[i]) == 1 && IsFloorNoun(tokens_[i + 1])) first = true;
+    if (IsFloorNoun(tokens_[i]) && (tokens_[i + 1].word == "0" || tokens_[i + 1].word == "zero")) zero_based_numbers_ = true;
+  }
+  british_ = ground && first;
+
+  for (std::size_t i = 0; i < tokens_.size();) {
+    if (tokens_[i].punct) {
+      ++i;
+      continue;
+    }
+    struct Candidate {
+      int len = 0;
+      Item item{ItemKind::kRoom};
+    };
+    Candidate best;
+    auto consider = [&](ItemKind kind, auto fn) {
+      Item item{kind};
+      int len = (this->*fn)(i, item);
+      if (len > best.len) {
+        best.len = len;
+        best.item = item;
+      }
+    };
+    // Order is priority on equal length.
+    consider(ItemKind::kFloorCount, &Parser::TryFloorCount);
+    consider(ItemKind::kFloorRef, &Parser::TryFloorRef);
+    consider(ItemKind::kPanoramic, &Parser::TryPanoramic);
+    consider(ItemKind::kFurniture, &Parser::TryFurniture);
+    consider(ItemKind::kRoom, &Parser::TryRoom);
+    consider(ItemKind::kShape, &Parser::TryShape);
+    consider(ItemKind::kEntrance, &Parser::TryEntrance);
+    consider(ItemKind::kCue, &Parser::TryCue);
+    consider(ItemKind::kSide, &Parser::TrySide);
+    if (best.len == 0) {
+      ++i;
+      continue;
+    }
+    Item item = best.item;
+    item.first = static_cast<int>(i);
+    item.last = static_cast<int>(i) + best.len - 1;
+    if (item.kind == ItemKind::kFurniture) item.first = std::min(item.first, item.item_first);
+    int index = static_cast<int>(items_.size());
+    for (int k = item.first; k <= item.last; ++k) tokens_[k].item = index;
+    Consume(item.first, item.last);
+    items_.push_back(item);
+    i = static_cast<std::size_t>(item.last) + 1;
+  }
+}
+
+// The quantity of a room mention from the words before it (and "bedrooms: 3" after it).
+void Parser::Quantify(Mention& m) {
+  const Item& item = items_[m.item];
+  const Token& noun = tokens_[item.last];
+  m.plural = noun.stem != noun.word && noun.word != "children";
+  m.first = item.first;
+  m.last = item.last;
+  int k = item.first - 1;
+  int sentence = tokens_[item.first].sentence;
+  bool determined = false;
+  auto at = [&](int j) -> const Token* {
+    return j >= 0 && tokens_[j].sentence == sentence ? &tokens_[j] : nullptr;
+  };
+  // Adjectives, a bound floor ("second-floor"), en-suite / open-plan words.
+  while (const Token* t = at(k)) {
+    if (t->item >= 0 && items_[t->item].kind == ItemKind::kFloorRef && m.bound_ref < 0 &&
+        items_[t->item].ref != RefType::kSame) {
+      m.bound_ref = t->item;
+      k = items_[t->item].first - 1;
+      continue;
+    }
+    if (t->item >= 0) break;
+    if (In(*t, {"en", "suite", "ensuite", "attached", "private", "own"}) && item.category == Category::kBathroom) {
+      m.first = k;
+      if (!In(*t, {"private"})) items_[m.item].ensuite = true;
+      tokens_[k].consumed = true;
+      --k;
+      continue;
+    }
+    if (In(*t, {"en", "suite", "ensuite"}) && (item.category == Category::kBedroom || item.category == Category::kChildrenRoom)) {
+      items_[m.item].ensuite = true;  // "an en-suite bedroom": a bedroom with its own bathroom
+      tokens_[k].consumed = true;
+      m.first = k;
+      --k;
+      continue;
+    }
+    if (In(*t, {"open", "openplan"}) || (t->word == "plan" && k > 0 && tokens_[k - 1].word == "open")) {
+      items_[m.item].open_plan = true;
+      tokens_[k].consumed = true;
+      m.first = k;
+      --k;
+      continue;
+    }
+    if (IsAdjective(*t) && !Cardinal(*t)) {
+      m.first = k;
+      --k;
+      continue;
+    }
+    break;
+  }
+  // The quantifier.
+  const Token* t = at(k);
+  auto negated_before = [&](int from) {
+    for (int j = from, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
+      if (IsNegation(tokens_[j])) return true;
+      if (tokens_[j].punct || tokens_[j].item >= 0) return false;
+      if (!In(tokens_[j], {"need", "want", "have", "require", "include", "any", "for", "a", "an", "will",
+                           "should", "would", "do", "does", "is", "are", "there", "be", "like", "must", "it",
+                           "at", "all"}))
+        return false;
+    }
+    return false;
+  };
+  if (t) {
+    if (IsNegation(*t)) {
+      m.counting = true;
+      m.min = m.max = 0;
+      tokens_[k].consumed = true;
+      m.first = k;
+      determined = true;
+    } else if (auto n = Cardinal(*t)) {
+      m.counting = true;
+      m.min = m.max = *n;
+      m.first = k;
+      tokens_[k].consumed = true;
+      determined = true;
+      // "at least two", "two or more", "up to three"
+      if (const Token* p = at(k - 1); p && p->word == "least" && at(k - 2) && at(k - 2)->word == "at") {
+        m.max = -1;
+        m.first = k - 2;
+        Consume(k - 2, k - 1);
+      } else if (p && (p->word == "to" || p->word == "most") && at(k - 2) &&
+                 (at(k - 2)->word == "up" || at(k - 2)->word == "at")) {
+        m.min = std::min(1, *n);
+        m.first = k - 2;
+        Consume(k - 2, k - 1);
+      } else if (p && p->word == "minimum" ) {
+        m.max = -1;
+      } else if (p && p->word == "x") {
+        // "x 2 bedrooms" is odd; leave as is
+      }
+      if (item.last + 2 < static_cast<int>(tokens_.size()) && tokens_[item.last + 1].word == "or" &&
+          In(tokens_[item.last + 2], {"more"})) {
+        m.max = -1;
+        Consume(item.last + 1, item.last + 2);
+        m.last = item.last + 2;
+      }
+      if (negated_before(k - 1)) m.min = m.max = 0;
+    } else if (In(*t, {"a", "an", "another", "one"})) {
+      m.counting = true;
+      m.min = m.max = 1;
+      m.first = k;
+      determined = true;
+      if (negated_before(k - 1)) m.min = m.max = 0;
+    } else if (In(*t, {"several", "multiple", "few", "couple", "pair"}) ||
+               (t->word == "of" && at(k - 1) && In(*at(k - 1), {"couple", "pair"}))) {
+      m.counting = true;
+      bool exact_two = In(*t, {"couple", "pair"}) || t->word == "of";
+      m.min = 2;
+      m.max = exact_two ? 2 : -1;
+      m.first = t->word == "of" ? k - 1 : k;
+      Consume(m.first, k);
+      if (at(m.first - 1) && In(*at(m.first - 1), {"a"})) --m.first;
+      determined = true;
+    } else if (In(*t, {"each", "every"})) {
+      m.every = true;
+      m.first = k;
+      determined = true;
+    } else if (In(*t, {"some"})) {
+      m.counting = true;
+      m.min = 1;
+      m.max = -1;
+      m.first = k;
+      determined = true;
+    } else if (In(*t, {"the", "this", "that", "these", "those", "its", "their", "our", "my", "his", "her",
+                       "both", "all", "same"})) {
+      determined = true;  // a reference to a room counted elsewhere
+      m.first = k;
+    }
+  }
+  // "Bedrooms: 3", "bathrooms x 2" (spec style).
+  int after = item.last + 1;
+  if (!determined && after + 1 < static_cast<int>(tokens_.size()) &&
+      (tokens_[after].punct == ':' || tokens_[after].word == "x" || tokens_[after].punct == '*') &&
+      Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
+      !(after + 2 < static_cast<int>(tokens_.size()) && IsFloorNoun(tokens_[after + 2]))) {
+    int n = *Cardinal(tokens_[after + 1]);
+    m.counting = true;
+    m.min = m.max = n;
+    Consume(after, after + 1);
+    m.last = after + 1;
+    determined = true;
+  }
+  if (!determined) {
+    bare_mention_ = true;
+    // A bare noun: "kitchen, living room and bathrooms" states one kitchen, and some bathrooms.
+    m.counting = true;
+    m.min = m.plural ? 2 : 1;
+    m.max = m.plural ? -1 : 1;
+    if (negated_before(k)) m.min = m.max = 0;
+  }
+  // "with" right before the phrase: "a bedroom with a balcony", "with its own bathroom".
+  for (int j = m.first - 1, steps = 0; j >= 0 && steps < 3 && tokens_[j].sentence == sentence; --j, ++steps) {
+    if (tokens_[j].word == "with") {
+      m.with_before = true;
+      m.with_token = j;
+      break;
+    }
+    if (tokens_[j].item >= 0 || tokens_[j].punct) break;
+    if (!In(tokens_[j], {"a", "an", "its", "their", "own", "private", "direct", "access", "to", "his", "her"})) break;
+  }
+}
+
+// Resolves a floor reference to a level (or kUpperLevels / kEachLevel).
+int Parser::ResolveRef(int ref_item) const {
+  const Item& r = items_[ref_item];
+  int floors = floors_.value_or(std::max(floors_min_, 0));
+  switch (r.ref) {
+    case RefType::kGround: return 0;
+    case RefType::kOrdinal: return british_ ? r.n : r.n - 1;
+    case RefType::kNumbered: return zero_based_numbers_ ? r.n : std::max(0, r.n - 1);
+    case RefType::kTop: return std::max(1, floors - 1);
+    case RefType::kUpper: return floors == 2 ? 1 : kUpperLevels;
+    case RefType::kMiddle: return 1;
+    case RefType::kEach: return kEachLevel;
+    case RefType::kSame: return kAnyLevel;
+  }
+  return kAnyLevel;
+}
+
+bool IsBridge(const Token& t) {
+  return In(t, {"on", "in", "at", "the", "is", "are", "be", "located", "situated", "placed", "will", "should",
+                "must", "can", "all", "both", "each", "of", "sits", "sit", "lie", "lies", "go", "goes", "put",
+                "also", "too", "both", "upon", "found", "one", "level", "floor", "which", "that", "would",
+                "could", "and", "while", "a", "an"});
+}
+
+// Places each room mention on a level: a bound adjective ("second-floor bedroom"), a trailing phrase
+// ("the kitchen on the first floor", "bedrooms upstairs") or the scope opened by a leading one ("On the
+// ground floor, ...", "The top floor has ...", "Upstairs: ...").
+void Parser::PlaceLevels() {
+  int sentence_count = tokens_.empty() ? 0 : tokens_.back().sentence + 1;
+  int carried_scope = -1;
+  std::size_t item_index = 0;
+  for (int s = 0; s < sentence_count; ++s) {
+    std::vector<int> sentence_items;
+    while (item_index < items_.size() && tokens_[items_[item_index].first].sentence == s)
+      sentence_items.push_back(static_cast<int>(item_index++));
+    // A sentence that starts with "It" / "This floor" / "There" continues the previous scope.
+    int first_word = -1;
+    for (std::size_t k = 0; k < tokens_.size(); ++k)
+      if (tokens_[k].sentence == s && !tokens_[k].punct) {
+        first_word = static_cast<int>(k);
+        break;
+      }
+    int scope = -1;
+    if (first_word >= 0 && In(tokens_[first_word], {"it", "its", "here", "this", "that", "also", "additionally", "plus"})) {
+      scope = carried_scope;
+    }
+    std::vector<int> pending;  // mention indices without a level since the last floor ref
+    int last_mention_end = -1;
+    for (std::size_t n = 0; n < sentence_items.size(); ++n) {
+      int it = sentence_items[n];
+      const Item& item = items_[it];
+      if (item.kind == ItemKind::kFloorRef) {
+        bool bound = false;
+        for (const auto& m : mentions_)
+          if (m.bound_ref == it) bound = true;
+        if (bound) continue;
+        if (item.ref == RefType::kSame) {
+          scope = carried_scope;
+          continue;
+        }
+        bool attached = false;
+        if (!pending.empty() && last_mention_end >= 0) {
+          attached = true;
+          for (int k = last_mention_end + 1; k < item.first; ++k)
+            if (!IsBridge(tokens_[k]) && !tokens_[k].punct) attached = false;
+            else if (tokens_[k].punct && tokens_[k].punct != ',') attached = false;
+          // a comma between the room and the floor: "a kitchen, upstairs two bedrooms"
+          for (int k = last_mention_end + 1; k < item.first; ++k)
+            if (tokens_[k].punct == ',') attached = false;
+        }
+        bool room_follows = false;
+        for (std::size_t m2 = n + 1; m2 < sentence_items.size(); ++m2) {
+          const Item& later = items_[sentence_items[m2]];
+          if (later.kind == ItemKind::kFloorRef) break;
+          if (later.kind == ItemKind::kRoom || later.kind == ItemKind::kPanoramic) {
+            room_follows = true;
+            break;
+          }
+        }
+        if (attached || (!room_follows && !pending.empty())) {
+          for (int p : pending) mentions_[p].ref = it;
+          pending.clear();
+          // A trailing phrase at the very start of a list still scopes what follows a colon.
+        } else {
+          scope = it;
+          pending.clear();
+        }
+        continue;
+      }
+      if (item.kind == ItemKind::kRoom) {
+        int mi = MentionOfItem(it);
+        Mention& m = mentions_[mi];
+        if (m.bound_ref >= 0) m.ref = m.bound_ref;
+        else if (scope >= 0) m.ref = scope;
+        else pending.push_back(mi);
+        last_mention_end = m.last;
+      } else if (item.kind == ItemKind::kPanoramic || item.kind == ItemKind::kFurniture ||
+                 item.kind == ItemKind::kSide) {
+        // keep `last_mention_end` on the room: "balconies with panoramic windows on the top floor"
+        if (!pending.empty()) last_mention_end = item.last;
+      }
+    }
+    // Attachments without a room take the sentence's scope (resolved in Attach()).
+    sentence_scope_.push_back(scope);
+    carried_scope = scope;
+  }
+}
+
+std::vector<int> Parser::MentionLevels(const Mention& m) const {
+  if (m.ref >= 0) return {ResolveRef(m.ref)};
+  std::vector<int> levels;
+  for (int l : m.partner_levels)
+    if (std::find(levels.begin(), levels.end(), l) == levels.end()) levels.push_back(l);
+  if (levels.empty()) levels.push_back(kAnyLevel);
+  return levels;
+}
+
+// Connections: a cue ("open to", "directly access", "reached through") between the rooms before it and
+// the rooms after it in one clause; "with" + balcony / own bathroom; en-suite and open-plan words.
+void Parser::Connect() {
+  std::vector<bool> used_right(mentions_.size(), false);
+  auto add = [&](int a, int b, LinkKind kind, bool every, TextSpan source) {
+    if (a < 0 || b < 0 || a == b) return;
+    if (mentions_[a].category == mentions_[b].category) return;
+    connections_.push_back({a, b, kind, every, std::move(source)});
+    mentions_[a].in_connection = mentions_[b].in_connection = true;
+    mentions_[a].partners.push_back(b);
+    mentions_[b].partners.push_back(a);
+  };
+  for (int ci = 0; ci < static_cast<int>(items_.size()); ++ci) {
+    const Item& cue = items_[ci];
+    if (cue.kind != ItemKind::kCue) continue;
+    int sentence = tokens_[cue.first].sentence;
+    auto walk = [&](int start, int step, bool left, bool* entrance) {
+      std::vector<int> found;
+      for (int k = start; k >= 0 && k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence; k += step) {
+        const Token& t = tokens_[k];
+        if (t.item >= 0) {
+          const Item& it = items_[t.item];
+          if (it.kind == ItemKind::kRoom) {
+            int mi = MentionOfItem(t.item);
+            if (left && used_right[mi]) break;
+            if (std::find(found.begin(), found.end(), mi) == found.end()) found.push_back(mi);
+            k = step < 0 ? it.first : it.last;
+            continue;
+          }
+          if (it.kind == ItemKind::kFloorRef || it.kind == ItemKind::kFloorCount || it.kind == ItemKind::kShape) {
+            k = step < 0 ? it.first : it.last;
+            continue;
+          }
+          if (it.kind == ItemKind::kEntrance && left && found.empty()) {
+            if (entrance) *entrance = true;
+            break;
+          }
+          break;
+        }
+        if (t.punct) {
+          if ((t.punct == ',' || t.punct == '/' || t.punct == '(' || t.punct == ')') && found.empty()) continue;
+          if (t.punct == '/' || t.punct == '&') continue;
+          break;
+        }
+        if (!left && t.word == "with" && !found.empty()) break;
+        if (IsFiller(t) || IsAdjective(t) || t.consumed) continue;
+        if (!found.empty()) break;
+      }
+      return found;
+    };
+    bool entrance = false;
+    std::vector<int> left = walk(cue.first - 1, -1, true, &entrance);
+    std::vector<int> right = walk(cue.last + 1, +1, false, nullptr);
+    std::reverse(left.begin(), left.end());
+    TextSpan source = Span(left.empty() ? cue.first : std::min(cue.first, mentions_[left.front()].first),
+                           right.empty() ? cue.last : std::max(cue.last, mentions_[right.back()].last));
+    if (entrance && left.empty() && !right.empty()) {
+      attachments_.push_back({ItemKind::kEntrance, ci, right.front(), -1, source});
+      mentions_[right.front()].in_attachment = true;
+      used_right[right.front()] = true;
+      continue;
+    }
+    if (!left.empty() && !right.empty() && !(cue.mutual && right.empty())) {
+      for (int a : left)
+        for (int b : right) add(a, b, cue.link, mentions_[a].every, source);
+      for (int b : right) used_right[b] = true;
+    } else if (left.size() >= 2 && (cue.mutual || right.empty())) {
+      for (std::size_t k = 1; k < left.size(); ++k) add(left[0], left[k], cue.link, false, source);
+    } else if (left.empty() && right.size() >= 2) {
+      for (std::size_t k = 1; k < right.size(); ++k) add(right[0], right[k], cue.link, false, source);
+      for (int b : right) used_right[b] = true;
+    }
+  }
+  // "a bedroom with a balcony", "a master bedroom with its own bathroom".
+  for (int mi = 0; mi < static_cast<int>(mentions_.size()); ++mi) {
+    Mention& m = mentions_[mi];
+    if (!m.with_before) continue;
+    bool own = false;
+    for (int k = m.with_token + 1; k < m.first + 1 && k < static_cast<int>(tokens_.size()); ++k)
+      if (In(tokens_[k], {"own", "private", "attached"})) own = true;
+    bool qualifies = m.category == Category::kBalcony ||
+                     (m.category == Category::kBathroom && (own || items_[m.item].ensuite));
+    if (!qualifies || m.in_connection) continue;
+    // The room right before "with".
+    int partner = -1;
+    for (int k = m.with_token - 1; k >= 0 && tokens_[k].sentence == tokens_[m.with_token].sentence; --k) {
+      const Token& t = tokens_[k];
+      if (t.item >= 0 && items_[t.item].kind == ItemKind::kRoom) {
+        partner = MentionOfItem(t.item);
+        break;
+      }
+      if (t.item >= 0 && items_[t.item].kind == ItemKind::kFloorRef) continue;
+      if (t.punct || !(IsFiller(t) || IsAdjective(t) || t.consumed)) break;
+    }
+    if (partner < 0) continue;
+    TextSpan source = Span(mentions_[partner].first, m.last);
+    add(partner, mi, m.category == Category::kBalcony ? LinkKind::kDoor : LinkKind::kDoor, mentions_[partner].every,
+        source);
+  }
+}
+
+void Parser::Attach() {
+  for (int ii = 0; ii < static_cast<int>(items_.size()); ++ii) {
+    const Item& item = items_[ii];
+    if (item.kind != ItemKind::kPanoramic && item.kind != ItemKind::kFurniture && item.kind != ItemKind::kSide &&
+        item.kind != ItemKind::kEntrance)
+      continue;
+    if (item.kind == ItemKind::kEntrance) {
+      bool done = false;
+      for (const auto& a : attachments_)
+        if (a.kind == ItemKind::kEntrance && a.item >= 0 && items_[a.item].kind == ItemKind::kCue &&
+            tokens_[items_[a.item].first].sentence == tokens_[item.first].sentence)
+          done = true;
+      if (done) continue;
+    }
+    int sentence = tokens_[item.first].sentence;
+    // Forward: "... in the children's room", "... on the top floor".
+    auto forward = [&](int* ref) {
+      bool preposition = false;
+      for (int k = item.last + 1; k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence; ++k) {
+        const Token& t = tokens_[k];
+        if (t.item >= 0) {
+          const Item& it = items_[t.item];
+          if (it.kind == ItemKind::kRoom && preposition) return MentionOfItem(t.item);
+          if (it.kind == ItemKind::kFloorRef && preposition) {
+            *ref = t.item;
+            return -1;
+          }
+          if (it.kind == item.kind && item.kind == ItemKind::kFurniture) {
+            k = it.last;
+            continue;
+          }
+          if (it.kind == ItemKind::kCue && item.kind == ItemKind::kEntrance) {
+            preposition = true;
+            k = it.last;
+            continue;
+          }
+          return -1;
+        }
+        if (In(t, {"in", "into", "inside", "for", "within", "on", "to", "through", "of", "at", "from", "onto"})) {
+          preposition = true;
+          continue;
+        }
+        if (t.punct == ',' || In(t, {"the", "a", "an", "each", "every", "our", "my", "is", "are", "be", "should",
+                                     "will", "placed", "located", "put", "and", "its", "their", "both", "all",
+                                     "open", "opens", "lead", "leads", "side", "part", "end", "wing", "half",
+                                     "house", "villa", "building", "home", "plan", "facing", "faces", "face"}) ||
+            t.consumed)
+          continue;
+        return -1;
+      }
+      return -1;
+    };
+    auto backward = [&]() {
+      for (int k = item.first - 1; k >= 0 && tokens_[k].sentence == sentence; --k) {
+        const Token& t = tokens_[k];
+        if (t.item >= 0) {
+          const Item& it = items_[t.item];
+          if (it.kind == ItemKind::kRoom) return MentionOfItem(t.item);
+          if (it.kind == ItemKind::kFloorRef) {
+            k = it.first;
+            continue;
+          }
+          if (it.kind == item.kind) {
+            k = it.first;
+            continue;
+          }
+          return -1;
+        }
+        if (t.punct && t.punct != ',') return -1;
+        if (t.punct || IsFiller(t) || IsAdjective(t) || t.consumed) continue;
+        return -1;
+      }
+      return -1;
+    };
+    int ref = -1;
+    int mention = -1;
+    if (item.kind == ItemKind::kFurniture || item.kind == ItemKind::kEntrance) {
+      mention = forward(&ref);
+      if (mention < 0 && ref < 0) mention = backward();
+    } else {
+      mention = backward();
+      if (mention < 0) mention = forward(&ref);
+    }
+    if (mention >= 0) mentions_[mention].in_attachment = true;
+    if (mention < 0 && ref < 0 && sentence < static_cast<int>(sentence_scope_.size())) ref = sentence_scope_[sentence];
+    TextSpan source = Span(item.first, item.last);
+    if (mention >= 0) {
+      const Mention& m = mentions_[mention];
+      source = Span(std::min(item.first, m.first), std::max(item.last, m.last));
+    }
+    attachments_.push_back({item.kind, ii, mention, ref, source});
+  }
+}
+
+void Parser::Finish(Brief& brief) {
+  // Floors.
+  for (const Item& item : items_) {
+    if (item.kind != ItemKind::kFloorCount) continue;
+    if (item.floors_at_least) {
+      floors_min_ = std::max(floors_min_, item.floors);
+      continue;
+    }
+    if (!floors_) {
+      floors_ = item.floors;
+      floors_source_ = Span(item.first, item.last);
+    } else if (*floors_ != item.floors) {
+      conflicts_.push_back("the text gives both " + std::to_string(*floors_) + " and " + std::to_string(item.floors) +
+                           " floors; using " + std::to_string(*floors_));
+    }
+  }
+  // Floors implied by the floors named (before "top floor" can be resolved).
+  for (const Item& item : items_) {
+    if (item.kind != ItemKind::kFloorRef) continue;
+    int need = 0;
+    switch (item.ref) {
+      case RefType::kOrdinal: need = british_ ? item.n + 1 : item.n; break;
+      case RefType::kNumbered: need = zero_based_numbers_ ? item.n + 1 : item.n; break;
+      case RefType::kTop: case RefType::kUpper: need = 2; break;
+      case RefType::kMiddle: need = 3; break;
+      default: break;
+    }
+    floors_min_ = std::max(floors_min_, need);
+  }
+  if (floors_ && floors_min_ > *floors_)
+    conflicts_.push_back("the text names level " + std::to_string(floors_min_ - 1) + " but asks for " +
+                         std::to_string(*floors_) + (*floors_ == 1 ? " floor" : " floors"));
+  brief.floors = floors_;
+  brief.floors_source = floors_source_;
+  if (!floors_ && floors_min_ > 1) brief.floors_min = floors_min_;
+  if (floors_ && *floors_ > kMaxFloors)
+    conflicts_.push_back(std::to_string(*floors_) + " floors asked: a villa has at most " + std::to_string(kMaxFloors) +
+                         " (FORMAT.md rule 6)");
+  if (floors_ && *floors_ < 1) conflicts_.push_back("0 floors asked");
+
+  // Shape.
+  for (const Item& item : items_) {
+    if (item.kind != ItemKind::kShape) continue;
+    if (item.shape) {
+      if (!brief.shape) {
+        brief.shape = item.shape;
+        brief.shape_source = Span(item.first, item.last);
+      } else if (*brief.shape != *item.shape) {
+        conflicts_.push_back("two footprint shapes asked: " + std::string(ShapeClassName(*brief.shape)) + " and " +
+                             std::string(ShapeClassName(*item.shape)));
+      }
+    } else if (!brief.unsupported_shape) {
+      brief.unsupported_shape = Span(item.first, item.last);
+    }
+  }
+
+  // Levels taken from connection partners ("connect to balconies" -> balconies on those floors).
+  for (const auto& c : connections_) {
+    int la = OwnLevel(mentions_[c.a]);
+    int lb = OwnLevel(mentions_[c.b]);
+    if (la != kAnyLevel && lb == kAnyLevel) mentions_[c.b].partner_levels.push_back(la);
+    if (lb != kAnyLevel && la == kAnyLevel) mentions_[c.a].partner_levels.push_back(lb);
+  }
+
+  // Rooms: counted mentions add up per (category, level); references only say "at least one there".
+  struct Acc {
+    int min = 0;
+    int max = 0;
+    TextSpan source;
+    bool counting = false;
+  };
+  std::map<std::pair<int, int>, Acc> counts;
+  std::vector<std::pair<std::pair<int, int>, TextSpan>> references;
+  for (std::size_t mi = 0; mi < mentions_.size(); ++mi) {
+    const Mention& m = mentions_[mi];
+    bool counting = m.counting && !(bare_[mi] && (m.in_connection || m.in_attachment));
+    std::vector<int> levels = MentionLevels(m);
+    TextSpan source = Span(m.first, m.last);
+    int cat = static_cast<int>(m.category);
+    auto add_count = [&](int level) {
+      Acc& acc = counts[{cat, level}];
+      if (!acc.counting) {
+        acc.source = source;
+        acc.counting = true;
+      } else {
+        acc.source.text += "; " + source.text;
+      }
+      acc.min += m.min;
+      acc.max = (acc.max < 0 || m.max < 0) ? -1 : acc.max + m.max;
+    };
+    if (counting) {
+      if (levels.size() == 1) {
+        add_count(levels[0]);
+      } else {
+        add_count(kAnyLevel);
+        for (int l : levels) references.push_back({{cat, l}, source});
+      }
+    } else if (!m.in_connection) {
+      for (int l : levels) references.push_back({{cat, l}, source});
+    }
+  }
+  for (const auto& [key, source] : references) {
+    if (counts.count(key)) continue;
+    if (key.second == kAnyLevel) {
+      bool covered = false;
+      for (const auto& [k2, acc] : counts)
+        if (k2.first == key.first && acc.max != 0) covered = true;
+      for (const auto& [k2, s2] : references)
+        if (k2.first == key.first && k2.second != kAnyLevel) covered = true;
+      if (covered) continue;
+    }
+    Acc& acc = counts[key];
+    acc.min = 1;
+    acc.max = -1;
+    acc.source = source;
+  }
+  for (const auto& [key, acc] : counts) {
+    BriefRooms r;
+    r.category = static_cast<Category>(key.first);
+    r.level = key.second;
+    r.min = acc.min;
+    r.max = acc.max;
+    r.source = acc.source;
+    brief.rooms.push_back(r);
+  }
+  // Keep text order for the report.
+  std::stable_sort(brief.rooms.begin(), brief.rooms.end(),
+                   [](const BriefRooms& a, const BriefRooms& b) { return a.source.begin < b.source.begin; });
+
+  // Connections.
+  auto connection_level = [&](const Mention& a, const Mention& b) {
+    auto la = MentionLevels(a);
+    if (la.size() == 1 && la[0] != kAnyLevel) return la[0];
+    auto lb = MentionLevels(b);
+    if (lb.size() == 1 && lb[0] != kAnyLevel) return lb[0];
+    return kAnyLevel;
+  };
+  for (const auto& c : connections_) {
+    const Mention& a = mentions_[c.a];
+    const Mention& b = mentions_[c.b];
+    // A balcony reached from several rooms on different floors: one requirement per floor.
+    auto la = MentionLevels(a);
+    std::vector<int> levels = la.size() == 1 ? std::vector<int>{connection_level(a, b)} : la;
+    for (int level : levels) {
+      BriefConnection bc;
+      bc.from = a.category;
+      bc.to = {b.category};
+      bc.level = level;
+      bc.kind = c.kind;
+      bc.every = c.every;
+      bc.source = c.source;
+      brief.connections.push_back(bc);
+    }
+  }
+  // En-suite bathrooms and bedrooms with no partner named; open-plan rooms.
+  for (std::size_t mi = 0; mi < mentions_.size(); ++mi) {
+    const Mention& m = mentions_[mi];
+    const Item& item = items_[m.item];
+    auto levels = MentionLevels(m);
+    bool has_bedroom_link = false, has_open_link = false;
+    for (int p : m.partners) {
+      Category pc = mentions_[p].category;
+      if (pc == Category::kBedroom || pc == Category::kChildrenRoom || pc == Category::kBathroom) has_bedroom_link = true;
+    }
+    for (const auto& c : connections_)
+      if ((c.a == static_cast<int>(mi) || c.b == static_cast<int>(mi)) && c.kind == LinkKind::kOpen) has_open_link = true;
+    if (item.ensuite && !has_bedroom_link && m.max != 0) {
+      BriefConnection bc;
+      if (m.category == Category::kBathroom) {
+        // the nearest bedroom named before it in the text, else any bedroom
+        Category from = Category::kBedroom;
+        for (int k = static_cast<int>(mi) - 1; k >= 0; --k)
+          if (mentions_[k].category == Category::kBedroom || mentions_[k].category == Category::kChildrenRoom) {
+            from = mentions_[k].category;
+            break;
+          }
+        bc.from = from;
+        bc.to = {Category::kBathroom};
+      } else {
+        bc.from = m.category;
+        bc.to = {Category::kBathroom};
+      }
+      bc.level = levels.size() == 1 ? levels[0] : kAnyLevel;
+      bc.kind = LinkKind::kDoor;
+      bc.every = m.every;
+      bc.source = Span(m.first, m.last);
+      brief.connections.push_back(bc);
+    }
+    if (item.open_plan && !has_open_link && m.max != 0 &&
+        (m.category == Category::kKitchen || m.category == Category::kDiningRoom || m.category == Category::kLivingRoom)) {
+      std::vector<Category> others;
+      int sentence = tokens_[item.first].sentence;
+      for (const auto& o : mentions_) {
+        if (tokens_[o.first].sentence != sentence || o.category == m.category) continue;
+        if (o.category == Category::kKitchen || o.category == Category::kDiningRoom || o.category == Category::kLivingRoom)
+          if (std::find(others.begin(), others.end(), o.category) == others.end()) others.push_back(o.category);
+      }
+      if (others.empty()) {
+        for (Category c : {Category::kKitchen, Category::kDiningRoom, Category::kLivingRoom})
+          if (c != m.category) others.push_back(c);
+      }
+      BriefConnection bc;
+      bc.from = m.category;
+      bc.to = others;
+      bc.level = levels.size() == 1 ? levels[0] : kAnyLevel;
+      bc.kind = LinkKind::kOpen;
+      bc.source = Span(m.first, m.last);
+      brief.connections.push_back(bc);
+    }
+  }
+
+  // Attachments.
+  for (const auto& a : attachments_) {
+    int level = kAnyLevel;
+    std::vector<int> levels = {kAnyLevel};
+    Category category = Category::kRoom;
+    if (a.mention >= 0) {
+      levels = MentionLevels(mentions_[a.mention]);
+      category = mentions_[a.mention].category;
+    } else if (a.ref >= 0) {
+      levels = {ResolveRef(a.ref)};
+    }
+    level = levels.size() == 1 ? levels[0] : kAnyLevel;
+    switch (a.kind) {
+      case ItemKind::kPanoramic:
+        for (int l : levels) brief.panoramic.push_back({category, l, a.source});
+        break;
+      case ItemKind::kEntrance:
+        if (a.mention >= 0) brief.entrance.push_back({category, a.source});
+        break;
+      case ItemKind::kSide:
+        if (a.mention >= 0) brief.sides.push_back({category, level, items_[a.item].side, a.source});
+        break;
+      case ItemKind::kFurniture: {
+        const Item& item = items_[a.item];
+        BriefFurniture f;
+        int noun_first = item.item_first;
+        f.item = std::string(text_.substr(tokens_[noun_first].begin, tokens_[item.last].end - tokens_[noun_first].begin));
+        f.count = 1;
+        if (item.item_first > 0 && tokens_[item.item_first - 1].sentence == tokens_[item.first].sentence) {
+          if (auto n = Cardinal(tokens_[item.item_first - 1]); n && *n > 0) {
+            f.count = *n;
+            tokens_[item.item_first - 1].consumed = true;
+          }
+        }
+        f.category = category;
+        f.level = level;
+        f.source = a.source;
+        brief.furniture.push_back(f);
+        break;
+      }
+      default: break;
+    }
+  }
+
+  // Conflicts between counts and with the format's limits.
+  int floors_known = floors_.value_or(0);
+  std::map<int, int> min_total;  // category -> sum of per-level minimums
+  std::map<int, int> per_level_min;
+  for (const auto& r : brief.rooms) {
+    if (floors_known > 0 && r.level >= floors_known)
+      conflicts_.push_back(std::string(CategoryName(r.category)) + " on level " + std::to_string(r.level) +
+                           " but the building has " + std::to_string(floors_known) +
+                           (floors_known == 1 ? " floor" : " floors"));
+    if (r.level >= 0) {
+      min_total[static_cast<int>(r.category)] += r.min;
+      per_level_min[r.level] += r.min;
+    } else if (r.level == kEachLevel && floors_known > 0) {
+      min_total[static_cast<int>(r.category)] += r.min * floors_known;
+      for (int l = 0; l < floors_known; ++l) per_level_min[l] += r.min;
+    }
+  }
+  for (const auto& r : brief.rooms) {
+    if (r.level != kAnyLevel || r.max < 0) continue;
+    int placed = min_total[static_cast<int>(r.category)];
+    if (placed > r.max)
+      conflicts_.push_back(std::to_string(r.max) + " " + std::string(CategoryName(r.category)) + " in all, but " +
+                           std::to_string(placed) + " placed on given floors");
+    if (r.category == Category::kUtilityRoom && floors_known > 1 && (r.max < floors_known || r.min > floors_known))
+      conflicts_.push_back("a " + std::to_string(floors_known) + "-floor villa has one utility (staircase) room a floor, " +
+                           "not " + std::to_string(r.min));
+  }
+  for (const auto& [level, n] : per_level_min)
+    if (n > kMaxRoomsPerFloor)
+      conflicts_.push_back(std::to_string(n) + " rooms asked on level " + std::to_string(level) + ": at most " +
+                           std::to_string(kMaxRoomsPerFloor) + " a floor (FORMAT.md rule 6)");
+  {
+    int total_min = 0;
+    for (const auto& r : brief.rooms)
+      if (r.level == kAnyLevel) total_min += r.min;
+    int floors_for_cap = floors_known > 0 ? floors_known : kMaxFloors;
+    if (total_min > kMaxRoomsPerFloor * floors_for_cap)
+      conflicts_.push_back(std::to_string(total_min) + " rooms asked: at most " +
+                           std::to_string(kMaxRoomsPerFloor * floors_for_cap) + " fit in " +
+                           std::to_string(floors_for_cap) + " floors (FORMAT.md rule 6)");
+  }
+  brief.conflicts = conflicts_;
+  brief.british_ordinals = british_;
+
+  // What was not understood.
+  for (std::size_t k = 0; k < tokens_.size();) {
+    const Token& t = tokens_[k];
+    if (t.consumed || t.punct || IsFiller(t) || (t.number && false)) {
+      ++k;
+      continue;
+    }
+    std::size_t j = k;
+    while (j + 1 < tokens_.size() && !tokens_[j + 1].consumed && !tokens_[j + 1].punct && !IsFiller(tokens_[j + 1]) &&
+           tokens_[j + 1].sentence == t.sentence)
+      ++j;
+    brief.unparsed.push_back(Span(static_cast<int>(k), static_cast<int>(j)));
+    k = j + 1;
+  }
+}
+
+Brief Parser::Run() {
+  Brief brief;
+  brief.text = std::string(text_);
+  MatchAll();
+  for (int i = 0; i < static_cast<int>(items_.size()); ++i) {
+    if (items_[i].kind != ItemKind::kRoom) continue;
+    Mention m;
+    m.item = i;
+    m.category = items_[i].category;
+    bare_mention_ = false;
+    Quantify(m);
+    mention_of_item_[i] = static_cast<int>(mentions_.size());
+    mentions_.push_back(m);
+    bare_.push_back(bare_mention_);
+  }
+  PlaceLevels();
+  Connect();
+  Attach();
+  Finish(brief);
+  return brief;
+}
+
+std::string LevelText(int level) {
+  if (level == kAnyLevel) return "";
+  if (level == kUpperLevels) return "upper floors";
+  if (level == kEachLevel) return "each floor";
+  return "level " + std::to_string(level);
+}
+
+Json LevelJson(int level) {
+  if (level == kAnyLevel) return nullptr;
+  if (level == kUpperLevels) return "upper";
+  if (level == kEachLevel) return "each";
+  return level;
+}
+
+Json SpanJson(const TextSpan& s) { return Json{{"text", s.text}, {"begin", s.begin}, {"end", s.end}}; }
+
+}  // namespace
+
+std::string_view LinkKindName(LinkKind kind) {
+  switch (kind) {
+    case LinkKind::kAny: return "any";
+    case LinkKind::kOpen: return "open";
+    case LinkKind::kDoor: return "door";
+  }
+  return "any";
+}
+
+int Brief::RequirementCount() const {
+  int n = 0;
+  if (floors) ++n;
+  else if (floors_min) ++n;
+  if (shape) ++n;
+  if (unsupported_shape) ++n;
+  n += static_cast<int>(rooms.size() + connections.size() + panoramic.size() + entrance.size() + sides.size());
+  return n;
+}
+
+Brief ParseBrief(std::string_view text) { return Parser(text).Run(); }
+
+nlohmann::ordered_json BriefToJson(const Brief& brief) {
+  Json j;
+  j["floors"] = brief.floors ? Json(*brief.floors) : Json(nullptr);
+  if (brief.floors_min) j["floors_at_least"] = *brief.floors_min;
+  j["shape"] = brief.shape ? Json(std::string(ShapeClassName(*brief.shape))) : Json(nullptr);
+  if (brief.unsupported_shape) j["unsupported_shape"] = SpanJson(*brief.unsupported_shape);
+  Json rooms = Json::array();
+  for (const auto& r : brief.rooms) {
+    Json e{{"category", std::string(CategoryName(r.category))}, {"level", LevelJson(r.level)}, {"min", r.min}};
+    e["max"] = r.max < 0 ? Json(nullptr) : Json(r.max);
+    e["source"] = r.source.text;
+    rooms.push_back(e);
+  }
+  j["rooms"] = rooms;
+  Json connections = Json::array();
+  for (const auto& c : brief.connections) {
+    Json to = Json::array();
+    for (Category t : c.to) to.push_back(std::string(CategoryName(t)));
+    connections.push_back(Json{{"from", std::string(CategoryName(c.from))}, {"to", to}, {"level", LevelJson(c.level)},
+                               {"kind", std::string(LinkKindName(c.kind))}, {"every", c.every},
+                               {"source", c.source.text}});
+  }
+  j["connections"] = connections;
+  Json panoramic = Json::array();
+  for (const auto& p : brief.panoramic)
+    panoramic.push_back(Json{{"category", p.category == Category::kRoom ? Json(nullptr) : Json(std::string(CategoryName(p.category)))},
+                             {"level", LevelJson(p.level)}, {"source", p.source.text}});
+  j["panoramic_windows"] = panoramic;
+  Json entrance = Json::array();
+  for (const auto& e : brief.entrance)
+    entrance.push_back(Json{{"category", std::string(CategoryName(e.category))}, {"source", e.source.text}});
+  j["entrance"] = entrance;
+  Json sides = Json::array();
+  for (const auto& s : brief.sides)
+    sides.push_back(Json{{"category", std::string(CategoryName(s.category))}, {"level", LevelJson(s.level)},
+                         {"side", s.side}, {"source", s.source.text}});
+  j["sides"] = sides;
+  Json furniture = Json::array();
+  for (const auto& f : brief.furniture)
+    furniture.push_back(Json{{"item", f.item}, {"count", f.count},
+                             {"room", f.category == Category::kRoom ? Json(nullptr) : Json(std::string(CategoryName(f.category)))},
+                             {"level", LevelJson(f.level)}, {"source", f.source.text}});
+  j["furniture"] = furniture;
+  Json unparsed = Json::array();
+  for (const auto& u : brief.unparsed) unparsed.push_back(SpanJson(u));
+  j["unparsed"] = unparsed;
+  j["conflicts"] = brief.conflicts;
+  j["ordinals"] = brief.british_ordinals ? "british" : "american";
+  j["requirements"] = brief.RequirementCount();
+  return j;
+}
+
+std::string BriefOneLine(const Brief& brief) {
+  std::vector<std::string> parts;
+  if (brief.floors) parts.push_back(std::to_string(*brief.floors) + (*brief.floors == 1 ? " floor" : " floors"));
+  else if (brief.floors_min) parts.push_back(">= " + std::to_string(*brief.floors_min) + " floors");
+  if (brief.shape) parts.push_back(std::string(ShapeClassName(*brief.shape)) + " footprint");
+  if (brief.unsupported_shape) parts.push_back("unsupported footprint \"" + brief.unsupported_shape->text + "\"");
+  for (const auto& r : brief.rooms) {
+    std::string count = r.min == r.max ? std::to_string(r.min)
+                        : r.max < 0   ? ">=" + std::to_string(r.min)
+                                      : std::to_string(r.min) + "-" + std::to_string(r.max);
+    std::string where = LevelText(r.level);
+    parts.push_back(count + " " + std::string(CategoryName(r.category)) + (where.empty() ? "" : " (" + where + ")"));
+  }
+  for (const auto& c : brief.connections) {
+    std::string to;
+    for (Category t : c.to) to += (to.empty() ? "" : "|") + std::string(CategoryName(t));
+    std::string where = LevelText(c.level);
+    parts.push_back(std::string(CategoryName(c.from)) + " -" + std::string(LinkKindName(c.kind)) + "- " + to +
+                    (where.empty() ? "" : " (" + where + ")"));
+  }
+  for (const auto& p : brief.panoramic) {
+    std::string where = LevelText(p.level);
+    parts.push_back("panoramic window" +
+                    (p.category == Category::kRoom ? std::string() : " in " + std::string(CategoryName(p.category))) +
+                    (where.empty() ? "" : " (" + where + ")"));
+  }
+  for (const auto& e : brief.entrance) parts.push_back("entrance into " + std::string(CategoryName(e.category)));
+  for (const auto& s : brief.sides) parts.push_back(std::string(CategoryName(s.category)) + " on the " + s.side + " side");
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : ", ") + p;
+  return out.empty() ? "(no requirements)" : out;
+}
+
+}  // namespace villa
