@@ -355,8 +355,9 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
     }
   }
 
-  // 2. Chain the pieces into rings. At a vertex where several pieces start (two rings touching at a
-  //    point), take the first one clockwise from the way back: the ring keeps the same side of the union.
+  // 2. Chain the pieces into rings. At a vertex where several pieces start (a hole or a separate piece
+  //    touching at a point), take the first one counter-clockwise from the way back: the ring keeps the
+  //    same outside region on its right, so a hole touching the outline still comes out as its own ring.
   const std::size_t n = result.pieces.size();
   const double match = 4 * tolerance;
   std::vector<bool> used(n, false);
@@ -378,9 +379,8 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
         if (Distance(c.a, s.b) > match) continue;
         double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
         double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
-        double cw = ccw <= 0 ? -ccw : 2 * std::numbers::pi - ccw;
-        if (cw <= 0) cw = 2 * std::numbers::pi;
-        if (best == n || cw < best_angle) best = k, best_angle = cw;
+        if (ccw <= 0) ccw += 2 * std::numbers::pi;
+        if (best == n || ccw < best_angle) best = k, best_angle = ccw;
       }
       if (best == start) break;
       if (best == n || used[best]) {
