@@ -86,7 +86,8 @@ Canvas DrawFloorPlan(const Layout& layout, int level, const CanvasOptions& o) {
         cell.room = r;
         bool stair = o.show_stairs && multi && layout.rooms[r].category == Category::kUtilityRoom;
         cell.kind = stair ? CellKind::kStair : CellKind::kFloor;
-        cell.glyph = stair ? (o.unicode ? "≡" : "=") : " ";
+        // Treads on every other row.
+        cell.glyph = stair && y % 2 == 0 ? (o.unicode ? "═" : "=") : " ";
         break;
       }
     }

@@ -208,7 +208,8 @@ class App {
   int Run();
 
  private:
-  void Draw();
+  void Draw();   // paints and refreshes
+  void Paint();  // paints without refreshing (under a dialog)
   void DrawHeader(int w);
   void DrawPlan(int top, int left, int width, int height);
   int DrawPanel(int top, int left, int width, int height);
@@ -216,6 +217,7 @@ class App {
   bool Handle(int key, bool is_key_code);
   void Go(int item);
   void SelectRoom(int delta);
+  void Advance();  // after accept / reject: on to the next pending layout, if any
   void Act(const Status& status, const std::string& message);
 
   // Modal dialogs.
@@ -264,6 +266,16 @@ void App::Go(int item) {
   level_ = 0;
   auto rooms = LevelRooms();
   room_ = rooms.empty() ? -1 : rooms[0];
+}
+
+void App::Advance() {
+  int next = s_.NextPending(item_ + 1);
+  if (next < 0) {
+    message_ += "; no pending layout left";
+    return;
+  }
+  message_ += "; next pending: " + s_.record(next).id;
+  Go(next);
 }
 
 void App::SelectRoom(int delta) {
@@ -332,7 +344,7 @@ void App::DrawPlan(int top, int left, int width, int height) {
             if (cell.kind == CellKind::kLabel)
               attr = A_BOLD | A_UNDERLINE;
             else if (cell.kind == CellKind::kFloor)
-              glyph = unicode_ ? "░" : ".";
+              glyph = unicode_ ? "·" : ".";
           }
           if (cell.kind == CellKind::kStair) attr |= A_DIM;
           break;
@@ -360,6 +372,9 @@ int App::DrawPanel(int top, int left, int width, int height) {
   auto rooms = LevelRooms();
   line("Rooms on " + LevelName(level_, l.LevelCount()) + "  (Tab, 1-" + std::to_string(rooms.size()) + ")", kPairTitle,
        A_BOLD);
+  std::size_t name_w = 0;
+  for (int r : rooms) name_w = std::max(name_w, l.rooms[r].name().size());
+  std::vector<std::string> selected_links;
   for (std::size_t k = 0; k < rooms.size(); ++k) {
     int r = rooms[k];
     const Room& room = l.rooms[r];
@@ -369,9 +384,13 @@ int App::DrawPanel(int top, int left, int width, int height) {
       int other = c.room_a == r ? c.room_b : c.room_a;
       std::string via = c.via == Via::kDoor ? "" : c.via == Via::kOpen ? "~" : "^";
       links.push_back(via + RoomToken(l.rooms[other]));
+      if (r == room_)
+        selected_links.push_back(l.rooms[other].name() +
+                                 (c.via == Via::kDoor ? " (door)" : c.via == Via::kOpen ? " (open)" : " (stairs)"));
     }
-    std::string text = (r == room_ ? ">" : " ") + std::to_string(k + 1) + " " + Pad(room.name(), 17) + " " +
-                       Pad(Fixed1(Area(room.polygon)) + "m2", 7);
+    std::string text = (r == room_ ? ">" : " ") + std::to_string(k + 1) + " " +
+                       Pad(room.name(), static_cast<int>(name_w)) + " " +
+                       Pad(Fixed1(Area(room.polygon)) + (unicode_ ? "m²" : "m2"), 7);
     std::string joined;
     for (const std::string& s : links) joined += (joined.empty() ? "" : " ") + s;
     text += " " + joined;
@@ -382,7 +401,12 @@ int App::DrawPanel(int top, int left, int width, int height) {
       ++y;
     }
   }
-  line("  door: name  ~open  ^stair", kPairDim);
+  if (room_ >= 0) {
+    std::string joins;
+    for (const std::string& s : selected_links) joins += (joins.empty() ? "" : ", ") + s;
+    auto wrapped = Wrap(l.rooms[room_].name() + " joins " + (joins.empty() ? "nothing" : joins), width - 2);
+    for (std::size_t i = 0; i < wrapped.size() && i < 2; ++i) line("  " + wrapped[i], kPairDim);
+  }
 
   const ValidationReport& report = Report();
   if (report.valid()) {
@@ -446,12 +470,16 @@ void App::DrawStatus(int h, int w) {
 }
 
 void App::Draw() {
+  Paint();
+  refresh();
+}
+
+void App::Paint() {
   erase();
   int h, w;
   getmaxyx(stdscr, h, w);
   if (h < 12 || w < 50) {
     Put(0, 0, Clip("villa annotate needs at least 50x12 (now " + std::to_string(w) + "x" + std::to_string(h) + ")", w));
-    refresh();
     return;
   }
   DrawHeader(w);
@@ -462,7 +490,6 @@ void App::Draw() {
   for (int y = body_top; y < body_top + body_h; ++y) Put(y, plan, unicode_ ? "│" : "|", kPairDim);
   DrawPanel(body_top, plan + 1, panel, body_h);
   DrawStatus(h, w);
-  refresh();
 }
 
 void App::Modal(const std::string& title, const std::vector<std::string>& lines, int width) {
@@ -551,6 +578,7 @@ bool App::EditText(const std::string& title, std::string& text) {
       rows.push_back({cps.size(), cps.size()});
     int height = std::min(static_cast<int>(rows.size()) + 4, h - 2);
     int top = (h - height) / 2, left = (w - width) / 2;
+    Paint();
     for (int y = 0; y < height; ++y) Put(top + y, left, std::string(width, ' '), kPairStatus);
     Put(top, left + 1, Clip(" " + title + " ", width - 2), kPairStatus, A_BOLD);
     int cy = top + 1, cx = left + 1;
@@ -703,7 +731,9 @@ void App::RejectDialog() {
     return;
   }
   std::string message;
-  Act(s_.Reject(item_, reason, &message), message);
+  Status st = s_.Reject(item_, reason, &message);
+  Act(st, message);
+  if (st) Advance();
 }
 
 void App::FixDialog() {
@@ -764,7 +794,12 @@ bool App::Handle(int ch, bool is_code) {
       room_ = rooms.empty() ? -1 : rooms[0];
       break;
     }
-    case 'a': Act(s_.Accept(item_, &message), message); break;
+    case 'a': {
+      Status st = s_.Accept(item_, &message);
+      Act(st, message);
+      if (st) Advance();
+      break;
+    }
     case 'x': RejectDialog(); break;
     case 'O': Act(s_.Reopen(item_, &message), message); break;
     case 'f': FixDialog(); break;
