@@ -17,20 +17,21 @@ std::string LengthRow(const std::string& what, const LengthStats& s) {
          " | " + std::to_string(s.max) + " |\n";
 }
 
-// "200 : 400 : 400 (2 : 4 : 4)" for floors 1, 2, 3.
-std::string FloorsRatio(const std::map<int, std::size_t>& by_floors) {
+// "Floors (1 : 2 : 3 storeys): 200 : 400 : 400, ratio 2 : 4 : 4."
+std::string FloorsSentence(const std::map<int, std::size_t>& by_floors) {
   std::size_t g = 0;
   int top = 0;
   for (const auto& [floors, count] : by_floors) g = std::gcd(g, count), top = std::max(top, floors);
-  std::string counts, ratio;
+  std::string label, counts, ratio;
   for (int f = 1; f <= top; ++f) {
     auto it = by_floors.find(f);
     std::size_t count = it == by_floors.end() ? 0 : it->second;
-    if (f > 1) counts += " : ", ratio += " : ";
-    counts += std::to_string(count);
-    ratio += std::to_string(g ? count / g : 0);
+    const char* sep = f > 1 ? " : " : "";
+    label += sep + std::to_string(f);
+    counts += sep + std::to_string(count);
+    ratio += sep + std::to_string(g ? count / g : 0);
   }
-  return counts + " (" + ratio + ")";
+  return "Floors (" + label + (top == 1 ? " storey" : " storeys") + "): " + counts + ", ratio " + ratio + ".";
 }
 
 }  // namespace
@@ -84,7 +85,7 @@ std::string DataCard(const ExportSummary& s, const TrainerConfigInput& config) {
   md << ".\n\n";
 
   md << "## Composition\n\n"
-     << "Floors (1 : 2 : 3): " << FloorsRatio(s.layouts_by_floors) << ".\n\n"
+     << FloorsSentence(s.layouts_by_floors) << "\n\n"
      << "| footprint (ground floor) | layouts | share |\n| --- | ---: | ---: |\n";
   for (const auto& [shape, count] : s.layouts_by_shape) md << "| " << shape << " | " << count << " | " << Percent(count, s.layouts) << " |\n";
   md << "\nDescriptions: " << s.coarse_samples << " coarse (" << Percent(s.coarse_samples, s.samples) << ") and "
