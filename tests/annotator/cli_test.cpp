@@ -1,0 +1,88 @@
+// `villa annotate` in batch: --status, --auto, --export through the real binary; exit codes and messages.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include <catch2/catch.hpp>
+
+#include "test_support.h"
+
+using namespace villa;
+namespace test = villa::annotator::test;
+
+namespace {
+
+struct Output {
+  int status = -1;
+  std::string text;  // stdout and stderr together
+};
+
+Output Villa(const std::string& args) {
+  Output out;
+  std::string command = std::string("'") + VILLA_BINARY + "' " + args + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.text.append(buffer, n);
+  int rc = ::pclose(pipe);
+  out.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  return out;
+}
+
+std::string Q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+}  // namespace
+
+TEST_CASE("villa annotate --auto --export is byte-identical for the same dataset", "[cli]") {
+  test::TempDataset a, b;
+  for (auto* ds : {&a, &b}) {
+    Output o = Villa("annotate " + Q(ds->dir()) + " --auto --export " + Q(ds->dir() / "annotated.jsonl"));
+    INFO(o.text);
+    REQUIRE(o.status == 0);
+    CHECK(o.text.find("3 auto, 1 rejected") != std::string::npos);
+  }
+  std::string ea = test::Slurp(a.dir() / "annotated.jsonl");
+  CHECK(ea == test::Slurp(b.dir() / "annotated.jsonl"));
+  CHECK(std::count(ea.begin(), ea.end(), '\n') == 4);
+  CHECK(ea.find("\"status\":\"verified\"") == std::string::npos);
+
+  // A second --auto changes nothing (nothing pending); export refuses to overwrite without --force.
+  Output again = Villa("annotate " + Q(a.dir()) + " --auto --export " + Q(a.dir() / "annotated.jsonl"));
+  CHECK(again.status == 1);
+  CHECK(again.text.find("exists (use --force to overwrite)") != std::string::npos);
+  Output forced = Villa("annotate " + Q(a.dir()) + " --export " + Q(a.dir() / "annotated.jsonl") + " --force");
+  CHECK(forced.status == 0);
+  CHECK(test::Slurp(a.dir() / "annotated.jsonl") == ea);
+
+  Output status = Villa("annotate " + Q(a.dir()) + " --status");
+  INFO(status.text);
+  CHECK(status.status == 0);
+  CHECK(status.text.find("4 of 4 layouts annotated") != std::string::npos);
+  CHECK(status.text.find("auto            3") != std::string::npos);
+  CHECK(status.text.find("rejected        1") != std::string::npos);
+}
+
+TEST_CASE("villa annotate reports bad input with the file and line, never a crash", "[cli]") {
+  test::TempDataset ds;
+  Output missing = Villa("annotate " + Q(ds.dir() / "nope") + " --status");
+  CHECK(missing.status == 1);
+  CHECK(missing.text.find("nope: no such dataset folder") != std::string::npos);
+
+  test::Spit(ds.journal(), "{\"id\": \"villa-000000\"}\n");
+  Output corrupt = Villa("annotate " + Q(ds.dir()) + " --status");
+  INFO(corrupt.text);
+  CHECK(corrupt.status == 1);
+  CHECK(corrupt.text.find("annotations.journal.jsonl:1: corrupt journal line: \"state\" missing") != std::string::npos);
+  test::Spit(ds.journal(), "{\"id\": \"villa-000000\"}\nnot json\n");
+  Output not_json = Villa("annotate " + Q(ds.dir()) + " --status");
+  CHECK(not_json.status == 1);
+  CHECK(not_json.text.find("annotations.journal.jsonl:2: corrupt journal line") != std::string::npos);
+
+  // Not a terminal: the interactive mode says what to use instead.
+  std::filesystem::remove(ds.journal());
+  Output piped = Villa("annotate " + Q(ds.dir()) + " < /dev/null");
+  CHECK(piped.status == 1);
+  CHECK(piped.text.find("needs a terminal") != std::string::npos);
+}

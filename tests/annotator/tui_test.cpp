@@ -1,0 +1,224 @@
+// The real `villa annotate` driven through a terminal (tmux: send-keys, capture-pane): label, accept,
+// reject, fix, edit, quit, restart and find the state; kill -9 mid-session and find the journal replayed.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include <catch2/catch.hpp>
+
+#include "annotator/session.h"
+#include "test_support.h"
+
+using namespace villa;
+using namespace villa::annotator;
+
+namespace {
+
+std::string Run(const std::string& command, int* status = nullptr) {
+  std::string out;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+  int rc = ::pclose(pipe);
+  if (status) *status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  return out;
+}
+
+std::string Quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// One private tmux server running `villa annotate DIR` in a 80 x 24 (or larger) window.
+class Terminal {
+ public:
+  Terminal(const std::filesystem::path& dir, int width = 80, int height = 24) {
+    static int counter = 0;
+    socket_ = "villa-annotator-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    std::string command = "exec env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=xterm-256color " + Quote(VILLA_BINARY) +
+                          " annotate " + Quote(dir.string());
+    Tmux("new-session -d -s t -x " + std::to_string(width) + " -y " + std::to_string(height) + " " + Quote(command));
+  }
+  ~Terminal() { Tmux("kill-server 2>/dev/null"); }
+
+  std::string Tmux(const std::string& args, int* status = nullptr) const {
+    return Run("env -u TMUX tmux -f /dev/null -L " + socket_ + " " + args, status);
+  }
+  std::string Screen() const { return Tmux("capture-pane -p -t t 2>/dev/null"); }
+  void Keys(const std::string& keys) const { Tmux("send-keys -t t " + keys); }
+  void Type(const std::string& text) const { Tmux("send-keys -t t -l " + Quote(text)); }
+  bool Alive() const {
+    int status = 0;
+    Tmux("has-session -t t 2>/dev/null", &status);
+    return status == 0;
+  }
+  int Pid() const { return std::atoi(Tmux("display -p -t t '#{pane_pid}'").c_str()); }
+
+  // Waits (up to 10 s) until the screen shows `text`.
+  bool WaitFor(const std::string& text) const {
+    for (int i = 0; i < 200; ++i) {
+      if (Screen().find(text) != std::string::npos) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+  }
+  bool WaitForExit() const {
+    for (int i = 0; i < 200; ++i) {
+      if (!Alive()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+  }
+
+ private:
+  std::string socket_;
+};
+
+#define REQUIRE_SCREEN(term, text)          \
+  do {                                      \
+    bool shown = (term).WaitFor(text);      \
+    INFO("screen:\n" << (term).Screen());   \
+    REQUIRE(shown);                         \
+  } while (false)
+
+bool HaveTmux() {
+  int status = 0;
+  Run("command -v tmux >/dev/null 2>&1", &status);
+  return status == 0;
+}
+
+}  // namespace
+
+TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all", "[tui]") {
+  if (!HaveTmux()) {
+    WARN("tmux is not installed: the terminal test is skipped");
+    return;
+  }
+  test::TempDataset ds;
+  {
+    Terminal term(ds.dir());
+    REQUIRE_SCREEN(term, "villa-000000");
+    REQUIRE_SCREEN(term, "pending 4");
+    REQUIRE_SCREEN(term, "passes all ten rules");
+    // Select room 4 (the bedroom) and make it an office.
+    term.Keys("4");
+    REQUIRE_SCREEN(term, ">4 bedroom_0/0");
+    term.Keys("o");
+    REQUIRE_SCREEN(term, "label bedroom_0/0 -> office_0/0");
+    // Shown as done, so already in the journal.
+    CHECK(test::Slurp(ds.journal()).find("label bedroom_0/0 -> office_0/0") != std::string::npos);
+    term.Keys("a");
+    REQUIRE_SCREEN(term, "verified 1");
+    REQUIRE_SCREEN(term, "villa-000001");  // on to the next pending layout
+    term.Keys("x");
+    REQUIRE_SCREEN(term, "why?");
+    term.Keys("3");
+    REQUIRE_SCREEN(term, "rejected 1");
+    REQUIRE_SCREEN(term, "villa-000002");
+    // villa-000002's kitchen has no window: accept is refused, the fix repairs it.
+    term.Keys("a");
+    REQUIRE_SCREEN(term, "cannot accept");
+    term.Keys("f");
+    REQUIRE_SCREEN(term, "mechanical fixes");
+    term.Keys("a");
+    REQUIRE_SCREEN(term, "passes all ten rules");
+    // Edit the coarse description in place.
+    term.Keys("e");
+    REQUIRE_SCREEN(term, "Enter: save");
+    term.Keys("C-u");
+    term.Type("A one-storey rectangular house with a kitchen.");
+    term.Keys("Enter");
+    REQUIRE_SCREEN(term, "(edited)");
+    term.Keys("q");
+    REQUIRE(term.WaitForExit());
+  }
+  auto s = Session::Open(ds.dir(), false);
+  REQUIRE(s.ok());
+  const Session& session = **s;
+  CHECK(session.state(0).status == AnnotationStatus::kVerified);
+  CHECK(session.state(0).layout.FindRoom("office_0/0") >= 0);
+  CHECK(session.state(1).status == AnnotationStatus::kRejected);
+  CHECK(session.state(1).reason == PresetRejectReasons()[2]);
+  CHECK(session.state(2).status == AnnotationStatus::kPending);
+  CHECK(session.state(2).coarse == "A one-storey rectangular house with a kitchen.");
+  CHECK(session.state(2).layout.windows.size() == 5);
+
+  // Restart: resumes at the first pending layout with the counts as left.
+  Terminal term(ds.dir());
+  REQUIRE_SCREEN(term, "villa-000002");
+  REQUIRE_SCREEN(term, "verified 1  rejected 1");
+  REQUIRE_SCREEN(term, "A one-storey rectangular house");
+  term.Keys("p");
+  term.Keys("p");
+  REQUIRE_SCREEN(term, "villa-000000");
+  REQUIRE_SCREEN(term, "[verified]");
+  REQUIRE_SCREEN(term, "office_0/0");
+  term.Keys("q");
+  REQUIRE(term.WaitForExit());
+}
+
+TEST_CASE("kill -9 mid-session loses nothing that was shown as done", "[tui]") {
+  if (!HaveTmux()) {
+    WARN("tmux is not installed: the terminal test is skipped");
+    return;
+  }
+  test::TempDataset ds;
+  {
+    Terminal term(ds.dir());
+    REQUIRE_SCREEN(term, "villa-000000");
+    term.Keys("3");
+    term.Keys("m");
+    REQUIRE_SCREEN(term, "label dining-room_0/0 -> meeting-room_0/0");
+    term.Keys("r");
+    REQUIRE_SCREEN(term, "redraft descriptions of villa-000000 (#1)");
+    int pid = term.Pid();
+    REQUIRE(pid > 0);
+    REQUIRE(::kill(pid, SIGKILL) == 0);
+    REQUIRE(term.WaitForExit());
+  }
+  auto s = Session::Open(ds.dir(), false);
+  REQUIRE(s.ok());
+  CHECK((*s)->warnings().empty());
+  CHECK((*s)->state(0).layout.FindRoom("meeting-room_0/0") >= 0);
+  CHECK((*s)->state(0).draft == 1);
+  // And the tool itself shows it after the crash.
+  Terminal term(ds.dir());
+  REQUIRE_SCREEN(term, "meeting-room_0/0");
+  term.Keys("u");
+  REQUIRE_SCREEN(term, "undone: redraft");
+  term.Keys("q");
+  REQUIRE(term.WaitForExit());
+}
+
+TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
+  if (!HaveTmux()) {
+    WARN("tmux is not installed: the terminal test is skipped");
+    return;
+  }
+  test::TempDataset ds;
+  for (auto [w, h] : {std::pair{80, 24}, std::pair{160, 48}}) {
+    Terminal term(ds.dir(), w, h);
+    REQUIRE_SCREEN(term, "villa-000000");
+    std::string screen = term.Screen();
+    INFO(screen);
+    // Plan, room list, rule status, both descriptions and the status line are all on screen.
+    CHECK(screen.find("┌") != std::string::npos);
+    CHECK(screen.find("1 living") != std::string::npos);
+    CHECK(screen.find("5 bathroom_0/0") != std::string::npos);
+    CHECK(screen.find("passes all ten rules") != std::string::npos);
+    CHECK(screen.find("Coarse") != std::string::npos);
+    CHECK(screen.find("Fine") != std::string::npos);
+    CHECK(screen.find("pending 4") != std::string::npos);
+    term.Keys("?");
+    REQUIRE_SCREEN(term, "villa annotate: keys");
+    term.Keys("Escape");
+    term.Keys("q");
+    REQUIRE(term.WaitForExit());
+  }
+}
