@@ -9,11 +9,12 @@ add_library(villa_generator_building STATIC
   ${CMAKE_CURRENT_LIST_DIR}/triangulate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/building.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/materials.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/export.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/render_view.cpp
 )
+# villa_render for the shared category palette (render/palette.h): floors take their room's colour.
 target_link_libraries(villa_generator_building
-  PUBLIC villa_layout
+  PUBLIC villa_layout villa_render
   PRIVATE assimp::assimp embree PNG::PNG)
-if(TARGET villa_render)
-  target_link_libraries(villa_generator_building PUBLIC villa_render)
-endif()
-villa_add_commands()
+villa_add_commands(build.cpp)

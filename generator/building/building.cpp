@@ -760,9 +760,11 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         double s1 = std::max(wall.frame.S(e.shape.a), wall.frame.S(e.shape.b));
         double lo = wall.full.lo + 0.03, hi = wall.full.hi - 0.03;
         if (s0 < lo || s1 > hi) {
+          // Reaching into the corner (where the walls meet) is normal; say so only when much is lost.
+          double lost = std::max(0.0, lo - s0) + std::max(0.0, s1 - hi);
           s0 = std::max(s0, lo);
           s1 = std::min(s1, hi);
-          building.warnings.push_back(std::string(ElementKindKey(kind)) + " " + name + ": runs into a wall junction; narrowed to " +
+          if (lost > 0.35) building.warnings.push_back(std::string(ElementKindKey(kind)) + " " + name + ": runs into a wall junction; narrowed to " +
                                       Fmt(std::max(0.0, s1 - s0)) + " m");
         }
         if (s1 - s0 < 0.3) {

@@ -1,0 +1,327 @@
+#include "generator/building/render_view.h"
+
+#include <embree3/rtcore.h>
+#include <png.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+#include <thread>
+
+#include "generator/building/materials.h"
+#include "util/atomic_file.h"
+
+namespace villa {
+namespace {
+
+struct DeviceDeleter {
+  void operator()(RTCDevice d) const { rtcReleaseDevice(d); }
+};
+struct SceneDeleter {
+  void operator()(RTCScene s) const { rtcReleaseScene(s); }
+};
+
+bool Cuttable(PartKind kind) {
+  return kind == PartKind::kExteriorWall || kind == PartKind::kInteriorWall || kind == PartKind::kDoorLeaf ||
+         kind == PartKind::kWindowGlass || kind == PartKind::kStair;
+}
+
+struct Hit {
+  bool hit = false;
+  float t = 0.0f;
+  unsigned geom = 0;
+  unsigned prim = 0;
+};
+
+Hit Cast(RTCScene scene, Vec3 origin, Vec3 dir, float tnear, float tfar) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = static_cast<float>(origin.x);
+  rh.ray.org_y = static_cast<float>(origin.y);
+  rh.ray.org_z = static_cast<float>(origin.z);
+  rh.ray.dir_x = static_cast<float>(dir.x);
+  rh.ray.dir_y = static_cast<float>(dir.y);
+  rh.ray.dir_z = static_cast<float>(dir.z);
+  rh.ray.tnear = tnear;
+  rh.ray.tfar = tfar;
+  rh.ray.mask = 0xFFFFFFFF;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
+  return {true, rh.ray.tfar, rh.hit.geomID, rh.hit.primID};
+}
+
+class Tracer {
+ public:
+  Tracer(const BuildingMesh& building, const RenderOptions& options) : building_(building), options_(options) {
+    device_.reset(rtcNewDevice("threads=1"));
+    scene_.reset(rtcNewScene(device_.get()));
+    int top = options.top_level;
+    for (size_t i = 0; i < building.parts.size(); ++i) {
+      const MeshPart& part = building.parts[i];
+      if (top >= 0 && part.level > top) continue;
+      if (top >= 0 && top < building.levels - 1 && part.kind == PartKind::kRoof) continue;
+      if (top >= 0 && part.kind == PartKind::kRoof) continue;  // the roof of the top level is above the cut too
+      const TriangleMesh& m = part.mesh;
+      if (m.triangles.empty()) continue;
+      RTCGeometry geom = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                           3 * sizeof(float), m.vertices.size()));
+      for (size_t k = 0; k < m.vertices.size(); ++k) {
+        v[3 * k] = static_cast<float>(m.vertices[k].x);
+        v[3 * k + 1] = static_cast<float>(m.vertices[k].y);
+        v[3 * k + 2] = static_cast<float>(m.vertices[k].z);
+      }
+      auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(unsigned), m.triangles.size()));
+      for (size_t k = 0; k < m.triangles.size(); ++k)
+        for (int c = 0; c < 3; ++c) idx[3 * k + c] = static_cast<unsigned>(m.triangles[k][c]);
+      rtcCommitGeometry(geom);
+      unsigned id = rtcAttachGeometry(scene_.get(), geom);
+      rtcReleaseGeometry(geom);
+      if (id >= part_of_.size()) part_of_.resize(id + 1, -1);
+      part_of_[id] = static_cast<int>(i);
+      materials_.push_back(MaterialOf(part));
+      material_of_.resize(std::max(material_of_.size(), size_t{id} + 1));
+      material_of_[id] = materials_.back();
+    }
+    rtcCommitScene(scene_.get());
+    light_ = Normalized(options.light_direction);
+    cut_z_ = top >= 0 ? building.FloorZ(top) + options.cut_height : std::numeric_limits<double>::infinity();
+  }
+
+  bool ok() const { return device_ && scene_; }
+
+  Rgb Trace(Vec3 origin, Vec3 dir) const {
+    Rgb color{0, 0, 0};
+    double transmit = 1.0;
+    float tnear = 0.0f;
+    for (int bounce = 0; bounce < 24 && transmit > 0.01; ++bounce) {
+      Hit h = Cast(scene_.get(), origin, dir, tnear, std::numeric_limits<float>::infinity());
+      if (!h.hit) {
+        Add(color, options_.background, transmit);
+        break;
+      }
+      const MeshPart& part = building_.parts[part_of_[h.geom]];
+      Vec3 p = origin + dir * h.t;
+      tnear = h.t + 1e-4f;
+      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) continue;
+      Vec3 n = Normal(part, h.prim);
+      bool back = Dot(n, dir) > 0.0;
+      const PartMaterial& mat = material_of_[h.geom];
+      if (part.kind == PartKind::kWindowGlass) {
+        if (back) continue;
+        Add(color, Mix(mat.color, Shade(p, n)), transmit * mat.alpha);
+        transmit *= 1.0 - mat.alpha;
+        continue;
+      }
+      if (back) {  // inside a solid: we came in through a cut
+        Add(color, options_.section_color, transmit);
+        break;
+      }
+      Add(color, Mix(mat.color, Shade(p, n)), transmit);
+      break;
+    }
+    return color;
+  }
+
+ private:
+  static void Add(Rgb& acc, Rgb c, double w) {
+    acc.r += c.r * w;
+    acc.g += c.g * w;
+    acc.b += c.b * w;
+  }
+  static Rgb Mix(Rgb c, double light) { return {c.r * light, c.g * light, c.b * light}; }
+
+  Vec3 Normal(const MeshPart& part, unsigned prim) const {
+    const auto& t = part.mesh.triangles[prim];
+    const auto& v = part.mesh.vertices;
+    return Normalized(Cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
+  }
+
+  double Shade(Vec3 p, Vec3 n) const {
+    double lambert = std::max(0.0, Dot(n, light_));
+    if (lambert > 0.0 && options_.shadows && Occluded(p + n * 1e-3, light_)) lambert = 0.0;
+    return options_.ambient + (1.0 - options_.ambient) * lambert;
+  }
+
+  bool Occluded(Vec3 origin, Vec3 dir) const {
+    float tnear = 0.0f;
+    for (int k = 0; k < 24; ++k) {
+      Hit h = Cast(scene_.get(), origin, dir, tnear, 1e4f);
+      if (!h.hit) return false;
+      const MeshPart& part = building_.parts[part_of_[h.geom]];
+      Vec3 p = origin + dir * h.t;
+      tnear = h.t + 1e-4f;
+      if (part.kind == PartKind::kWindowGlass) continue;
+      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) continue;
+      return true;
+    }
+    return false;
+  }
+
+  const BuildingMesh& building_;
+  const RenderOptions& options_;
+  std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
+  std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
+  std::vector<int> part_of_;
+  std::vector<PartMaterial> materials_;
+  std::vector<PartMaterial> material_of_;
+  Vec3 light_;
+  double cut_z_ = 0.0;
+};
+
+std::uint8_t Byte(double c) { return static_cast<std::uint8_t>(std::clamp(std::lround(c * 255.0), 0L, 255L)); }
+
+}  // namespace
+
+std::string Camera::Check() const {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    return "image size " + std::to_string(width) + " x " + std::to_string(height) + ": each side must be in [1, 16384]";
+  if (Norm(target - position) < 1e-9) return "camera position equals its target";
+  if (Norm(Cross(target - position, up)) < 1e-9) return "camera up is parallel to the viewing direction";
+  if (!orthographic && !(fov_deg > 0.0 && fov_deg < 170.0)) return "fov_deg must be in (0, 170)";
+  if (orthographic && !(ortho_height > 0.0)) return "ortho_height must be > 0";
+  return "";
+}
+
+Rgb Image::At(int x, int y) const {
+  size_t i = (static_cast<size_t>(y) * width + x) * 3;
+  return {rgb[i] / 255.0, rgb[i + 1] / 255.0, rgb[i + 2] / 255.0};
+}
+
+Result<Image> RenderView(const BuildingMesh& building, const Camera& camera, const RenderOptions& options) {
+  if (std::string problem = camera.Check(); !problem.empty()) return Error{"camera: " + problem};
+  if (options.samples < 1 || options.samples > 4) return Error{"render: samples must be in [1, 4]"};
+  Tracer tracer(building, options);
+  if (!tracer.ok()) return Error{"render: Embree device could not be created"};
+  Vec3 forward = Normalized(camera.target - camera.position);
+  Vec3 right = Normalized(Cross(forward, camera.up));
+  Vec3 up = Cross(right, forward);
+  double aspect = static_cast<double>(camera.width) / camera.height;
+  double half_h = camera.orthographic ? camera.ortho_height / 2.0 : std::tan(camera.fov_deg * std::numbers::pi / 360.0);
+  Image image{camera.width, camera.height, std::vector<std::uint8_t>(size_t{3} * camera.width * camera.height)};
+  const int s = options.samples;
+  std::atomic<int> next_row{0};
+  auto work = [&] {
+    for (int y; (y = next_row++) < camera.height;) {
+      for (int x = 0; x < camera.width; ++x) {
+        Rgb sum{0, 0, 0};
+        for (int sy = 0; sy < s; ++sy)
+          for (int sx = 0; sx < s; ++sx) {
+            double u = (2.0 * (x + (sx + 0.5) / s) / camera.width - 1.0) * aspect * half_h;
+            double v = (1.0 - 2.0 * (y + (sy + 0.5) / s) / camera.height) * half_h;
+            Rgb c = camera.orthographic
+                        ? tracer.Trace(camera.position + right * u + up * v, forward)
+                        : tracer.Trace(camera.position, Normalized(forward + right * u + up * v));
+            sum.r += c.r, sum.g += c.g, sum.b += c.b;
+          }
+        size_t i = (static_cast<size_t>(y) * camera.width + x) * 3;
+        double w = 1.0 / (s * s);
+        image.rgb[i] = Byte(sum.r * w);
+        image.rgb[i + 1] = Byte(sum.g * w);
+        image.rgb[i + 2] = Byte(sum.b * w);
+      }
+    }
+  };
+  int threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  return image;
+}
+
+Camera FramingCamera(const BuildingMesh& building, double azimuth_deg, double elevation_deg, int width, int height) {
+  Box3 box = building.Bounds();
+  Vec3 centre = (box.min + box.max) * 0.5;
+  double az = azimuth_deg * std::numbers::pi / 180.0, el = elevation_deg * std::numbers::pi / 180.0;
+  // From -y (south) at azimuth 0, turning counter-clockwise.
+  Vec3 towards_camera{std::sin(az) * std::cos(el) * -1.0, -std::cos(az) * std::cos(el), std::sin(el)};
+  towards_camera = {-std::sin(-az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el)};
+  double radius = Norm(box.max - box.min);
+  Camera cam;
+  cam.orthographic = true;
+  cam.width = width;
+  cam.height = height;
+  cam.target = centre;
+  cam.position = centre + towards_camera * (2.0 * radius + 10.0);
+  cam.up = {0, 0, 1};
+  Vec3 forward = Normalized(cam.target - cam.position);
+  Vec3 right = Normalized(Cross(forward, cam.up));
+  Vec3 up = Cross(right, forward);
+  double w = 0.0, h = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    Vec3 c{k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z};
+    w = std::max(w, std::abs(Dot(c - centre, right)));
+    h = std::max(h, std::abs(Dot(c - centre, up)));
+  }
+  double aspect = static_cast<double>(width) / height;
+  cam.ortho_height = 2.0 * std::max(h, w / aspect) * 1.06;
+  return cam;
+}
+
+Result<Image> RenderPreview(const BuildingMesh& building, const PreviewOptions& options) {
+  if (options.panel_width < 16 || options.panel_height < 16) return Error{"preview: panels must be at least 16 px"};
+  Camera cam = FramingCamera(building, options.azimuth_deg, options.elevation_deg, options.panel_width, options.panel_height);
+  std::vector<Image> panels;
+  RenderOptions ro;
+  ro.samples = options.samples;
+  if (options.exterior_panel) {
+    auto full = RenderView(building, cam, ro);
+    if (!full) return Error{full.error()};
+    panels.push_back(std::move(*full));
+  }
+  for (int level = 0; level < building.levels; ++level) {
+    ro.top_level = level;
+    ro.cut_height = options.cut_height;
+    auto img = RenderView(building, cam, ro);
+    if (!img) return Error{img.error()};
+    panels.push_back(std::move(*img));
+  }
+  int n = static_cast<int>(panels.size());
+  Image out{n * options.panel_width + (n - 1) * options.gap, options.panel_height, {}};
+  out.rgb.assign(size_t{3} * out.width * out.height, 255);
+  for (int k = 0; k < n; ++k)
+    for (int y = 0; y < out.height; ++y)
+      std::copy_n(panels[k].rgb.begin() + size_t{3} * y * options.panel_width, 3 * options.panel_width,
+                  out.rgb.begin() + (size_t{3} * y * out.width + size_t{3} * k * (options.panel_width + options.gap)));
+  return out;
+}
+
+Result<std::string> EncodePng(const Image& image) {
+  if (image.width < 1 || image.height < 1 || image.rgb.size() != size_t{3} * image.width * image.height)
+    return Error{"PNG: empty or inconsistent image"};
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) return Error{"PNG: libpng could not start"};
+  png_infop info = png_create_info_struct(png);
+  std::string bytes;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return Error{"PNG: encoding failed"};
+  }
+  png_set_write_fn(
+      png, &bytes,
+      [](png_structp p, png_bytep data, png_size_t length) {
+        static_cast<std::string*>(png_get_io_ptr(p))->append(reinterpret_cast<const char*>(data), length);
+      },
+      nullptr);
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y)
+    png_write_row(png, const_cast<png_bytep>(image.rgb.data() + size_t{3} * y * image.width));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return bytes;
+}
+
+Status WritePng(const Image& image, const std::filesystem::path& path) {
+  auto bytes = EncodePng(image);
+  if (!bytes) return Error{path.string() + ": " + bytes.error()};
+  return WriteFileAtomic(path, *bytes);
+}
+
+}  // namespace villa
