@@ -17,7 +17,6 @@ struct RenderCommand {
   std::string output;
   int line = 0;  // JSONL record: line number (1-based); 0 = the first record
   bool force = false;
-  double scale = 0.0;
   PlanRenderOptions options;
 };
 
@@ -53,7 +52,6 @@ void Run(RenderCommand& command) {
   if (std::filesystem::exists(out) && !command.force) {
     throw UsageError("render: " + command.output + " exists; pass --force to overwrite it");
   }
-  if (command.scale > 0.0) command.options.pixels_per_metre = command.scale;
   if (std::string problem = command.options.Check(); !problem.empty()) throw UsageError("render: " + problem);
 
   Result<Layout> layout = ReadInput(command);
@@ -90,7 +88,8 @@ Registration registration{30, [](CLI::App& app) {
   sub->add_option("--line", command->line, "for a .jsonl stream: the line of the record to draw (default: the first)")
       ->check(CLI::PositiveNumber);
   sub->add_flag("-f,--force", command->force, "overwrite the output file when it exists");
-  auto* scale = sub->add_option("--scale", command->scale, "pixels per metre (5..400; default 40)");
+  auto* scale = sub->add_option("--scale", command->options.pixels_per_metre, "pixels per metre (5..400; default 40)")
+                    ->check(CLI::Range(5.0, 400.0));
   sub->add_option("--width", command->options.target_width_px,
                   "total picture width in px; the scale is chosen to fill it")
       ->excludes(scale);

@@ -16,11 +16,11 @@ Rgb CategoryColor(Category category) {
   // Hand-tuned pastels: warm hues for the day rooms (living, dining, kitchen), cool for the night and
   // wet rooms (bedroom, bathroom), distinct hues for work rooms, neutral for utility and unlabelled.
   switch (category) {
-    case Category::kLivingRoom: return Hex(0xFDCB8E);    // peach
+    case Category::kLivingRoom: return Hex(0xFBBF7E);    // apricot
     case Category::kBedroom: return Hex(0x9EC1EE);       // soft blue
     case Category::kKitchen: return Hex(0xF7A08F);       // salmon
     case Category::kBathroom: return Hex(0x8ED6D6);      // aqua
-    case Category::kDiningRoom: return Hex(0xFBE38A);    // butter yellow
+    case Category::kDiningRoom: return Hex(0xF8E57A);    // butter yellow
     case Category::kChildrenRoom: return Hex(0xF6BCD8);  // pink
     case Category::kOffice: return Hex(0xC7B6EA);        // lavender
     case Category::kMeetingRoom: return Hex(0xB5DA8E);   // leaf green
@@ -35,6 +35,8 @@ Rgb CategoryInk(Category category) {
   const Rgb fill = CategoryColor(category);
   return {fill.r * 0.55, fill.g * 0.55, fill.b * 0.55};
 }
+
+Rgb InvalidElementColor() { return Hex(0xDB1C17); }
 
 std::string_view CategoryDisplayName(Category category) {
   switch (category) {

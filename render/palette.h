@@ -22,6 +22,9 @@ Rgb CategoryColor(Category category);
 // A darker shade of CategoryColor for outlines and text in that hue (legend swatch borders).
 Rgb CategoryInk(Category category);
 
+// The colour of what is wrong: elements that are not where the format puts them.
+Rgb InvalidElementColor();
+
 // "Living room", "Children's room", "Utility room", "Room": the category as a person reads it.
 std::string_view CategoryDisplayName(Category category);
 

@@ -44,7 +44,7 @@ const Rgb kWallInk{0.16, 0.18, 0.20};
 const Rgb kText{0.11, 0.12, 0.14};
 const Rgb kMuted{0.40, 0.43, 0.47};
 const Rgb kHairline{0.50, 0.52, 0.55};
-const Rgb kError{0.86, 0.11, 0.09};
+const Rgb kError = InvalidElementColor();
 const Rgb kAccent{0.07, 0.36, 0.66};
 const Rgb kWhite{1.0, 1.0, 1.0};
 const Rgb kGlass{0.93, 0.97, 1.0};
@@ -147,12 +147,16 @@ DoorSwing SwingOf(const Layout& layout, const LevelGeometry& g, const Segment& s
   RoomsBeside(layout, g, s, &left, &right);
   int into = left >= 0 ? left : right;
   if (left >= 0 && right >= 0) {
+    // Rank: a balcony or a stair hall never takes the leaf when the other side can; else the smaller room.
+    auto rank = [&](const Room& room) {
+      if (room.category == Category::kBalcony) return 2;
+      if (room.category == Category::kUtilityRoom && g.has_stairs) return 1;
+      return 0;
+    };
     const Room& l = layout.rooms[left];
     const Room& r = layout.rooms[right];
-    if (l.category == Category::kBalcony && r.category != Category::kBalcony) {
-      into = right;
-    } else if (r.category == Category::kBalcony && l.category != Category::kBalcony) {
-      into = left;
+    if (rank(l) != rank(r)) {
+      into = rank(l) < rank(r) ? left : right;
     } else {
       into = Area(l.polygon) <= Area(r.polygon) ? left : right;
     }
