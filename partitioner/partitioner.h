@@ -89,10 +89,10 @@ struct PartitionOptions {
   std::optional<ShapeClass> shape;
   double shape_weights[kShapeClassCount] = {0.15, 0.20, 0.15, 0.15, 0.10, 0.25};
 
-  // Ground-floor bounding rectangle, m (sides sampled uniformly on the grid in these ranges). Briefs
-  // with many rooms a floor get the larger end automatically.
-  double min_side = 11.0;
-  double max_side = 22.0;
+  // Limits of the ground floor's bounding rectangle, m. Within them the size follows the ground floor's
+  // room count (about 22-36 m2 a room, aspect 1-1.6; U, T and H footprints at least 13 m a side).
+  double min_side = 9.0;
+  double max_side = 24.0;
 
   // Rooms a floor (the staircase room included), 3..6 (FORMAT.md rule 6 caps at 6). Sampled per floor
   // with an average of about 5 unless `rooms` fixes the count (see `only_required_rooms`).

@@ -1,0 +1,226 @@
+#include "partitioner/dataset.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "util/text_table.h"
+
+namespace villa {
+
+std::string DatasetRecordId(uint64_t index) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "villa-%06llu", static_cast<unsigned long long>(index));
+  return buffer;
+}
+
+Json DatasetRecord(uint64_t index, uint64_t seed, const PartitionSummary& summary) {
+  Json record = Json::object();
+  record["id"] = DatasetRecordId(index);
+  record["seed"] = seed;
+  record["shape"] = std::string(ShapeClassName(summary.shape));
+  record["floors"] = summary.floors;
+  record["layout"] = LayoutToJson(summary.layout);
+  return record;
+}
+
+std::string DatasetRecordLine(uint64_t index, uint64_t seed, const PartitionSummary& summary) {
+  return DatasetRecord(index, seed, summary).dump();
+}
+
+bool SynthOptions::IsValid(std::string* message) const {
+  auto fail = [&](std::string text) {
+    if (message) *message = std::move(text);
+    return false;
+  };
+  if (count == 0) return fail("--count must be at least 1");
+  if (shard_count == 0) return fail("--shard i/n: n must be at least 1");
+  if (shard_index >= shard_count)
+    return fail("--shard " + std::to_string(shard_index) + "/" + std::to_string(shard_count) + ": i must be below n");
+  if (threads < 0) return fail("--threads " + std::to_string(threads) + ": must be >= 0 (0 = all cores)");
+  if (previews < 0) return fail("--previews " + std::to_string(previews) + ": must be >= 0");
+  double total = 0.0;
+  for (double w : floor_weights) {
+    if (!(w >= 0.0) || !std::isfinite(w)) return fail("--floors: weights must be non-negative numbers");
+    total += w;
+  }
+  if (!(total > 0.0)) return fail("--floors: at least one weight must be positive");
+  std::string inner;
+  if (!partition.IsValid(&inner)) return fail(inner);
+  return true;
+}
+
+Json SynthStats::ToJson() const {
+  Json j = Json::object();
+  j["layouts"] = layouts;
+  j["first_index"] = first_index;
+  j["failures"] = failures;
+  j["validated"] = validated;
+  j["retries"] = retries;
+  j["retries_per_layout"] = layouts ? static_cast<double>(retries) / static_cast<double>(layouts) : 0.0;
+  j["angled_layouts"] = angled;
+  Json fl = Json::object();
+  for (const auto& [f, n] : floors) fl[std::to_string(f)] = n;
+  j["floors"] = fl;
+  Json sh = Json::object();
+  for (const auto& [s, n] : shapes) sh[s] = n;
+  j["shapes"] = sh;
+  Json rpf = Json::object();
+  uint64_t floor_count = 0, room_count = 0;
+  for (const auto& [r, n] : rooms_per_floor) {
+    rpf[std::to_string(r)] = n;
+    floor_count += n;
+    room_count += n * static_cast<uint64_t>(r);
+  }
+  j["rooms_per_floor"] = rpf;
+  j["mean_rooms_per_floor"] = floor_count ? static_cast<double>(room_count) / static_cast<double>(floor_count) : 0.0;
+  Json cat = Json::object();
+  for (const auto& [c, n] : categories) cat[c] = n;
+  j["categories"] = cat;
+  j["seconds"] = std::round(seconds * 1000.0) / 1000.0;
+  return j;
+}
+
+std::string SynthStats::Report() const {
+  std::ostringstream out;
+  const double n = static_cast<double>(layouts);
+  out << "layouts: " << layouts << " (ids " << DatasetRecordId(first_index) << " .. "
+      << DatasetRecordId(first_index + (layouts ? layouts - 1 : 0)) << "), all valid: "
+      << (validated == layouts && failures == 0 ? "yes" : "NO") << ", failed seeds: " << failures << "\n";
+  {
+    TextTable t({"floors", "layouts", "share"});
+    for (const auto& [f, c] : floors) t.AddRow({std::to_string(f), std::to_string(c), FormatPercent(double(c), n)});
+    out << t.Render();
+  }
+  {
+    TextTable t({"shape", "layouts", "share"});
+    for (const auto& [s, c] : shapes) t.AddRow({s, std::to_string(c), FormatPercent(double(c), n)});
+    out << t.Render();
+  }
+  {
+    TextTable t({"rooms/floor", "floors", "share"});
+    uint64_t total = 0, rooms = 0;
+    for (const auto& [r, c] : rooms_per_floor) total += c, rooms += c * static_cast<uint64_t>(r);
+    for (const auto& [r, c] : rooms_per_floor)
+      t.AddRow({std::to_string(r), std::to_string(c), FormatPercent(double(c), double(total))});
+    out << t.Render();
+    out << "mean rooms per floor: " << FormatFixed(total ? double(rooms) / double(total) : 0.0, 2) << "\n";
+  }
+  {
+    TextTable t({"category", "rooms"});
+    for (const auto& [c, k] : categories) t.AddRow({c, std::to_string(k)});
+    out << t.Render();
+  }
+  out << "angled edges: " << FormatPercent(double(angled), n) << " of layouts\n";
+  out << "retries: " << retries << " (" << FormatFixed(n > 0 ? double(retries) / n : 0.0, 2) << " a layout)\n";
+  out << "time: " << FormatFixed(seconds, 2) << " s (" << FormatFixed(seconds > 0 ? n / seconds : 0.0, 0)
+      << " layouts/s)\n";
+  return out.str();
+}
+
+namespace {
+
+struct Outcome {
+  std::string line;
+  std::string failure;
+  uint64_t retries = 0;
+  SynthStats part;  // this layout's counts
+};
+
+Outcome MakeOne(const SynthOptions& o, const std::vector<int>& floor_plan, uint64_t index) {
+  Outcome out;
+  PartitionOptions p = o.partition;
+  p.floors = floor_plan[index];
+  p.shape.reset();
+  p.validate = true;
+  const uint64_t base = DatasetLayoutSeed(o.seed, index);
+  // A seed with no valid layout in max_attempts is replaced by a derived one (recorded in the record's
+  // "seed", so the record still regenerates); the floors stay those of the index.
+  for (uint64_t k = 0; k < 8; ++k) {
+    const uint64_t seed = k == 0 ? base : DatasetLayoutSeed(base, k);
+    PartitionSummary s = GenerateLayout(p, seed);
+    out.retries += static_cast<uint64_t>(s.retries);
+    if (!s.ok()) {
+      out.failure = DatasetRecordId(index) + " (seed " + std::to_string(seed) + "): " + s.message;
+      continue;
+    }
+    out.failure.clear();
+    out.line = DatasetRecordLine(index, seed, s);
+    SynthStats& st = out.part;
+    st.layouts = 1;
+    st.validated = 1;
+    st.angled = s.angled_edges ? 1 : 0;
+    st.floors[s.floors] = 1;
+    st.shapes[std::string(ShapeClassName(s.shape))] = 1;
+    for (int l = 0; l < s.floors; ++l) ++st.rooms_per_floor[static_cast<int>(s.layout.RoomsOnLevel(l).size())];
+    for (const Room& r : s.layout.rooms) ++st.categories[std::string(CategoryName(r.category))];
+    return out;
+  }
+  return out;
+}
+
+void Merge(SynthStats& into, const SynthStats& from) {
+  into.layouts += from.layouts;
+  into.validated += from.validated;
+  into.angled += from.angled;
+  for (const auto& [k, v] : from.floors) into.floors[k] += v;
+  for (const auto& [k, v] : from.shapes) into.shapes[k] += v;
+  for (const auto& [k, v] : from.rooms_per_floor) into.rooms_per_floor[k] += v;
+  for (const auto& [k, v] : from.categories) into.categories[k] += v;
+}
+
+}  // namespace
+
+SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void(const std::string&)>& write_line,
+                           const std::function<void(std::size_t)>& on_progress, std::vector<std::string>* failures) {
+  const auto start = std::chrono::steady_clock::now();
+  const uint64_t first = options.count * options.shard_index / options.shard_count;
+  const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
+  const std::vector<int> floor_plan = DatasetFloorPlan(options.count, options.floor_weights);
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  SynthStats stats;
+  stats.first_index = first;
+  // Batches: workers take indices from a counter; the batch is written in index order once done.
+  const uint64_t batch = 2048;
+  std::vector<Outcome> results;
+  for (uint64_t begin = first; begin < last; begin += batch) {
+    const uint64_t end = std::min(last, begin + batch);
+    results.assign(end - begin, {});
+    std::atomic<uint64_t> next{begin};
+    auto work = [&] {
+      while (true) {
+        const uint64_t i = next.fetch_add(1);
+        if (i >= end) break;
+        results[i - begin] = MakeOne(options, floor_plan, i);
+        if (on_progress) on_progress(1);
+      }
+    };
+    const int n = static_cast<int>(std::min<uint64_t>(static_cast<uint64_t>(threads), end - begin));
+    if (n <= 1) {
+      work();
+    } else {
+      std::vector<std::thread> pool;
+      for (int t = 0; t < n; ++t) pool.emplace_back(work);
+      for (auto& t : pool) t.join();
+    }
+    for (Outcome& r : results) {
+      stats.retries += r.retries;
+      if (!r.failure.empty()) {
+        ++stats.failures;
+        if (failures) failures->push_back(r.failure);
+        continue;
+      }
+      Merge(stats, r.part);
+      write_line(r.line);
+    }
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace villa

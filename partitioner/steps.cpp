@@ -1,0 +1,365 @@
+#include "partitioner/steps.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace villa::partition {
+namespace {
+
+enum Side { kBottom, kRight, kTop, kLeft };
+
+// A notch box on `side` of the W x H rectangle: along that side from `offset` for `width`, `depth` deep.
+IBox NotchBox(Side side, int64_t W, int64_t H, int64_t offset, int64_t width, int64_t depth) {
+  switch (side) {
+    case kBottom: return {offset, 0, offset + width, depth};
+    case kTop: return {offset, H - depth, offset + width, H};
+    case kLeft: return {0, offset, depth, offset + width};
+    case kRight: return {W - depth, offset, W, offset + width};
+  }
+  return {};
+}
+
+int64_t Frac(int64_t value, double f) { return static_cast<int64_t>(std::llround(static_cast<double>(value) * f)); }
+
+// rect minus the boxes; empty unless the result is one simple ring.
+IRing Subtract(IRing ring, const std::vector<IBox>& boxes) {
+  for (const IBox& box : boxes) {
+    std::vector<IRing> out;
+    if (!SubtractBox(ring, box, &out) || out.size() != 1) return {};
+    ring = std::move(out[0]);
+  }
+  return ring;
+}
+
+bool AcceptCut(const IRing& before, const IRing& after) {
+  return after.size() >= 3 && IsSimple(after) && TwiceArea(after) > 0 && TwiceArea(after) < TwiceArea(before);
+}
+
+// Chamfer the convex corner i: cut `a` units back along the incoming edge and `b` along the outgoing one.
+IRing Chamfer(const IRing& ring, std::size_t i, int64_t a, int64_t b) {
+  const std::size_t n = ring.size();
+  const IPoint prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
+  auto unit = [](IPoint from, IPoint to) {
+    const int64_t g = Gcd(to.x - from.x, to.y - from.y);
+    return IPoint{(to.x - from.x) / g, (to.y - from.y) / g};
+  };
+  const IPoint din = unit(v, prev), dout = unit(v, next);
+  IRing out;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j == i) {
+      out.push_back({v.x + din.x * a, v.y + din.y * a});
+      out.push_back({v.x + dout.x * b, v.y + dout.y * b});
+    } else {
+      out.push_back(ring[j]);
+    }
+  }
+  return Normalize(out);
+}
+
+int64_t AxisLength(IPoint a, IPoint b) { return std::llabs(b.x - a.x) + std::llabs(b.y - a.y); }
+bool IsAxisAligned(IPoint a, IPoint b) { return a.x == b.x || a.y == b.y; }
+
+// One angled cut of an irregular footprint: a chamfer, a long slanted edge or a triangular bite.
+IRing AngledCut(const IRing& ring, const Scale& scale, Rng& rng) {
+  const std::size_t n = ring.size();
+  const int kind = static_cast<int>(rng.Int(0, 2));
+  const std::size_t i = static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(n) - 1));
+  const IPoint prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
+  const int64_t one = scale.UnitsUp(1.0);
+  if (kind <= 1) {
+    if (Cross(prev, v, next) <= 0) return {};  // only convex corners
+    if (!IsAxisAligned(prev, v) || !IsAxisAligned(v, next)) return {};
+    const int64_t lin = AxisLength(prev, v), lout = AxisLength(v, next);
+    int64_t a, b;
+    if (kind == 0) {  // chamfer: both legs 1-4 m, independent (any slope)
+      a = rng.Int(2 * one, std::min(4 * one, lin / 2));
+      b = rng.Int(one + one / 2, std::min(4 * one, lout / 2));
+    } else {  // slanted edge: a long leg along one side, a short one along the other
+      a = rng.Int(Frac(lin, 0.4), Frac(lin, 0.75));
+      b = rng.Int(one, std::min(3 * one, lout / 3));
+    }
+    if (a < one || b < one || a > lin - 2 * one || b > lout - 2 * one) return {};
+    if (rng.Chance(0.5)) std::swap(a, b);
+    if (a > lin - 2 * one || b > lout - 2 * one) return {};
+    return Chamfer(ring, i, a, b);
+  }
+  // Triangular bite into the edge v -> next.
+  if (!IsAxisAligned(v, next)) return {};
+  const int64_t len = AxisLength(v, next);
+  if (len < 7 * one) return {};
+  const int64_t width = rng.Int(2 * one, std::min(4 * one, len - 4 * one));
+  const int64_t start = rng.Int(2 * one, len - width - 2 * one);
+  const int64_t depth = rng.Int(one, 2 * one + one / 2);
+  const int64_t apex = start + rng.Int(std::max<int64_t>(1, width / 4), width - std::max<int64_t>(1, width / 4));
+  const IPoint d{(next.x - v.x) / len, (next.y - v.y) / len};
+  const IPoint inward{-d.y, d.x};  // left of the edge: inside a counter-clockwise ring
+  IRing out;
+  for (std::size_t j = 0; j < n; ++j) {
+    out.push_back(ring[j]);
+    if (j == i) {
+      out.push_back({v.x + d.x * start, v.y + d.y * start});
+      out.push_back({v.x + d.x * apex + inward.x * depth, v.y + d.y * apex + inward.y * depth});
+      out.push_back({v.x + d.x * (start + width), v.y + d.y * (start + width)});
+    }
+  }
+  return Normalize(out);
+}
+
+}  // namespace
+
+uint64_t MixSeed(uint64_t a, uint64_t b) {
+  Rng rng(a ^ (b * 0xD1B54A32D192ED03ull + 0x8CB92BA72F3D8DD7ull));
+  rng.Next();
+  return rng.Next();
+}
+
+int64_t Scale::Units(double metres) const { return static_cast<int64_t>(std::llround(metres / grid)); }
+int64_t Scale::UnitsUp(double metres) const { return static_cast<int64_t>(std::ceil(metres / grid - 1e-9)); }
+
+IRing FootprintShape(ShapeClass shape, int64_t W, int64_t H, const Scale& scale, Rng& rng) {
+  const IRing rect = BoxRing({0, 0, W, H});
+  const int64_t arm = scale.UnitsUp(4.0);  // every wing at least 4 m deep (a staircase or a room fits)
+  switch (shape) {
+    case ShapeClass::kRectangle: return rect;
+    case ShapeClass::kL: {
+      const int64_t nw = rng.Int(Frac(W, 0.3), std::min(Frac(W, 0.55), W - arm));
+      const int64_t nh = rng.Int(Frac(H, 0.3), std::min(Frac(H, 0.55), H - arm));
+      if (nw < arm / 2 || nh < arm / 2) return {};
+      const Side side = rng.Chance(0.5) ? kBottom : kTop;
+      const bool at_start = rng.Chance(0.5);
+      return Subtract(rect, {NotchBox(side, W, H, at_start ? 0 : W - nw, nw, nh)});
+    }
+    case ShapeClass::kU: {
+      const Side side = static_cast<Side>(rng.Int(0, 3));
+      const int64_t along = (side == kBottom || side == kTop) ? W : H;
+      const int64_t across = (side == kBottom || side == kTop) ? H : W;
+      const int64_t min_arm = std::max(arm, Frac(along, 0.2));
+      const int64_t width = rng.Int(Frac(along, 0.25), std::min(Frac(along, 0.5), along - 2 * min_arm));
+      const int64_t depth = rng.Int(Frac(across, 0.3), std::min(Frac(across, 0.55), across - arm));
+      if (width < arm / 2 || depth < arm / 2 || along - width < 2 * min_arm) return {};
+      const int64_t offset = rng.Int(min_arm, along - width - min_arm);
+      return Subtract(rect, {NotchBox(side, W, H, offset, width, depth)});
+    }
+    case ShapeClass::kT: {
+      const Side side = static_cast<Side>(rng.Int(0, 3));
+      const int64_t along = (side == kBottom || side == kTop) ? W : H;
+      const int64_t across = (side == kBottom || side == kTop) ? H : W;
+      const int64_t stem = rng.Int(std::max(arm, Frac(along, 0.3)), Frac(along, 0.5));
+      const int64_t a = rng.Int(Frac(along - stem, 0.4), Frac(along - stem, 0.6));
+      const int64_t b = along - stem - a;
+      const int64_t depth = rng.Int(Frac(across, 0.35), std::min(Frac(across, 0.6), across - arm));
+      if (a < arm / 2 || b < arm / 2 || depth < arm / 2) return {};
+      return Subtract(rect, {NotchBox(side, W, H, 0, a, depth), NotchBox(side, W, H, along - b, b, depth)});
+    }
+    case ShapeClass::kH: {
+      const bool vertical_bar = rng.Chance(0.5);  // notches in bottom and top (else left and right)
+      const Side s1 = vertical_bar ? kBottom : kLeft, s2 = vertical_bar ? kTop : kRight;
+      const int64_t along = vertical_bar ? W : H;
+      const int64_t across = vertical_bar ? H : W;
+      const int64_t min_arm = std::max(arm, Frac(along, 0.22));
+      std::vector<IBox> boxes;
+      int64_t depth_total = 0;
+      for (Side s : {s1, s2}) {
+        const int64_t width = rng.Int(Frac(along, 0.25), std::min(Frac(along, 0.45), along - 2 * min_arm));
+        const int64_t depth = rng.Int(Frac(across, 0.22), Frac(across, 0.32));
+        if (width < arm / 2 || depth < arm / 2 || along - width < 2 * min_arm) return {};
+        const int64_t slack = (along - width - 2 * min_arm) / 3;
+        const int64_t centre_offset = (along - width) / 2;
+        const int64_t offset = rng.Int(centre_offset - slack, centre_offset + slack);
+        boxes.push_back(NotchBox(s, W, H, offset, width, depth));
+        depth_total += depth;
+      }
+      if (across - depth_total < arm) return {};
+      return Subtract(rect, boxes);
+    }
+    case ShapeClass::kIrregular: {
+      IRing ring = rect;
+      if (rng.Chance(0.4)) {
+        const IRing l = FootprintShape(ShapeClass::kL, W, H, scale, rng);
+        if (!l.empty()) ring = l;
+      }
+      const int cuts = static_cast<int>(rng.Int(1, 3));
+      int made = 0;
+      for (int attempt = 0; attempt < 12 && made < cuts; ++attempt) {
+        IRing cut = AngledCut(ring, scale, rng);
+        if (cut.empty() || !AcceptCut(ring, cut)) continue;
+        ring = std::move(cut);
+        ++made;
+      }
+      if (!HasAngledEdge(ring)) return {};
+      return ring;
+    }
+  }
+  return {};
+}
+
+bool PieceUsable(const IRing& piece, const BspLimits& limits) {
+  if (piece.size() < 3 || TwiceArea(piece) < limits.min_area2) return false;
+  const IBox box = BoundingBox(piece);
+  if (box.width() < limits.min_side || box.height() < limits.min_side) return false;
+  return MinWidth(piece) >= limits.min_width;
+}
+
+std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const Scale& scale, Rng& rng) {
+  const std::size_t n = footprint.size();
+  const int64_t margin = scale.UnitsUp(2.0);
+  const double min_width = static_cast<double>(scale.UnitsUp(2.0));
+  double fx, fy;
+  Centroid(footprint, &fx, &fy);
+  const int64_t expected = TwiceArea(footprint) - 2 * size * size;
+  // Candidate squares: on an axis-aligned edge, flush with either end or at a random offset.
+  std::vector<IBox> candidates;
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint a = footprint[i], b = footprint[(i + 1) % n];
+    if (!IsAxisAligned(a, b)) continue;
+    const int64_t len = AxisLength(a, b);
+    if (len < size) continue;
+    const IPoint d{(b.x - a.x) / len, (b.y - a.y) / len};
+    const IPoint inward{-d.y, d.x};
+    // Flush with either end, or any whole-metre offset leaving at least 2 m to both ends.
+    std::vector<int64_t> offsets{0, len - size};
+    const int64_t metre = std::max<int64_t>(1, scale.Units(1.0));
+    for (int64_t off = margin; off <= len - size - margin; off += metre) offsets.push_back(off);
+    for (int64_t off : offsets) {
+      const IPoint p0{a.x + d.x * off, a.y + d.y * off};
+      const IPoint p1{p0.x + d.x * size + inward.x * size, p0.y + d.y * size + inward.y * size};
+      candidates.push_back({std::min(p0.x, p1.x), std::min(p0.y, p1.y), std::max(p0.x, p1.x), std::max(p0.y, p1.y)});
+    }
+  }
+  // Random order, first that fits.
+  for (std::size_t i = candidates.size(); i > 1; --i)
+    std::swap(candidates[i - 1], candidates[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(i) - 1))]);
+  for (const IBox& box : candidates) {
+    const double sx = (box.min_x + box.max_x) / 2.0, sy = (box.min_y + box.max_y) / 2.0;
+    if (std::abs(sx - fx) < 1e-6 && std::abs(sy - fy) < 1e-6) continue;
+    std::vector<IRing> rest;
+    if (!SubtractInside(footprint, BoxRing(box), &rest) || rest.size() != 1 || TwiceArea(rest[0]) != expected)
+      continue;
+    if (MinWidth(rest[0]) < min_width) continue;
+    return box;
+  }
+  return std::nullopt;
+}
+
+IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64_t min_area2, const Scale& scale,
+                     Rng& rng) {
+  if (rng.Chance(0.3)) return lower;
+  const IBox bb = BoundingBox(lower);
+  const int64_t W = bb.width(), H = bb.height();
+  const double min_width = static_cast<double>(scale.UnitsUp(2.5));
+  IRing ring = lower;
+  const int cuts = rng.Chance(0.7) ? 1 : 2;
+  int made = 0;
+  for (int attempt = 0; attempt < 10 && made < cuts; ++attempt) {
+    // A corner block, a notch in a side, or a setback strip along a whole side.
+    const int kind = static_cast<int>(rng.Int(0, 2));
+    const Side side = static_cast<Side>(rng.Int(0, 3));
+    const int64_t along = (side == kBottom || side == kTop) ? W : H;
+    const int64_t across = (side == kBottom || side == kTop) ? H : W;
+    int64_t width, offset;
+    int64_t depth = rng.Int(Frac(across, 0.15), Frac(across, 0.4));
+    if (kind == 0) {
+      width = rng.Int(Frac(along, 0.2), Frac(along, 0.5));
+      offset = rng.Chance(0.5) ? 0 : along - width;
+    } else if (kind == 1) {
+      width = rng.Int(Frac(along, 0.2), Frac(along, 0.45));
+      offset = rng.Int(Frac(along, 0.15), along - width - Frac(along, 0.15));
+    } else {
+      width = along;
+      offset = 0;
+      depth = rng.Int(Frac(across, 0.1), Frac(across, 0.3));
+    }
+    if (width <= 0 || depth <= 0) continue;
+    IBox box = NotchBox(side, W, H, offset, width, depth);
+    box.min_x += bb.min_x;
+    box.max_x += bb.min_x;
+    box.min_y += bb.min_y;
+    box.max_y += bb.min_y;
+    // Reach past the bounding box on the outer side so the cut is clean.
+    if (stair && box.min_x < stair->max_x && stair->min_x < box.max_x && box.min_y < stair->max_y &&
+        stair->min_y < box.max_y)
+      continue;
+    std::vector<IRing> out;
+    if (!SubtractBox(ring, box, &out) || out.size() != 1) continue;
+    if (TwiceArea(out[0]) >= TwiceArea(ring) || TwiceArea(out[0]) < min_area2) continue;
+    if (MinWidth(out[0]) < min_width) continue;
+    if (stair) {
+      // What stays beside the staircase must still hold rooms.
+      std::vector<IRing> rest;
+      if (!SubtractInside(out[0], BoxRing(*stair), &rest)) continue;
+      bool wide = true;
+      for (const IRing& r : rest) wide = wide && MinWidth(r) >= static_cast<double>(scale.UnitsUp(2.0));
+      if (!wide) continue;
+    }
+    ring = std::move(out[0]);
+    ++made;
+  }
+  return ring;
+}
+
+std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng) {
+  int failures = 0;
+  while (static_cast<int>(pieces.size()) < target && failures < 40) {
+    // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always).
+    std::vector<double> weights(pieces.size(), 0.0);
+    bool any = false;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const double a = static_cast<double>(TwiceArea(pieces[i]));
+      if (a >= 2.0 * static_cast<double>(limits.min_area2)) {
+        weights[i] = a * a * a;
+        any = true;
+      }
+    }
+    if (!any) break;
+    const std::size_t index = static_cast<std::size_t>(rng.Weighted(weights.data(), static_cast<int>(weights.size())));
+    const IRing& piece = pieces[index];
+    const IBox box = BoundingBox(piece);
+    // Cut across the longer side more often (rooms stay compact).
+    const double ratio = static_cast<double>(box.width()) / static_cast<double>(std::max<int64_t>(1, box.height()));
+    const double p_vertical = ratio > 1.25 ? 0.85 : (ratio < 0.8 ? 0.15 : 0.5);
+    const Axis axis = rng.Chance(p_vertical) ? Axis::kX : Axis::kY;
+    const int64_t lo = (axis == Axis::kX ? box.min_x : box.min_y) + limits.min_side;
+    const int64_t hi = (axis == Axis::kX ? box.max_x : box.max_y) - limits.min_side;
+    if (hi < lo) {
+      ++failures;
+      continue;
+    }
+    // Near the middle more often than at the ends: average of two uniform draws.
+    const int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
+    if (!SplitIsOnGrid(piece, axis, k)) {
+      ++failures;
+      continue;
+    }
+    std::vector<IRing> parts;
+    {
+      std::vector<IRing> low, high;
+      if (!SplitRing(piece, axis, k, &low, &high)) {
+        ++failures;
+        continue;
+      }
+      parts = std::move(low);
+      for (auto& r : high) parts.push_back(std::move(r));
+    }
+    bool ok = parts.size() >= 2 && static_cast<int>(pieces.size() - 1 + parts.size()) <= target;
+    for (const IRing& part : parts) ok = ok && PieceUsable(part, limits);
+    if (!ok) {
+      ++failures;
+      continue;
+    }
+    pieces.erase(pieces.begin() + static_cast<long>(index));
+    for (auto& r : parts) pieces.push_back(std::move(r));
+  }
+  return pieces;
+}
+
+std::optional<ISegment> PlaceDoor(const ISegment& wall, int64_t width, int64_t clearance, Rng& rng) {
+  if (!IsAxisAligned(wall.a, wall.b)) return std::nullopt;
+  const int64_t len = AxisLength(wall.a, wall.b);
+  if (len < width + 2 * clearance) return std::nullopt;
+  const IPoint d{(wall.b.x - wall.a.x) / len, (wall.b.y - wall.a.y) / len};
+  const int64_t off = rng.Int(clearance, len - width - clearance);
+  const IPoint a{wall.a.x + d.x * off, wall.a.y + d.y * off};
+  return ISegment{a, {a.x + d.x * width, a.y + d.y * width}};
+}
+
+}  // namespace villa::partition

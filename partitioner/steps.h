@@ -1,0 +1,87 @@
+#pragma once
+// The partitioner's steps, one function each, in grid units (exact integers). GenerateLayout chains them;
+// the tests check each on its own. Internal to villa_partitioner and its tests.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "partitioner/geometry.h"
+#include "partitioner/partitioner.h"
+
+namespace villa::partition {
+
+// Deterministic PRNG (SplitMix64) with its own helpers: the same stream on every standard library.
+class Rng {
+ public:
+  explicit Rng(uint64_t seed) : state_(seed) {}
+  uint64_t Next() {
+    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [lo, hi] (inclusive); lo when hi < lo.
+  int64_t Int(int64_t lo, int64_t hi) {
+    if (hi <= lo) return lo;
+    const unsigned __int128 span = static_cast<unsigned __int128>(hi - lo) + 1;
+    return lo + static_cast<int64_t>((static_cast<unsigned __int128>(Next()) * span) >> 64);
+  }
+  double Unit() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }  // [0, 1)
+  bool Chance(double p) { return Unit() < p; }
+  // Index drawn with probability proportional to weights (all >= 0, some > 0).
+  int Weighted(const double* weights, int n) {
+    double total = 0.0;
+    for (int i = 0; i < n; ++i) total += weights[i];
+    double x = Unit() * total;
+    for (int i = 0; i < n; ++i) {
+      if (x < weights[i]) return i;
+      x -= weights[i];
+    }
+    return n - 1;
+  }
+
+ private:
+  uint64_t state_;
+};
+
+uint64_t MixSeed(uint64_t a, uint64_t b);
+
+// Grid units for metres (the grid divides every length used: 4 m, door widths...).
+struct Scale {
+  double grid = 0.5;
+  int64_t Units(double metres) const;      // nearest whole number of units
+  int64_t UnitsUp(double metres) const;    // at least `metres`
+  double Metres(int64_t units) const { return static_cast<double>(units) * grid; }
+};
+
+// Step 1: the ground footprint of class `shape` inside a width x height rectangle at the origin (units).
+// Empty when the random cuts did not fit (the caller retries).
+IRing FootprintShape(ShapeClass shape, int64_t width, int64_t height, const Scale& scale, Rng& rng);
+
+// Step 3: the staircase square (side `size` units) inside `footprint`, with one side on its boundary (so
+// the rest of the floor has no hole) and its centre away from the footprint's centroid. Nullopt if none.
+std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const Scale& scale, Rng& rng);
+
+// Step 2: the footprint of the floor above: `lower` minus zero to two rectangular cuts at corners or
+// sides, one connected piece, containing `stair` (when given), at least `min_area2` (twice-area units).
+IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64_t min_area2, const Scale& scale,
+                     Rng& rng);
+
+// Usability threshold of a BSP piece (units): a future room of any type fits.
+struct BspLimits {
+  int64_t min_area2 = 0;      // twice the area
+  int64_t min_side = 0;       // bounding box, both sides
+  double min_width = 0.0;     // MinWidth of the ring
+};
+bool PieceUsable(const IRing& piece, const BspLimits& limits);
+
+// Step 4: splits `pieces` recursively by axis-aligned grid lines into at most `target` connected rooms,
+// each usable. Splits crossing slanted edges off the grid are skipped. Returns the rooms (fewer than
+// `target` when no usable split was left).
+std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng);
+
+// Step 6: a door (or open) of `width` units on the wall segment, at least `clearance` units from both of
+// its ends, at a random grid position. Nullopt when the wall is too short.
+std::optional<ISegment> PlaceDoor(const ISegment& wall, int64_t width, int64_t clearance, Rng& rng);
+
+}  // namespace villa::partition
