@@ -17,6 +17,34 @@ using BgPolygon = bg::model::polygon<BgPoint, /*clockwise=*/false, /*closed=*/fa
 using BgMultiPolygon = bg::model::multi_polygon<BgPolygon>;
 
 double Cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+double Len(const Segment& s) { return std::sqrt((s.b.x - s.a.x) * (s.b.x - s.a.x) + (s.b.y - s.a.y) * (s.b.y - s.a.y)); }
+
+// A segment as origin, unit direction and length: computed once, tested against many edges.
+struct Frame {
+  double ax = 0, ay = 0, ux = 0, uy = 0, len = 0;
+  explicit Frame(const Segment& s) : ax(s.a.x), ay(s.a.y), len(Len(s)) {
+    if (len > 0) ux = (s.b.x - s.a.x) / len, uy = (s.b.y - s.a.y) / len;
+  }
+};
+
+// The part of the frame's segment on the edge ea-eb, as an arc-length interval (see CollinearOverlap).
+inline bool Overlap(const Frame& f, const Point& ea, const Point& eb, double tolerance, Interval* out) {
+  if (f.len <= tolerance) return false;
+  double h1 = f.ux * (ea.y - f.ay) - f.uy * (ea.x - f.ax);
+  double h2 = f.ux * (eb.y - f.ay) - f.uy * (eb.x - f.ax);
+  if ((h1 > tolerance && h2 > tolerance) || (h1 < -tolerance && h2 < -tolerance)) return false;  // off to one side
+  double ex = eb.x - ea.x, ey = eb.y - ea.y;
+  if (ex * ex + ey * ey <= tolerance * tolerance) return false;
+  double t1 = (ea.x - f.ax) * f.ux + (ea.y - f.ay) * f.uy;
+  double t2 = (eb.x - f.ax) * f.ux + (eb.y - f.ay) * f.uy;
+  double from = std::max(0.0, std::min(t1, t2)), to = std::min(f.len, std::max(t1, t2));
+  if (to - from <= tolerance) return false;
+  // Offsets across the segment at both ends of the overlap (linear along the edge).
+  auto across = [&](double t) { return t1 == t2 ? h1 : h1 + (h2 - h1) * (t - t1) / (t2 - t1); };
+  if (std::abs(across(from)) > tolerance || std::abs(across(to)) > tolerance) return false;
+  *out = {from, to};
+  return true;
+}
 
 // The ring counter-clockwise (a copy reversed when it was given clockwise).
 Ring Ccw(const Ring& ring) {
@@ -79,6 +107,44 @@ Ring ConvexHull(Ring points) {
   return hull;
 }
 
+// Orientation of r against the line p->q: +1 left, -1 right, 0 on it.
+int Orientation(const Point& p, const Point& q, const Point& r) {
+  double c = Cross(q.x - p.x, q.y - p.y, r.x - p.x, r.y - p.y);
+  return c > 0 ? 1 : c < 0 ? -1 : 0;
+}
+
+bool OnSegment(const Point& p, const Point& a, const Point& b) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+// Closed segments ab and cd share a point.
+bool SegmentsMeet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  int o1 = Orientation(a, b, c), o2 = Orientation(a, b, d), o3 = Orientation(c, d, a), o4 = Orientation(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // a proper crossing
+  return (o1 == 0 && OnSegment(c, a, b)) || (o2 == 0 && OnSegment(d, a, b)) || (o3 == 0 && OnSegment(a, c, d)) ||
+         (o4 == 0 && OnSegment(b, c, d));
+}
+
+// Edges meet only at the corners they share, and no corner folds back on itself.
+bool IsSimpleRing(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = ring[i];
+    const Point& b = ring[(i + 1) % n];
+    const Point& c = ring[(i + 2) % n];
+    if (a == b) return false;
+    double cross = Cross(b.x - a.x, b.y - a.y, c.x - b.x, c.y - b.y);
+    if (cross == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0) return false;  // a spike
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing corner
+      if (SegmentsMeet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 Box2 BoundingBox(const Ring& ring) {
@@ -94,7 +160,7 @@ Box2 BoundingBox(const Segment& s) {
   return {std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)};
 }
 
-double Distance(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double Distance(const Point& a, const Point& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 
 double PointSegmentDistance(const Point& p, const Segment& s) {
   double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
@@ -139,50 +205,94 @@ std::vector<Interval> IntersectIntervals(const std::vector<Interval>& a, const s
 }
 
 Point PointAt(const Segment& s, double t) {
-  double len = Length(s);
+  double len = Len(s);
   if (len == 0) return s.a;
   double f = t / len;
   return {s.a.x + f * (s.b.x - s.a.x), s.a.y + f * (s.b.y - s.a.y)};
 }
 
-std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance) {
-  double ls = Length(s), le = Length(edge);
-  if (ls <= tolerance || le <= tolerance) return {};
-  double ux = (s.b.x - s.a.x) / ls, uy = (s.b.y - s.a.y) / ls;
-  // Edge endpoints relative to s: along (t) and across (h).
-  double t1 = (edge.a.x - s.a.x) * ux + (edge.a.y - s.a.y) * uy;
-  double t2 = (edge.b.x - s.a.x) * ux + (edge.b.y - s.a.y) * uy;
-  double from = std::max(0.0, std::min(t1, t2)), to = std::min(ls, std::max(t1, t2));
-  if (to - from <= tolerance) return {};
-  double h1 = Cross(ux, uy, edge.a.x - s.a.x, edge.a.y - s.a.y);
-  double h2 = Cross(ux, uy, edge.b.x - s.a.x, edge.b.y - s.a.y);
-  // Offsets across s at both ends of the overlap (linear along the edge).
-  auto across = [&](double t) { return t1 == t2 ? h1 : h1 + (h2 - h1) * (t - t1) / (t2 - t1); };
-  if (std::abs(across(from)) > tolerance || std::abs(across(to)) > tolerance) return {};
-  return {{from, to}};
+bool CollinearOverlapInterval(const Segment& s, const Segment& edge, double tolerance, Interval* out) {
+  return Overlap(Frame(s), edge.a, edge.b, tolerance, out);
 }
+
+std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance) {
+  Interval iv;
+  if (!CollinearOverlapInterval(s, edge, tolerance, &iv)) return {};
+  return {iv};
+}
+
+namespace {
+// Appends (unmerged) the parts of s on the ring's edges.
+void AppendIntervalsOnBoundary(const Segment& s, const Ring& ring, double tolerance, std::vector<Interval>& out) {
+  Box2 sb = BoundingBox(s);
+  Frame frame(s);
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = ring[i];
+    const Point& b = ring[i + 1 == n ? 0 : i + 1];
+    if (std::max(a.x, b.x) < sb.min_x - tolerance || std::min(a.x, b.x) > sb.max_x + tolerance ||
+        std::max(a.y, b.y) < sb.min_y - tolerance || std::min(a.y, b.y) > sb.max_y + tolerance)
+      continue;
+    Interval iv;
+    if (Overlap(frame, a, b, tolerance, &iv)) out.push_back(iv);
+  }
+}
+}  // namespace
 
 std::vector<Interval> IntervalsOnBoundary(const Segment& s, const Ring& ring, double tolerance) {
   std::vector<Interval> all;
-  Box2 sb = BoundingBox(s);
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    Segment edge{ring[i], ring[(i + 1) % ring.size()]};
-    if (!sb.Touches(BoundingBox(edge), tolerance)) continue;
-    for (const auto& iv : CollinearOverlap(s, edge, tolerance)) all.push_back(iv);
-  }
+  AppendIntervalsOnBoundary(s, ring, tolerance, all);
   return MergeIntervals(std::move(all), tolerance);
 }
 
 double LengthOnBoundary(const Segment& s, const Ring& ring, double tolerance) {
-  return TotalLength(IntervalsOnBoundary(s, ring, tolerance));
+  // Without allocating: the ring's edges do not overlap one another, so at most one interval an edge;
+  // sort the few intervals in place and add up their union.
+  Interval buffer[64];
+  std::vector<Interval> spill;
+  int n = 0;
+  Box2 sb = BoundingBox(s);
+  Frame frame(s);
+  const std::size_t count = ring.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point& a = ring[i];
+    const Point& b = ring[i + 1 == count ? 0 : i + 1];
+    if (std::max(a.x, b.x) < sb.min_x - tolerance || std::min(a.x, b.x) > sb.max_x + tolerance ||
+        std::max(a.y, b.y) < sb.min_y - tolerance || std::min(a.y, b.y) > sb.max_y + tolerance)
+      continue;
+    Interval iv;
+    if (!Overlap(frame, a, b, tolerance, &iv)) continue;
+    if (n < 64) buffer[n++] = iv;
+    else spill.push_back(iv);
+  }
+  if (!spill.empty()) {
+    spill.insert(spill.end(), buffer, buffer + n);
+    return TotalLength(MergeIntervals(std::move(spill), tolerance));
+  }
+  std::sort(buffer, buffer + n);
+  double total = 0, from = 0, to = -INFINITY;
+  for (int i = 0; i < n; ++i) {
+    if (buffer[i].first <= to + tolerance) {
+      to = std::max(to, buffer[i].second);
+      continue;
+    }
+    if (to - from > tolerance) total += to - from;
+    from = buffer[i].first, to = buffer[i].second;
+  }
+  if (to - from > tolerance) total += to - from;
+  return total;
 }
 
 std::vector<Segment> SharedBoundaries(const Ring& a, const Ring& b, double tolerance) {
   std::vector<Segment> out;
   if (!BoundingBox(a).Touches(BoundingBox(b), tolerance)) return out;
+  std::vector<Interval> found;
   for (std::size_t i = 0; i < a.size(); ++i) {
     Segment edge{a[i], a[(i + 1) % a.size()]};
-    for (const auto& iv : IntervalsOnBoundary(edge, b, tolerance)) out.push_back({PointAt(edge, iv.first), PointAt(edge, iv.second)});
+    found.clear();
+    AppendIntervalsOnBoundary(edge, b, tolerance, found);
+    if (found.size() > 1) found = MergeIntervals(std::move(found), tolerance);
+    for (const auto& iv : found) out.push_back({PointAt(edge, iv.first), PointAt(edge, iv.second)});
   }
   return out;
 }
@@ -210,20 +320,25 @@ Point Centroid(const Ring& ring) {
 }
 
 bool IsConvex(const Ring& input) {
-  if (input.size() < 3) return false;
-  Ring ring = Ccw(input);
-  double turning = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Point& p = ring[i];
-    const Point& q = ring[(i + 1) % ring.size()];
-    const Point& r = ring[(i + 2) % ring.size()];
+  const std::size_t n = input.size();
+  if (n < 3) return false;
+  const bool ccw = SignedArea(input) >= 0;
+  auto at = [&](std::size_t i) -> const Point& { return ccw ? input[i % n] : input[n - 1 - i % n]; };
+  // Quadrant of a direction: 0 (x > 0, y >= 0), 1 (x <= 0, y > 0), 2 (x < 0, y <= 0), 3 (x >= 0, y < 0).
+  auto quadrant = [](double x, double y) { return x > 0 && y >= 0 ? 0 : x <= 0 && y > 0 ? 1 : x < 0 && y <= 0 ? 2 : 3; };
+  int steps = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = at(i);
+    const Point& q = at(i + 1);
+    const Point& r = at(i + 2);
     double ax = q.x - p.x, ay = q.y - p.y, bx = r.x - q.x, by = r.y - q.y;
     if ((ax == 0 && ay == 0) || (bx == 0 && by == 0)) return false;
-    double c = Cross(ax, ay, bx, by), d = ax * bx + ay * by;
-    if (c < 0 || (c == 0 && d < 0)) return false;  // a reflex corner or a spike
-    turning += std::atan2(c, d);
+    double c = Cross(ax, ay, bx, by);
+    if (c < 0 || (c == 0 && ax * bx + ay * by < 0)) return false;  // a reflex corner or a spike
+    // Each left turn is under 180 degrees, so the quadrant moves on by (difference mod 4) quarter turns.
+    steps += (quadrant(bx, by) - quadrant(ax, ay) + 4) % 4;
   }
-  return std::abs(turning - 2 * std::numbers::pi) < 1e-6;  // a star turns 4 pi
+  return steps == 4;  // the directions go round exactly once (a star goes round twice)
 }
 
 bool IsAxisAlignedBox(const Ring& ring, double tolerance) {
@@ -280,8 +395,10 @@ bool PointInRing(const Point& p, const Ring& ring, double tolerance) {
 
 std::string RingProblem(const Ring& ring) {
   if (ring.size() < 3) return "has fewer than 3 corners";
-  // Fast path: a convex ring without repeated points or spikes, turning once, is valid.
+  // Fast path: a convex ring without repeated points or spikes, turning once, is valid; so is a ring whose
+  // edges meet only at their shared corners. Anything else goes to Boost.Geometry for the verdict and why.
   if (IsConvex(ring)) return Area(ring) > 0 ? "" : "has zero area";
+  if (IsSimpleRing(ring) && Area(ring) > 0) return "";
   BgPolygon polygon = ToBoost(ring);
   std::string message;
   if (!bg::is_valid(polygon, message)) return message;
@@ -295,9 +412,15 @@ double IntersectionArea(const Ring& a, const Ring& b) {
   double h = std::min(ba.max_y, bb.max_y) - std::max(ba.min_y, bb.min_y);
   if (w <= 0 || h <= 0) return 0;
   if (IsAxisAlignedBox(a, 0) && IsAxisAlignedBox(b, 0)) return w * h;
-  if (IsConvex(a) && IsConvex(b)) {
+  // Sutherland-Hodgman needs only the clipping polygon convex; the subject may be any simple polygon
+  // (the result may carry zero-width bridges, which add no area).
+  if (IsConvex(b)) {
     Ring clipped = ClipConvex(Ccw(a), Ccw(b));
-    return clipped.size() >= 3 ? Area(clipped) : 0;
+    return clipped.size() >= 3 ? std::abs(SignedArea(clipped)) : 0;
+  }
+  if (IsConvex(a)) {
+    Ring clipped = ClipConvex(Ccw(b), Ccw(a));
+    return clipped.size() >= 3 ? std::abs(SignedArea(clipped)) : 0;
   }
   BgMultiPolygon out;
   bg::intersection(ToBoost(a), ToBoost(b), out);
@@ -324,24 +447,31 @@ std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
 
 ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double tolerance) {
   ExteriorBoundary result;
-  std::vector<Ring> rooms;
+  std::vector<Ring> reversed;  // copies only of rings given clockwise
+  reversed.reserve(input.size());
+  std::vector<const Ring*> rooms;
   std::vector<Box2> boxes;
-  for (const auto& r : input) rooms.push_back(Ccw(r)), boxes.push_back(BoundingBox(rooms.back()));
+  for (const auto& r : input) {
+    if (SignedArea(r) < 0) reversed.push_back(Ring(r.rbegin(), r.rend())), rooms.push_back(&reversed.back());
+    else rooms.push_back(&r);
+    boxes.push_back(BoundingBox(r));
+  }
 
   // 1. Every edge part not covered by another room's edge.
+  std::vector<Interval> covered;
   for (std::size_t i = 0; i < rooms.size(); ++i) {
-    const Ring& ring = rooms[i];
+    const Ring& ring = *rooms[i];
     for (std::size_t e = 0; e < ring.size(); ++e) {
       Segment edge{ring[e], ring[(e + 1) % ring.size()]};
-      double len = Length(edge);
+      double len = Len(edge);
       if (len <= tolerance) continue;
       Box2 eb = BoundingBox(edge);
-      std::vector<Interval> covered;
+      covered.clear();
       for (std::size_t j = 0; j < rooms.size(); ++j) {
         if (j == i || !boxes[j].Touches(eb, tolerance)) continue;
-        for (const auto& iv : IntervalsOnBoundary(edge, rooms[j], tolerance)) covered.push_back(iv);
+        AppendIntervalsOnBoundary(edge, *rooms[j], tolerance, covered);
       }
-      covered = MergeIntervals(std::move(covered), tolerance);
+      if (covered.size() > 1) covered = MergeIntervals(std::move(covered), tolerance);
       double at = 0;
       auto emit = [&](double from, double to) {
         if (to - from <= tolerance) return;
@@ -376,7 +506,8 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
       double best_angle = 0;
       for (std::size_t k = 0; k < n; ++k) {
         const Segment& c = result.pieces[k];
-        if (Distance(c.a, s.b) > match) continue;
+        double gx = c.a.x - s.b.x, gy = c.a.y - s.b.y;
+        if (gx * gx + gy * gy > match * match) continue;
         double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
         double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
         if (ccw <= 0) ccw += 2 * std::numbers::pi;
@@ -395,11 +526,16 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
 }
 
 double RoomWidth(const Ring& input, double tolerance) {
-  Ring ring = Ccw(input);
-  const std::size_t n = ring.size();
+  const std::size_t n = input.size();
   if (n < 3) return 0;
-  // Minimum caliper width of the convex hull.
-  Ring hull = ConvexHull(ring);
+  Ring reversed;
+  if (SignedArea(input) < 0) reversed.assign(input.rbegin(), input.rend());
+  const Ring& ring = reversed.empty() ? input : reversed;
+  const bool convex = IsConvex(ring);
+  // Minimum caliper width of the convex hull (the ring itself when convex).
+  Ring computed_hull;
+  if (!convex) computed_hull = ConvexHull(ring);
+  const Ring& hull = convex ? ring : computed_hull;
   double width = INFINITY;
   for (std::size_t i = 0; i < hull.size(); ++i) {
     const Point& a = hull[i];
@@ -411,7 +547,7 @@ double RoomWidth(const Ring& input, double tolerance) {
     width = std::min(width, far);
   }
   if (hull.size() < 3) return 0;
-  if (IsConvex(ring)) return width;
+  if (convex) return width;
   // Thin arms: facing anti-parallel edges with overlapping projections.
   const double cos_limit = std::cos(std::numbers::pi / 180);
   for (std::size_t i = 0; i < n; ++i) {

@@ -40,6 +40,8 @@ std::vector<Interval> IntersectIntervals(const std::vector<Interval>& a, const s
 // The part of `s` that lies on `edge` (both endpoints of the overlap within `tolerance` of the other's
 // line), as an interval of s's arc length; empty when they are not collinear or overlap by <= tolerance.
 std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance);
+// The same without allocating: true and the interval in *out when they overlap.
+bool CollinearOverlapInterval(const Segment& s, const Segment& edge, double tolerance, Interval* out);
 // The parts of `s` that lie on the boundary of `ring`, merged, as intervals of s's arc length.
 std::vector<Interval> IntervalsOnBoundary(const Segment& s, const Ring& ring, double tolerance);
 // Length of `s` lying on the boundary of `ring`.

@@ -78,7 +78,6 @@ bool IsPrivate(Category c) {
 }
 
 struct RoomInfo {
-  std::string name;
   Box2 box;
   double area = 0;
   Point centroid;
@@ -126,7 +125,12 @@ class Validator {
   void Add(int rule, std::vector<std::string> elements, std::string message, double figure = 0) {
     report_.violations.push_back({rule, std::move(elements), std::move(message), figure});
   }
-  const std::string& Name(int room) const { return rooms_[room].name; }
+  // Names are built only for messages: most layouts are valid and need none.
+  const std::string& Name(int room) const {
+    if (names_.empty()) names_.resize(layout_.rooms.size());
+    if (names_[room].empty()) names_[room] = layout_.rooms[room].name();
+    return names_[room];
+  }
   std::string Names(const std::vector<int>& rooms, const char* joint = ", ") const {
     std::string out;
     for (std::size_t i = 0; i < rooms.size(); ++i) out += (i ? joint : "") + Name(rooms[i]);
@@ -145,12 +149,38 @@ class Validator {
     for (std::size_t i = 0; i < layout_.rooms.size(); ++i) {
       const Room& room = layout_.rooms[i];
       RoomInfo& info = rooms_[i];
-      info.name = room.name();
       info.box = BoundingBox(room.polygon);
       info.area = Area(room.polygon);
       info.centroid = Centroid(room.polygon);
       if (room.level >= 0 && room.level < levels_count_) levels_[room.level].rooms.push_back(static_cast<int>(i));
     }
+    int offset = 0;
+    for (ElementKind kind : kAllElementKinds) {
+      offsets_[static_cast<int>(kind)] = offset;
+      offset += static_cast<int>(layout_.elements(kind).size());
+    }
+    along_.resize(static_cast<std::size_t>(offset) * std::max(levels_count_, 1));
+    along_done_.assign(along_.size(), false);
+  }
+
+  // The rooms of `level` along an element: RoomsAlongSegment's rule (topology.h), on the cached boxes and
+  // computed once however many rules ask.
+  const SegmentRooms& Along(const Element& e, int level) {
+    const auto& group = layout_.elements(e.kind);
+    std::size_t index = static_cast<std::size_t>(offsets_[static_cast<int>(e.kind)] + (&e - group.data())) * levels_count_ + level;
+    if (along_done_[index]) return along_[index];
+    along_done_[index] = true;
+    SegmentRooms& out = along_[index];
+    double length = Length(e.shape);
+    Box2 box = BoundingBox(e.shape);
+    for (int r : levels_[level].rooms) {
+      if (!rooms_[r].box.Touches(box, tol_)) continue;
+      double on = LengthOnBoundary(e.shape, layout_.rooms[r].polygon, tol_);
+      if (on <= tol_) continue;
+      out.touching.push_back(r);
+      if (on >= length - tol_) out.holding.push_back(r);
+    }
+    return out;
   }
 
   // ---- rule 1 ----
@@ -359,7 +389,7 @@ class Validator {
   }
 
   void CheckOnTwoRooms(const Element& e, int l) {
-    SegmentRooms rooms = RoomsAlongSegment(layout_, l, e.shape, tol_);
+    const SegmentRooms& rooms = Along(e, l);
     if (rooms.holding.size() == 2) return;
     std::string head = KindWord(e.kind) + " " + e.name;
     std::string where = LevelSuffix(e, l);
@@ -399,7 +429,7 @@ class Validator {
   }
 
   void CheckOnOneRoom(const Element& e, int l) {
-    SegmentRooms rooms = RoomsAlongSegment(layout_, l, e.shape, tol_);
+    const SegmentRooms& rooms = Along(e, l);
     if (rooms.holding.size() == 1 && rooms.touching.size() == 1) return;
     std::string head = KindWord(e.kind) + " " + e.name;
     std::string where = LevelSuffix(e, l);
@@ -597,8 +627,32 @@ class Validator {
   // ---- rules 8, 9, 10 ----
   void CheckTopology() {
     const std::size_t n = layout_.rooms.size();
-    std::vector<Connection> connections = RoomConnections(layout_, tol_);
-    std::vector<int> entrance_rooms = EntranceRooms(layout_, tol_);
+    // The same connections and entrance rooms as RoomConnections() and EntranceRooms() in topology.h,
+    // from the classifications already made for rule 3.
+    std::vector<Connection> connections;
+    for (ElementKind kind : {ElementKind::kDoor, ElementKind::kOpen})
+      for (const Element& e : layout_.elements(kind))
+        for (int l = 0; l < levels_count_; ++l) {
+          if (!e.OnLevel(l) || Length(e.shape) <= tol_) continue;
+          const SegmentRooms& rooms = Along(e, l);
+          if (rooms.holding.size() == 2)
+            connections.push_back({rooms.holding[0], rooms.holding[1], kind == ElementKind::kDoor ? Via::kDoor : Via::kOpen, e.name});
+        }
+    for (int l = 0; l + 1 < levels_count_; ++l)
+      for (int lower : levels_[l].rooms) {
+        if (layout_.rooms[lower].category != Category::kUtilityRoom) continue;
+        for (int upper : levels_[l + 1].rooms)
+          if (layout_.rooms[upper].category == Category::kUtilityRoom &&
+              SameRing(layout_.rooms[lower].polygon, layout_.rooms[upper].polygon, tol_))
+            connections.push_back({lower, upper, Via::kStair, "stair"});
+      }
+    std::vector<int> entrance_rooms;
+    if (levels_count_ > 0)
+      for (const Element& e : layout_.entrances) {
+        if (Length(e.shape) <= tol_) continue;
+        for (int r : Along(e, 0).touching)
+          if (std::find(entrance_rooms.begin(), entrance_rooms.end(), r) == entrance_rooms.end()) entrance_rooms.push_back(r);
+      }
 
     // Rule 8.
     if (layout_.entrances.empty()) {
@@ -629,7 +683,8 @@ class Validator {
     for (const Element& w : layout_.windows)
       for (int l = 0; l < levels_count_; ++l) {
         if (!w.OnLevel(l)) continue;
-        for (int r : RoomsAlongSegment(layout_, l, w.shape, tol_).holding) {
+        if (Length(w.shape) <= tol_) continue;
+        for (int r : Along(w, l).holding) {
           has_window[r] = true;
           if (w.panoramic) has_panoramic[r] = true;
         }
@@ -690,6 +745,10 @@ class Validator {
   int levels_count_ = 0;
   std::vector<RoomInfo> rooms_;
   std::vector<LevelInfo> levels_;
+  int offsets_[5] = {0, 0, 0, 0, 0};        // first index of each element kind in along_
+  std::vector<SegmentRooms> along_;          // per element and level
+  std::vector<bool> along_done_;
+  mutable std::vector<std::string> names_;
   ValidationReport report_;
 };
 
