@@ -308,3 +308,54 @@ TEST_CASE("The output folder: never overwritten without --force, stale files rem
   CHECK(invalid.error().find("sum to 1") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "bad"));
 }
+
+TEST_CASE("The project's layout fixtures: valid ones exported as they are, broken ones counted", "[finetune][export]") {
+  ScratchDir dir("fixtures");
+  std::vector<fs::path> files;
+  for (const auto& folder : {fs::path(VILLA_FIXTURE_DIR) / "layouts", fs::path(VILLA_SOURCE_DIR) / "examples"}) {
+    for (const auto& item : fs::directory_iterator(folder))
+      if (item.path().extension() == ".json") files.push_back(item.path());
+  }
+  std::sort(files.begin(), files.end());
+  REQUIRE(files.size() >= 10);
+  std::string jsonl;
+  std::size_t valid = 0, invalid = 0;
+  std::map<std::string, std::string> answers;  // id -> the canonical text of the layout
+  std::map<int, std::size_t> first_rules;
+  for (const auto& file : files) {
+    auto layout = LoadLayout(file);
+    REQUIRE(layout.ok());
+    const std::string id = file.parent_path().filename().string() + "/" + file.stem().string();
+    ValidationReport report = ValidateLayout(*layout);
+    if (report.valid()) {
+      ++valid;
+      answers[id] = LayoutToString(*layout, -1);
+    } else {
+      ++invalid;
+      ++first_rules[report.violations.front().rule];
+    }
+    jsonl += Record(id, "auto", *layout, "a building", "").dump() + "\n";
+  }
+  REQUIRE(valid >= 3);
+  REQUIRE(invalid >= 10);
+  Spit(dir / "annotated.jsonl", jsonl);
+  ExportOptions options;
+  options.split = {1.0, 0.0, 0.0};
+  ExportSummary s = Export(dir / "annotated.jsonl", dir / "out", options);
+  CHECK(s.layouts == valid);
+  CHECK(s.invalid_layout == invalid);
+  CHECK(s.invalid_by_rule == first_rules);
+  CHECK(s.layouts_by_floors.count(3) == 1);  // the three-floor villa made it
+  // Each answer is exactly the canonical text of its source layout.
+  auto sources = Lines(dir / "out" / "sources.jsonl");
+  auto lines = Lines(dir / "out" / "train.jsonl");
+  REQUIRE(sources.size() == lines.size());
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string id = Json::parse(sources[i])["id"];
+    auto texts = ParseSampleLine(Json::parse(lines[i]));
+    REQUIRE(texts.ok());
+    INFO(id);
+    CHECK(texts->assistant == answers.at(id));
+    CHECK(texts->user == "a building");
+  }
+}
