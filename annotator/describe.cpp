@@ -44,7 +44,7 @@ std::string Capitalise(std::string s) {
 std::string Article(const std::string& noun) {
   if (noun.empty()) return noun;
   // By sound: "an L-shaped", "a U-shaped", "a one-storey", "an 8-storey", "an office".
-  if (noun.rfind("one", 0) == 0 || noun.rfind("U-", 0) == 0) return "a " + noun;
+  if (noun.rfind("one", 0) == 0 || noun.rfind("U-", 0) == 0 || noun.rfind("utility", 0) == 0) return "a " + noun;
   for (const char* an : {"L-", "H-", "8", "11", "18"})
     if (noun.rfind(an, 0) == 0) return "an " + noun;
   char c = noun[0];
@@ -574,7 +574,10 @@ Drafts Draft(const Layout& layout, const std::string& shape, std::uint64_t seed)
       case DescriptionStyle::kBrief: {
         parts.push_back(Capitalise(FloorsAdjective(floors, v, rng)) + " " + sh + " " + building);
         std::string rooms;
-        for (const std::string& p : per_level) rooms += (rooms.empty() ? "" : "; ") + p;
+        for (std::string p : per_level) {
+          if (!rooms.empty() && !p.empty() && p[0] >= 'A' && p[0] <= 'Z') p[0] = static_cast<char>(p[0] - 'A' + 'a');
+          rooms += (rooms.empty() ? "" : "; ") + p;
+        }
         parts.push_back(rooms);
         for (const std::string& s : link_sentences) parts.push_back(s);
         if (!furniture_text.empty()) parts.push_back("Furniture: " + furniture_text);

@@ -1,6 +1,7 @@
 #include "annotator/journal.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -83,8 +84,24 @@ JournalWriter::~JournalWriter() {
 
 Status JournalWriter::Open(const std::filesystem::path& path) {
   path_ = path;
+  std::error_code ec;
+  bool created = !std::filesystem::exists(path, ec);
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd_ < 0) return Error{path.string() + ": cannot open for appending: " + std::strerror(errno)};
+  // One writer at a time: two sessions appending to one journal would each replay a different history.
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    return Error{path.string() + ": in use by another `villa annotate` (one session a dataset at a time)"};
+  }
+  if (created) {
+    // Make the new file's directory entry durable too.
+    int dir = ::open(path.parent_path().empty() ? "." : path.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir >= 0) {
+      ::fsync(dir);
+      ::close(dir);
+    }
+  }
   return {};
 }
 

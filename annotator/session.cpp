@@ -132,6 +132,11 @@ Result<std::unique_ptr<Session>> Session::Open(const std::filesystem::path& dir,
   std::vector<bool> touched(session->states_.size(), false);
 
   std::filesystem::path path = JournalPath(dir);
+  if (writable) {
+    // Lock before reading, so a torn-tail repair never races another session's append.
+    Status status = session->journal_.Open(path);
+    if (!status) return Error{status.error()};
+  }
   auto journal = ReadJournal(path, writable);
   if (!journal) return Error{journal.error()};
   session->warnings_ = journal->warnings;
@@ -173,10 +178,6 @@ Result<std::unique_ptr<Session>> Session::Open(const std::filesystem::path& dir,
   }
   for (std::size_t i = 0; i < touched.size(); ++i)
     if (!touched[i]) session->states_[i] = session->InitialState(static_cast<int>(i));
-  if (writable) {
-    Status status = session->journal_.Open(path);
-    if (!status) return Error{status.error()};
-  }
   return session;
 }
 

@@ -243,3 +243,13 @@ TEST_CASE("--auto leaves what a person decided alone", "[auto]") {
   CHECK(s->state(0).reason == "rooms too small or too narrow to use");
   CHECK(s->state(1).status == AnnotationStatus::kVerified);
 }
+
+TEST_CASE("one writing session a dataset at a time", "[journal]") {
+  test::TempDataset ds;
+  auto first = OpenOrFail(ds.dir());
+  auto second = Session::Open(ds.dir());
+  REQUIRE(!second.ok());
+  CHECK(second.error().find("in use by another `villa annotate`") != std::string::npos);
+  // Reading (--status, --export) still works.
+  CHECK(Session::Open(ds.dir(), false).ok());
+}
