@@ -947,6 +947,7 @@ class PlanPainter {
   LabelFit FitLabel(const LevelGeometry& g, const Ring& ring, const std::string& name, const std::string& area) const {
     // Door swings to keep clear of: the quarter discs, as polygons.
     std::vector<Ring> swings;
+    std::vector<std::pair<Point, Point>> swing_boxes;
     for (const auto* list : {&g.doors, &g.entrances}) {
       for (const PlacedElement& e : *list) {
         const DoorSwing& w = e.swing;
@@ -960,13 +961,19 @@ class PlanPainter {
           const double a = a0 + (a1 - a0) * i / 8.0;
           sector.push_back({w.hinge.x + radius * std::cos(a), w.hinge.y + radius * std::sin(a)});
         }
+        Point lo = sector[0], hi = sector[0];
+        for (const Point& p : sector) {
+          lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+          hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+        swing_boxes.push_back({lo, hi});
         swings.push_back(std::move(sector));
       }
     }
     const Point pole = RoomLabelPoint(ring);
     LabelFit fit{pole, 0.8, false, false, true};
     if (ring.size() < 3) return fit;
-    std::vector<Point> candidates{pole};
+    std::vector<std::pair<double, Point>> candidates{{plan::SignedDistanceToRing(pole, ring), pole}};
     double min_x = ring[0].x, max_x = ring[0].x, min_y = ring[0].y, max_y = ring[0].y;
     for (const Point& p : ring) {
       min_x = std::min(min_x, p.x);
@@ -983,19 +990,23 @@ class PlanPainter {
       }
     }
     std::stable_sort(grid.begin(), grid.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (size_t i = 0; i < grid.size() && i < 400; ++i) candidates.push_back(grid[i].second);
+    for (size_t i = 0; i < grid.size() && i < 400; ++i) candidates.push_back(grid[i]);
 
     const double margin = (kExteriorWall / 2.0) + 5.0 / s();  // m kept clear around the text
     bool avoid_swings = true;
-    auto fits = [&](const LabelFit& trial) {
+    // Half sizes of the label block (plus air) in m.
+    auto half_size = [&](const LabelFit& trial) {
       const auto [w, h] = LabelSize(name, area, trial);
-      const double half_x = (trial.rotated ? h : w) / 2.0 / s() + margin;
-      const double half_y = (trial.rotated ? w : h) / 2.0 / s() + margin;
+      return std::pair<double, double>{(trial.rotated ? h : w) / 2.0 / s() + margin, (trial.rotated ? w : h) / 2.0 / s() + margin};
+    };
+    auto fits = [&](const LabelFit& trial, double half_x, double half_y) {
       const Point lo{trial.centre.x - half_x, trial.centre.y - half_y};
       const Point hi{trial.centre.x + half_x, trial.centre.y + half_y};
       if (avoid_swings) {
-        for (const Ring& sector : swings) {
-          if (plan::RectOverlapsRing(lo, hi, sector)) return false;
+        for (size_t i = 0; i < swings.size(); ++i) {
+          const auto& [slo, shi] = swing_boxes[i];
+          if (lo.x >= shi.x || slo.x >= hi.x || lo.y >= shi.y || slo.y >= hi.y) continue;
+          if (plan::RectOverlapsRing(lo, hi, swings[i])) return false;
         }
       }
       return plan::RectInsideRing(lo, hi, ring);
@@ -1011,9 +1022,13 @@ class PlanPainter {
         for (bool avoid : {true, false}) {
           avoid_swings = avoid;
           for (const auto& [rotated, scale] : sizes) {
-            for (const Point& c : candidates) {
-              LabelFit trial{c, scale, rotated, with_area, false};
-              if (fits(trial)) return trial;
+            const auto [half_x, half_y] = half_size({pole, scale, rotated, with_area, false});
+            for (const auto& [clearance, c] : candidates) {
+              // Candidates come in falling clearance; once a boundary point is nearer than the block's
+              // half height it lies inside the block, here and at every later candidate.
+              if (clearance < std::min(half_x, half_y)) break;
+              const LabelFit trial{c, scale, rotated, with_area, false};
+              if (fits(trial, half_x, half_y)) return trial;
             }
           }
         }
@@ -1219,6 +1234,7 @@ std::string PlanRenderOptions::Check() const {
   if (!(panel_gap_px >= 0.0 && panel_gap_px <= 1000.0)) return bad("panel_gap_px", panel_gap_px, "must be in 0..1000");
   if (!(font_size_px >= 6.0 && font_size_px <= 48.0)) return bad("font_size_px", font_size_px, "must be in 6..48");
   if (max_side_px < 64 || max_side_px > 32767) return bad("max_side_px", max_side_px, "must be in 64..32767");
+  if (png_compression < 1 || png_compression > 9) return bad("png_compression", png_compression, "must be in 1..9");
   if (font_family.empty()) return "font_family is empty";
   return {};
 }
@@ -1248,7 +1264,7 @@ Result<std::string> RenderPlanPng(const Layout& layout, const PlanRenderOptions&
   Result<Scene> scene = BuildScene(layout, options);
   if (!scene.ok()) return Error{scene.error()};
   std::string error;
-  std::optional<std::string> png = plan::SceneToPng(*scene, &error);
+  std::optional<std::string> png = plan::SceneToPng(*scene, options.png_compression, &error);
   if (!png) return Error{error};
   return std::move(*png);
 }

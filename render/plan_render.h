@@ -42,6 +42,9 @@ struct PlanRenderOptions {
   // Size of the room names, px; areas, headings and the legend scale with it. Labels shrink (down to
   // about half) to fit small rooms. Range 6..48.
   double font_size_px = 13.0;
+  // zlib level of PNG output, 1..9: 3 encodes about 2.5 times faster than 6 for files about a quarter
+  // larger (a three-floor plan: ~20 ms, ~100 kB).
+  int png_compression = 3;
   // Neither side of the picture may exceed this (cairo's limit is 32767); a layout so large that the
   // chosen scale would exceed it is drawn at a smaller scale instead.
   int max_side_px = 16000;

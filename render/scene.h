@@ -92,8 +92,8 @@ class TextMeasure {
   Impl* impl_;
 };
 
-// The PNG file bytes of the scene (cairo).
-std::optional<std::string> SceneToPng(const Scene& scene, std::string* error);
+// The PNG file bytes of the scene (cairo, libpng) at zlib `compression_level` 1..9.
+std::optional<std::string> SceneToPng(const Scene& scene, int compression_level, std::string* error);
 // The SVG document of the scene.
 std::string SceneToSvg(const Scene& scene);
 
