@@ -466,7 +466,8 @@ bool StrictlyInside(const IRing& ring, DPoint p) {
   bool inside = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const DPoint a = D(ring[i]), b = D(ring[(i + 1) % ring.size()]);
-    if (Dist(ClosestOnSegment(p, a, b), p) < 1e-9) return false;
+    const DPoint q = ClosestOnSegment(p, a, b);
+    if ((q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) < 1e-18) return false;
     if ((a.y > p.y) == (b.y > p.y)) continue;
     const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
     if (x > p.x) inside = !inside;
@@ -475,14 +476,25 @@ bool StrictlyInside(const IRing& ring, DPoint p) {
 }
 }  // namespace
 
-double MinWidth(const IRing& ring) {
+namespace {
+// Smallest interior distance between non-adjacent edges below `limit` (squared), or `limit` squared.
+// Pairs whose bounding boxes are `limit` apart are skipped.
+double MinWidthSquaredBelow(const IRing& ring, double limit) {
   const std::size_t n = ring.size();
-  double best = std::numeric_limits<double>::infinity();
+  double best = limit * limit;
   if (n < 3) return 0.0;
   if (n == 3) {
-    for (std::size_t i = 0; i < 3; ++i)
-      best = std::min(best, Dist(D(ring[i]), ClosestOnSegment(D(ring[i]), D(ring[(i + 1) % 3]), D(ring[(i + 2) % 3]))));
+    for (std::size_t i = 0; i < 3; ++i) {
+      const DPoint p = D(ring[i]);
+      const DPoint q = ClosestOnSegment(p, D(ring[(i + 1) % 3]), D(ring[(i + 2) % 3]));
+      best = std::min(best, (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y));
+    }
     return best;
+  }
+  if (n == 4 && ring[0].x != ring[1].x && ring[0].y == ring[1].y && ring[1].x == ring[2].x && ring[2].y == ring[3].y &&
+      ring[3].x == ring[0].x) {
+    const double side = static_cast<double>(std::min(std::llabs(ring[1].x - ring[0].x), std::llabs(ring[2].y - ring[1].y)));
+    return std::min(best, side * side);
   }
   // Non-adjacent edges whose closest approach runs through the interior (a thin arm or sliver; gaps
   // across a notch or a bite outside the ring do not count).
@@ -491,20 +503,30 @@ double MinWidth(const IRing& ring) {
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // adjacent through the closing vertex
       const IPoint c = ring[j], d = ring[(j + 1) % n];
+      const double gap_x = static_cast<double>(std::max(std::min(a.x, b.x) - std::max(c.x, d.x), std::min(c.x, d.x) - std::max(a.x, b.x)));
+      const double gap_y = static_cast<double>(std::max(std::min(a.y, b.y) - std::max(c.y, d.y), std::min(c.y, d.y) - std::max(a.y, b.y)));
+      if ((gap_x > 0 && gap_x * gap_x >= best) || (gap_y > 0 && gap_y * gap_y >= best)) continue;
       if (SegmentsTouch(a, b, c, d)) return 0.0;
       const DPoint pairs[4][2] = {{D(a), ClosestOnSegment(D(a), D(c), D(d))},
                                   {D(b), ClosestOnSegment(D(b), D(c), D(d))},
                                   {D(c), ClosestOnSegment(D(c), D(a), D(b))},
                                   {D(d), ClosestOnSegment(D(d), D(a), D(b))}};
       for (const auto& pq : pairs) {
-        const double dist = Dist(pq[0], pq[1]);
-        if (dist >= best) continue;
-        if (StrictlyInside(ring, {(pq[0].x + pq[1].x) / 2, (pq[0].y + pq[1].y) / 2})) best = dist;
+        const double dist2 = (pq[0].x - pq[1].x) * (pq[0].x - pq[1].x) + (pq[0].y - pq[1].y) * (pq[0].y - pq[1].y);
+        if (dist2 >= best) continue;
+        if (StrictlyInside(ring, {(pq[0].x + pq[1].x) / 2, (pq[0].y + pq[1].y) / 2})) best = dist2;
       }
     }
   }
   return best;
 }
+}  // namespace
+
+double MinWidth(const IRing& ring) {
+  return std::sqrt(MinWidthSquaredBelow(ring, std::numeric_limits<double>::infinity()));
+}
+
+bool NarrowerThan(const IRing& ring, double width) { return MinWidthSquaredBelow(ring, width) < width * width; }
 
 void Centroid(const IRing& ring, double* x, double* y) {
   double a = 0.0, cx = 0.0, cy = 0.0;

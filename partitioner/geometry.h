@@ -68,6 +68,8 @@ std::vector<ISegment> SharedSegments(const IRing& a, const IRing& b);
 // Smallest distance between two non-adjacent edges (in units; a ring with fewer than 4 edges: the
 // smallest altitude). A room narrower than this is a corridor sliver.
 double MinWidth(const IRing& ring);
+// MinWidth(ring) < width, faster (stops at the first narrow place, skips far edge pairs).
+bool NarrowerThan(const IRing& ring, double width);
 // Centroid (units, not rounded).
 void Centroid(const IRing& ring, double* x, double* y);
 

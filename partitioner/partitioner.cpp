@@ -524,26 +524,20 @@ struct LabelSearch {
   }
 };
 
-double LabelScore(const Floor& f, std::size_t r, Category c, bool ground, double max_area) {
-  const double a = f.area_m2[r];
-  switch (c) {
-    case Category::kLivingRoom: return 4.0 * a / max_area + (ground && f.entrance_ok[r] ? 1.0 : 0.0);
-    case Category::kBalcony: {
-      double perimeter = 0.0;
-      for (std::size_t i = 0; i < f.rooms[r].size(); ++i) {
-        const IPoint p = f.rooms[r][i], q = f.rooms[r][(i + 1) % f.rooms[r].size()];
-        perimeter += std::hypot(double(q.x - p.x), double(q.y - p.y));
-      }
-      return 3.0 * f.exterior_m[r] / (perimeter * 1.0) / 1.0 - std::abs(a - PreferredArea(c)) / 10.0;
-    }
-    default: return -std::abs(a - PreferredArea(c)) / 8.0;
+// Exterior share of a room's perimeter (balconies sit at the edge).
+double ExteriorShare(const Floor& f, std::size_t r, double grid) {
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < f.rooms[r].size(); ++i) {
+    const IPoint p = f.rooms[r][i], q = f.rooms[r][(i + 1) % f.rooms[r].size()];
+    perimeter += std::sqrt(double(q.x - p.x) * double(q.x - p.x) + double(q.y - p.y) * double(q.y - p.y));
   }
+  return perimeter > 0 ? f.exterior_m[r] / (perimeter * grid) : 0.0;
 }
 
 // Labels the floor's non-staircase rooms with `plan` (same count). False when no assignment meets the
 // rules (the caller retries or relaxes the connection requirements).
 bool LabelFloor(Floor& f, const std::vector<Category>& plan, const std::vector<ConnectionRequirement>& links,
-                Rng& rng) {
+                const Sizes& s, Rng& rng) {
   const std::size_t n = f.rooms.size();
   LabelSearch search{f, links, f.level == 0, {}, {}, std::vector<Category>(n, Category::kRoom), std::vector<char>(n, 0)};
   if (f.stair >= 0) {
@@ -553,11 +547,32 @@ bool LabelFloor(Floor& f, const std::vector<Category>& plan, const std::vector<C
   search.slots = plan;
   std::stable_sort(search.slots.begin(), search.slots.end(),
                    [](Category a, Category b) { return LabelOrder(a) < LabelOrder(b); });
-  double max_area = 1.0;
-  for (double a : f.area_m2) max_area = std::max(max_area, a);
-  for (Category c : search.slots) {
+  // Size prior by rank: the rooms sorted by area are matched to the categories sorted by their usual
+  // size (the living room largest, bathrooms smallest); the search tries the closest ranks first.
+  std::vector<std::size_t> by_area;
+  for (std::size_t r = 0; r < n; ++r)
+    if (static_cast<int>(r) != f.stair) by_area.push_back(r);
+  std::stable_sort(by_area.begin(), by_area.end(), [&](std::size_t a, std::size_t b) { return f.area_m2[a] > f.area_m2[b]; });
+  std::vector<double> room_rank(n, 0.0);
+  for (std::size_t k = 0; k < by_area.size(); ++k) room_rank[by_area[k]] = static_cast<double>(k);
+  std::vector<std::size_t> by_size(search.slots.size());
+  for (std::size_t k = 0; k < by_size.size(); ++k) by_size[k] = k;
+  auto size_key = [&](std::size_t k) {
+    const Category c = search.slots[k];
+    return c == Category::kLivingRoom ? 1e9 : PreferredArea(c);
+  };
+  std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t a, std::size_t b) { return size_key(a) > size_key(b); });
+  std::vector<double> ideal_rank(search.slots.size(), 0.0);
+  for (std::size_t k = 0; k < by_size.size(); ++k) ideal_rank[by_size[k]] = static_cast<double>(k);
+  for (std::size_t k = 0; k < search.slots.size(); ++k) {
+    const Category c = search.slots[k];
     std::vector<double> row(n);
-    for (std::size_t r = 0; r < n; ++r) row[r] = LabelScore(f, r, c, f.level == 0, max_area) + rng.Unit() * 0.9;
+    for (std::size_t r = 0; r < n; ++r) {
+      double score = -std::abs(room_rank[r] - ideal_rank[k]) + rng.Unit() * 0.9;
+      if (c == Category::kBalcony) score += 3.0 * ExteriorShare(f, r, s.scale.grid);
+      if (c == Category::kLivingRoom && f.level == 0 && f.entrance_ok[r]) score += 0.5;
+      row[r] = score;
+    }
     search.score.push_back(std::move(row));
   }
   if (!search.Search(0)) return false;
@@ -692,7 +707,8 @@ bool ConnectFloor(const Floor& f, const std::vector<ConnectionRequirement>& requ
       for (std::size_t v = 0; v < n; ++v) {
         if (reached[v] || !f.door_ok[u][v]) continue;
         double score = rng.Unit();
-        if (IsPublic(cat[u])) score += 2.0;
+        // Halls first: living and dining rooms and the staircase hall, then the kitchen.
+        if (IsPublic(cat[u])) score += cat[u] == Category::kKitchen ? 1.0 : 2.0;
         if (cat[v] == Category::kBathroom && (cat[u] == Category::kBedroom || cat[u] == Category::kChildrenRoom))
           score += 1.0;
         if (cat[v] == Category::kBalcony && !IsPublic(cat[u])) score += 1.0;
@@ -879,7 +895,15 @@ struct Plan {
   ShapeClass shape = ShapeClass::kRectangle;
   std::vector<FloorPlanSpec> specs;  // per floor, non-staircase rooms
   std::vector<std::vector<ConnectionRequirement>> links;  // per floor
-  std::vector<std::string> unmet;  // requirements no plan can meet (over capacity, missing floors)
+  // Why a requirement cannot be met by any layout of this plan (empty when it can), by index into
+  // options.rooms / options.connections: over a floor's capacity, no such floor, no such room.
+  std::vector<std::string> room_hints, link_hints;
+  int impossible() const {
+    int n = 0;
+    for (const auto& h : room_hints) n += !h.empty();
+    for (const auto& h : link_hints) n += !h.empty();
+    return n;
+  }
 };
 
 Plan MakePlan(const PartitionOptions& o, Rng& rng) {
@@ -889,96 +913,123 @@ Plan MakePlan(const PartitionOptions& o, Rng& rng) {
   const int F = plan.floors;
   const bool multi = F > 1;
   plan.specs.assign(static_cast<std::size_t>(F), {});
+  plan.links.assign(static_cast<std::size_t>(F), {});
+  plan.room_hints.assign(o.rooms.size(), "");
+  plan.link_hints.assign(o.connections.size(), "");
   const int cap = o.max_rooms_per_floor - (multi ? 1 : 0);
-  auto name_of = [](Category c) { return std::string(CategoryName(c)); };
+  auto spec_of = [&](int l) -> FloorPlanSpec& { return plan.specs[static_cast<std::size_t>(l)]; };
+  auto has = [&](int l, Category c) {
+    const auto& m = spec_of(l).must;
+    return c == Category::kUtilityRoom ? (multi || std::count(m.begin(), m.end(), c) > 0)
+                                       : std::count(m.begin(), m.end(), c) > 0;
+  };
   auto place = [&](Category c, int level) {
-    if (level >= F) return false;
-    auto& spec = plan.specs[static_cast<std::size_t>(level)];
-    if (spec.size() >= cap) return false;
-    spec.must.push_back(c);
+    if (level < 0 || level >= F || spec_of(level).size() >= cap) return false;
+    spec_of(level).must.push_back(c);
     return true;
   };
-  // Level-specific requirements, then whole-building ones by preference.
-  for (const RoomRequirement& r : o.rooms) {
+  // 1. Requirements for one floor.
+  for (std::size_t i = 0; i < o.rooms.size(); ++i) {
+    const RoomRequirement& r = o.rooms[i];
     if (r.level == kAnyLevel) continue;
-    int count = r.count;
-    if (multi && r.category == Category::kUtilityRoom) count -= 1;  // the staircase room is there
-    int made = 0;
-    for (int k = 0; k < count; ++k) made += place(r.category, r.level) ? 1 : 0;
-    if (made < count)
-      plan.unmet.push_back(std::to_string(r.count) + " " + name_of(r.category) + " on level " + std::to_string(r.level) +
-                           ": room for " + std::to_string(made + (multi && r.category == Category::kUtilityRoom)));
+    if (r.level >= F) {
+      plan.room_hints[i] = "the building has " + std::to_string(F) + (F == 1 ? " floor" : " floors");
+      continue;
+    }
+    const int stairs = multi && r.category == Category::kUtilityRoom ? 1 : 0;  // the staircase room is there
+    int made = stairs;
+    for (int k = stairs; k < r.count; ++k) made += place(r.category, r.level) ? 1 : 0;
+    if (made < r.count) plan.room_hints[i] = "room for " + std::to_string(made) + " on that floor";
+    if (r.count < stairs) plan.room_hints[i] = "every floor of a multi-story building has its staircase room";
   }
-  for (const RoomRequirement& r : o.rooms) {
+  // 2. What whole-building requirements still ask for.
+  std::map<Category, int> remaining;
+  std::map<Category, std::size_t> remaining_index;
+  for (std::size_t i = 0; i < o.rooms.size(); ++i) {
+    const RoomRequirement& r = o.rooms[i];
     if (r.level != kAnyLevel) continue;
     int count = r.count;
-    if (multi && r.category == Category::kUtilityRoom) count -= F;
-    int made = 0;
-    for (int k = 0; k < count; ++k) {
-      bool ok = false;
-      if (r.category == Category::kBathroom) {
-        // Spread bathrooms: the floor with the fewest first.
-        std::vector<int> levels;
-        for (int l = 0; l < F; ++l) levels.push_back(l);
-        std::stable_sort(levels.begin(), levels.end(), [&](int a, int b) {
-          auto cnt = [&](int l) {
-            const auto& m = plan.specs[static_cast<std::size_t>(l)].must;
-            return std::count(m.begin(), m.end(), Category::kBathroom);
-          };
-          return cnt(a) < cnt(b);
-        });
-        for (int l : levels)
-          if (!ok) ok = place(r.category, l);
-      } else {
-        for (int l : PreferredLevels(r.category, F))
-          if (!ok) ok = place(r.category, l);
+    if (multi && r.category == Category::kUtilityRoom) {
+      if (count < F) plan.room_hints[i] = "a " + std::to_string(F) + "-story building has a staircase room on every floor";
+      count -= F;
+    }
+    remaining[r.category] += std::max(0, count);
+    remaining_index[r.category] = i;
+  }
+  auto pull = [&](Category c, int level) {
+    // A room for a connection: taken from the whole-building requirements, or added when the building
+    // is not limited to the required rooms.
+    if (remaining[c] > 0) {
+      if (!place(c, level)) return false;
+      --remaining[c];
+      return true;
+    }
+    return !o.only_required_rooms && place(c, level);
+  };
+  // 3. Connection requirements choose their floor and pull their two rooms there.
+  for (std::size_t i = 0; i < o.connections.size(); ++i) {
+    const ConnectionRequirement& c = o.connections[i];
+    std::vector<int> levels;
+    if (c.level != kAnyLevel) {
+      if (c.level >= F) {
+        plan.link_hints[i] = "the building has " + std::to_string(F) + (F == 1 ? " floor" : " floors");
+        continue;
       }
-      made += ok ? 1 : 0;
+      levels.push_back(c.level);
+    } else {
+      levels = PreferredLevels(c.a == Category::kLivingRoom || c.a == Category::kKitchen ? c.a : c.b, F);
+      // Floors already holding an end first.
+      std::stable_sort(levels.begin(), levels.end(),
+                       [&](int x, int y) { return (has(x, c.a) + has(x, c.b)) > (has(y, c.a) + has(y, c.b)); });
     }
-    if (made < count) {
-      if (multi && r.category == Category::kUtilityRoom && count > 0)
-        plan.unmet.push_back(std::to_string(r.count) + " utility-room: a " + std::to_string(F) +
-                             "-story building has its " + std::to_string(F) + " staircase rooms; no room for more");
-      else
-        plan.unmet.push_back(std::to_string(r.count) + " " + name_of(r.category) + ": room for " + std::to_string(made));
-    }
-    if (multi && r.category == Category::kUtilityRoom && r.count < F)
-      plan.unmet.push_back(std::to_string(r.count) + " utility-room: a " + std::to_string(F) +
-                           "-story building needs a staircase room on every floor");
-  }
-  // Connection requirements go to a floor holding both categories (the requested level, or the first).
-  plan.links.assign(static_cast<std::size_t>(F), {});
-  for (int l = 0; l < F; ++l) {
-    const int target = o.only_required_rooms
-                           ? std::max(plan.specs[static_cast<std::size_t>(l)].size(), 1)
-                           : std::max(plan.specs[static_cast<std::size_t>(l)].size(), SampleRoomsPerFloor(o, rng) - (multi ? 1 : 0));
-    FillFromPriors(plan.specs[static_cast<std::size_t>(l)], l, F, std::min(target, cap), rng);
-  }
-  for (const ConnectionRequirement& c : o.connections) {
     bool placed = false;
-    for (int l = 0; l < F && !placed; ++l) {
-      if (c.level != kAnyLevel && c.level != l) continue;
-      auto& spec = plan.specs[static_cast<std::size_t>(l)];
-      auto has = [&](Category cat) {
-        return std::count(spec.must.begin(), spec.must.end(), cat) + std::count(spec.optional.begin(), spec.optional.end(), cat) > 0;
-      };
-      if (has(c.a) && has(c.b)) {
-        // Both ends become essential on this floor.
-        for (Category cat : {c.a, c.b}) {
-          auto it = std::find(spec.optional.begin(), spec.optional.end(), cat);
-          if (it != spec.optional.end()) {
-            spec.optional.erase(it);
-            spec.must.push_back(cat);
-          }
-        }
-        plan.links[static_cast<std::size_t>(l)].push_back(c);
-        placed = true;
-      }
+    for (int l : levels) {
+      if (placed) break;
+      const bool need_a = !has(l, c.a), need_b = !has(l, c.b) && !(c.a == c.b && !need_a);
+      const int free = cap - spec_of(l).size();
+      if (need_a + need_b > free) continue;
+      auto available = [&](Category cat) { return remaining[cat] > 0 || !o.only_required_rooms; };
+      if ((need_a && !available(c.a)) || (need_b && !available(c.b))) continue;
+      if (need_a) pull(c.a, l);
+      if (need_b) pull(c.b, l);
+      plan.links[static_cast<std::size_t>(l)].push_back(c);
+      placed = true;
     }
     if (!placed) {
-      std::string where = c.level == kAnyLevel ? "" : " on level " + std::to_string(c.level);
-      plan.unmet.push_back(name_of(c.a) + " to " + name_of(c.b) + where + ": no floor has both rooms");
+      const bool missing = o.only_required_rooms && (remaining[c.a] == 0 || remaining[c.b] == 0);
+      plan.link_hints[i] = missing ? "the required rooms leave none free for it" : "no floor has room for both";
     }
+  }
+  // 4. The rest of the whole-building rooms, by each category's preferred floors.
+  for (auto& [category, count] : remaining) {
+    const Category c = category;
+    for (; count > 0; --count) {
+      bool ok = false;
+      std::vector<int> levels;
+      for (int l = 0; l < F; ++l) levels.push_back(l);
+      if (c == Category::kBathroom) {
+        // Spread bathrooms: the floor with the fewest first.
+        std::stable_sort(levels.begin(), levels.end(), [&](int a, int b) {
+          auto cnt = [&](int l) { return std::count(spec_of(l).must.begin(), spec_of(l).must.end(), c); };
+          return cnt(a) < cnt(b);
+        });
+      } else {
+        levels = PreferredLevels(c, F);
+      }
+      for (int l : levels)
+        if (!ok) ok = place(c, l);
+      if (!ok) {
+        plan.room_hints[remaining_index[c]] = "more than the floors hold (at most " + std::to_string(o.max_rooms_per_floor) +
+                                              " rooms a floor)";
+        break;
+      }
+    }
+  }
+  // 5. Prior fill up to the floor's room count.
+  for (int l = 0; l < F; ++l) {
+    const int target = o.only_required_rooms ? std::max(spec_of(l).size(), 1)
+                                             : std::max(spec_of(l).size(), SampleRoomsPerFloor(o, rng) - (multi ? 1 : 0));
+    FillFromPriors(spec_of(l), l, F, std::min(target, cap), rng);
   }
   return plan;
 }
@@ -994,12 +1045,12 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
   AttemptResult result;
   const int F = plan.floors;
   const Scale& scale = s.scale;
-  // Footprint: about 22-36 m2 a room on the ground floor, in a rectangle of aspect 1-1.6 whose cuts
+  // Footprint: about 20-32 m2 a room on the ground floor, in a rectangle of aspect 1-1.6 whose cuts
   // (notches, angled bites) take roughly `kept` of it.
   const int ground_rooms = plan.specs[0].size() + (F > 1 ? 1 : 0);
   static const double kKept[kShapeClassCount] = {1.0, 0.78, 0.8, 0.72, 0.7, 0.85};
   const double kept = kKept[static_cast<int>(plan.shape)];
-  const double area = ground_rooms * (22.0 + rng.Unit() * 14.0) / kept;
+  const double area = ground_rooms * (20.0 + rng.Unit() * 12.0) / kept;
   const double aspect = 1.0 + rng.Unit() * 0.6;
   double long_side = std::sqrt(area * aspect), short_side = std::sqrt(area / aspect);
   const bool winged = plan.shape == ShapeClass::kU || plan.shape == ShapeClass::kT || plan.shape == ShapeClass::kH;
@@ -1069,8 +1120,8 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     }
     AnalyseFloor(f, s);
     const auto& links = plan.links[static_cast<std::size_t>(l)];
-    if (!LabelFloor(f, categories, links, rng)) {
-      if (links.empty() || !LabelFloor(f, categories, {}, rng)) {
+    if (!LabelFloor(f, categories, links, s, rng)) {
+      if (links.empty() || !LabelFloor(f, categories, {}, s, rng)) {
         result.reason = "no labelling meets the rules";
         return result;
       }
@@ -1094,7 +1145,7 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
 }
 
 // Requirements the finished layout does not meet.
-std::vector<std::string> UnmetRequirements(const PartitionOptions& o, const Building& b) {
+std::vector<std::string> UnmetRequirements(const PartitionOptions& o, const Plan& plan, const Building& b) {
   std::vector<std::string> unmet;
   const int F = static_cast<int>(b.floors.size());
   auto count = [&](Category c, int level) {
@@ -1104,15 +1155,19 @@ std::vector<std::string> UnmetRequirements(const PartitionOptions& o, const Buil
         n += static_cast<int>(std::count(f.categories.begin(), f.categories.end(), c));
     return n;
   };
-  for (const RoomRequirement& r : o.rooms) {
+  auto hinted = [](std::string text, const std::string& hint) { return hint.empty() ? text : text + " (" + hint + ")"; };
+  for (std::size_t i = 0; i < o.rooms.size(); ++i) {
+    const RoomRequirement& r = o.rooms[i];
     const int made = count(r.category, r.level);
     if (made != r.count) {
       std::string where = r.level == kAnyLevel ? "" : " on level " + std::to_string(r.level);
-      unmet.push_back(std::to_string(r.count) + " " + std::string(CategoryName(r.category)) + where + ": made " +
-                      std::to_string(made));
+      unmet.push_back(hinted(std::to_string(r.count) + " " + std::string(CategoryName(r.category)) + where + ": made " +
+                                 std::to_string(made),
+                             plan.room_hints[i]));
     }
   }
-  for (const ConnectionRequirement& c : o.connections) {
+  for (std::size_t i = 0; i < o.connections.size(); ++i) {
+    const ConnectionRequirement& c = o.connections[i];
     bool met = false;
     for (int l = 0; l < F && !met; ++l) {
       if (c.level != kAnyLevel && c.level != l) continue;
@@ -1128,8 +1183,9 @@ std::vector<std::string> UnmetRequirements(const PartitionOptions& o, const Buil
     if (!met) {
       static const char* kKind[] = {"a door or open", "a door", "an open connection"};
       std::string where = c.level == kAnyLevel ? "" : " on level " + std::to_string(c.level);
-      unmet.push_back(std::string(CategoryName(c.a)) + " to " + std::string(CategoryName(c.b)) + " through " +
-                      kKind[static_cast<int>(c.kind)] + where + ": not made");
+      unmet.push_back(hinted(std::string(CategoryName(c.a)) + " to " + std::string(CategoryName(c.b)) + " through " +
+                                 kKind[static_cast<int>(c.kind)] + where + ": not made",
+                             plan.link_hints[i]));
     }
   }
   if (o.panoramic_windows) {
@@ -1193,9 +1249,7 @@ PartitionSummary GenerateLayout(const PartitionOptions& options, uint64_t seed) 
         continue;
       }
     }
-    std::vector<std::string> unmet = plan.unmet;
-    for (std::string& u : UnmetRequirements(options, a.building))
-      if (std::find(unmet.begin(), unmet.end(), u) == unmet.end()) unmet.push_back(std::move(u));
+    std::vector<std::string> unmet = UnmetRequirements(fixed, plan, a.building);
     PartitionSummary candidate;
     candidate.layout = std::move(layout);
     candidate.shape = plan.shape;
@@ -1208,7 +1262,7 @@ PartitionSummary GenerateLayout(const PartitionOptions& options, uint64_t seed) 
     const bool better = !best || candidate.unmet_requirements.size() < best->unmet_requirements.size();
     if (better) best = std::move(candidate);
     // Requirements that no plan can meet do not improve with more attempts.
-    if (best->unmet_requirements.size() <= plan.unmet.size()) break;
+    if (static_cast<int>(best->unmet_requirements.size()) <= plan.impossible()) break;
     if (attempt >= options.max_attempts / 4) break;  // good enough: keep the best valid layout so far
   }
   std::vector<std::pair<int, std::string>> sorted;

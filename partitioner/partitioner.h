@@ -90,7 +90,7 @@ struct PartitionOptions {
   double shape_weights[kShapeClassCount] = {0.15, 0.20, 0.15, 0.15, 0.10, 0.25};
 
   // Limits of the ground floor's bounding rectangle, m. Within them the size follows the ground floor's
-  // room count (about 22-36 m2 a room, aspect 1-1.6; U, T and H footprints at least 13 m a side).
+  // room count (about 20-32 m2 a room, aspect 1-1.6; U, T and H footprints at least 13 m a side).
   double min_side = 9.0;
   double max_side = 24.0;
 

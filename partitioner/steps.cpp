@@ -197,7 +197,7 @@ bool PieceUsable(const IRing& piece, const BspLimits& limits) {
   if (piece.size() < 3 || TwiceArea(piece) < limits.min_area2) return false;
   const IBox box = BoundingBox(piece);
   if (box.width() < limits.min_side || box.height() < limits.min_side) return false;
-  return MinWidth(piece) >= limits.min_width;
+  return !NarrowerThan(piece, limits.min_width);
 }
 
 std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const Scale& scale, Rng& rng) {
@@ -235,7 +235,7 @@ std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const S
     std::vector<IRing> rest;
     if (!SubtractInside(footprint, BoxRing(box), &rest) || rest.size() != 1 || TwiceArea(rest[0]) != expected)
       continue;
-    if (MinWidth(rest[0]) < min_width) continue;
+    if (NarrowerThan(rest[0], min_width)) continue;
     return box;
   }
   return std::nullopt;
@@ -282,13 +282,13 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
     std::vector<IRing> out;
     if (!SubtractBox(ring, box, &out) || out.size() != 1) continue;
     if (TwiceArea(out[0]) >= TwiceArea(ring) || TwiceArea(out[0]) < min_area2) continue;
-    if (MinWidth(out[0]) < min_width) continue;
+    if (NarrowerThan(out[0], min_width)) continue;
     if (stair) {
       // What stays beside the staircase must still hold rooms.
       std::vector<IRing> rest;
       if (!SubtractInside(out[0], BoxRing(*stair), &rest)) continue;
       bool wide = true;
-      for (const IRing& r : rest) wide = wide && MinWidth(r) >= static_cast<double>(scale.UnitsUp(2.0));
+      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, static_cast<double>(scale.UnitsUp(2.0)));
       if (!wide) continue;
     }
     ring = std::move(out[0]);
