@@ -7,16 +7,16 @@ set(VILLA_GENERATOR_TEXT_DIR ${CMAKE_CURRENT_LIST_DIR})
 add_library(villa_generator STATIC
   ${VILLA_GENERATOR_TEXT_DIR}/brief.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/brief_check.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/llm_client.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/llm_plan.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/procedural.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/plan.cpp
 )
 target_include_directories(villa_generator PUBLIC ${PROJECT_SOURCE_DIR})
 target_link_libraries(villa_generator
-  PUBLIC villa_layout villa_util nlohmann_json::nlohmann_json
+  PUBLIC villa_partitioner villa_finetune villa_render villa_layout villa_util nlohmann_json::nlohmann_json
   PRIVATE CURL::libcurl Threads::Threads)
-foreach(dependency villa_partitioner villa_finetune villa_render)
-  if(TARGET ${dependency})
-    target_link_libraries(villa_generator PUBLIC ${dependency})
-  endif()
-endforeach()
 if(TARGET villa_generator_building)
   target_link_libraries(villa_generator PUBLIC villa_generator_building)
 endif()
+villa_add_commands(plan.cpp eval.cpp)

@@ -1,0 +1,179 @@
+// PlanLayout: parse the brief, run a backend, then validate, measure and check whatever came out the same
+// way for both backends.
+#include "generator/text/plan.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "generator/text/backends.h"
+#include "util/version.h"
+
+namespace villa {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string Number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+Json Ratio(std::optional<double> r) { return r ? Json(std::round(*r * 10000.0) / 10000.0) : Json(nullptr); }
+
+}  // namespace
+
+std::string_view PlanBackendName(PlanBackend backend) {
+  return backend == PlanBackend::kLlm ? "llm" : "procedural";
+}
+
+std::string_view PlanOutcomeName(PlanOutcome outcome) {
+  switch (outcome) {
+    case PlanOutcome::kMet: return "met";
+    case PlanOutcome::kPartial: return "partial";
+    case PlanOutcome::kInvalid: return "invalid";
+    case PlanOutcome::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+bool PlanOptions::IsValid(std::string* message) const {
+  auto fail = [&](std::string m) {
+    if (message) *message = std::move(m);
+    return false;
+  };
+  if (!(time_budget_s > 0.0)) return fail("time budget " + Number(time_budget_s) + " s: must be > 0");
+  if (max_attempts < 1) return fail("max_attempts " + std::to_string(max_attempts) + ": must be >= 1");
+  if (rounds < 0) return fail("rounds " + std::to_string(rounds) + ": must be >= 0");
+  if (backend == PlanBackend::kLlm) return llm.IsValid(message);
+  return true;
+}
+
+PlanSummary PlanLayout(const std::string& text, const PlanOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  PlanSummary summary;
+  summary.backend = options.backend;
+  summary.brief = ParseBrief(text);
+  std::string message;
+  if (!options.IsValid(&message)) {
+    summary.outcome = PlanOutcome::kFailed;
+    summary.error = message;
+    return summary;
+  }
+  if (options.backend == PlanBackend::kLlm) PlanWithLlm(text, options, summary);
+  else PlanProcedural(summary.brief, options, summary);
+
+  if (summary.layout) {
+    ValidationReport report = ValidateLayout(*summary.layout);
+    summary.violations = report.violations;
+    summary.metrics = MeasureLayout(*summary.layout);
+    summary.check = CheckBrief(summary.brief, *summary.layout);
+    summary.unmet = summary.check.unmet();
+    if (!summary.shape_class) {
+      if (auto shape = ClassifyFootprint(*summary.layout, 0)) summary.shape_class = std::string(ShapeClassName(*shape));
+    }
+  } else {
+    summary.metrics.parsed = false;
+    summary.metrics.format_success = false;
+    // Nothing to check: every requirement counts as unmet.
+    Layout empty;
+    summary.check = CheckBrief(summary.brief, empty);
+    for (auto& r : summary.check.results) {
+      r.met = false;
+      r.detail = "no layout";
+    }
+    summary.unmet = summary.check.unmet();
+  }
+  if (summary.valid()) {
+    summary.outcome = summary.unmet.empty() ? PlanOutcome::kMet : PlanOutcome::kPartial;
+    summary.error.clear();
+  } else if (summary.layout || summary.attempts > 0) {
+    summary.outcome = PlanOutcome::kInvalid;
+    if (summary.error.empty()) summary.error = "the layout breaks " + std::to_string(summary.violations.size()) + " rules";
+  } else {
+    summary.outcome = PlanOutcome::kFailed;
+  }
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+std::string PlanSummary::BriefReport() const {
+  std::ostringstream out;
+  out << PlanOutcomeName(outcome) << " (" << PlanBackendName(backend) << "): ";
+  if (layout) {
+    out << layout->LevelCount() << (layout->LevelCount() == 1 ? " floor" : " floors");
+    for (int l = 0; l < layout->LevelCount(); ++l) out << (l == 0 ? ", rooms a floor " : "/") << layout->RoomsOnLevel(l).size();
+    if (shape_class) out << ", " << *shape_class << " footprint";
+  } else {
+    out << "no layout";
+  }
+  out << "; brief " << check.met() << "/" << check.total() << " met";
+  out << "; " << attempts << (backend == PlanBackend::kLlm ? (attempts == 1 ? " answer" : " answers") : " attempts");
+  out << "; " << Number(std::round(seconds * 100) / 100) << " s\n";
+  out << "brief: " << BriefOneLine(brief) << "\n";
+  for (const auto& u : brief.unparsed) out << "not understood: \"" << u.text << "\"\n";
+  for (const auto& c : brief.conflicts) out << "conflict: " << c << "\n";
+  for (const auto& u : unmet) out << "unmet: " << u.requirement << (u.detail.empty() ? "" : " (" + u.detail + ")") << "\n";
+  const std::size_t shown = std::min<std::size_t>(violations.size(), 10);
+  for (std::size_t i = 0; i < shown; ++i)
+    out << "violation: rule " << violations[i].rule << ": " << violations[i].message << "\n";
+  if (shown < violations.size()) out << "... " << violations.size() - shown << " more violations\n";
+  if (!error.empty()) out << "error: " << error << "\n";
+  return out.str();
+}
+
+nlohmann::ordered_json PlanReportJson(const PlanSummary& s) {
+  Json j;
+  j["tool"] = std::string("villa ") + kVersion;
+  j["text"] = s.brief.text;
+  j["backend"] = std::string(PlanBackendName(s.backend));
+  j["outcome"] = std::string(PlanOutcomeName(s.outcome));
+  j["valid"] = s.valid();
+  j["seconds"] = std::round(s.seconds * 1000.0) / 1000.0;
+  j["attempts"] = s.attempts;
+  j["shape_class"] = s.shape_class ? Json(*s.shape_class) : Json(nullptr);
+  if (s.layout) {
+    Json floors = Json::array();
+    for (int l = 0; l < s.layout->LevelCount(); ++l) floors.push_back(s.layout->RoomsOnLevel(l).size());
+    j["rooms_per_floor"] = floors;
+  }
+  j["brief"] = BriefToJson(s.brief);
+  j["check"] = BriefCheckToJson(s.check);
+  Json unmet = Json::array();
+  for (const auto& u : s.unmet) {
+    Json e{{"requirement", u.requirement}};
+    if (!u.detail.empty()) e["detail"] = u.detail;
+    if (!u.source.empty()) e["source"] = u.source;
+    unmet.push_back(e);
+  }
+  j["unmet"] = unmet;
+  Json violations = Json::array();
+  for (const auto& v : s.violations)
+    violations.push_back(Json{{"rule", v.rule}, {"elements", v.elements}, {"message", v.message}, {"figure", v.figure}});
+  j["violations"] = violations;
+  MetricsSummary m;
+  m.Add(s.metrics);
+  j["metrics"] = Json{{"fsr", Ratio(m.fsr())},
+                      {"rr", Ratio(m.rr())},
+                      {"rr_entrance", Ratio(m.rr_entrance())},
+                      {"vcr", Ratio(m.vcr())},
+                      {"brief_adherence", std::round(s.check.adherence() * 10000.0) / 10000.0}};
+  Json rounds = Json::array();
+  for (const auto& r : s.rounds) {
+    Json e{{"round", r.round}, {"parsed", r.parsed}, {"valid", r.valid}, {"violations", r.violations},
+           {"requirements_met", r.requirements_met}, {"seconds", std::round(r.seconds * 1000.0) / 1000.0}};
+    if (s.backend == PlanBackend::kLlm) {
+      e["http_attempts"] = r.http_attempts;
+      e["finish_reason"] = r.finish_reason;
+    }
+    if (!r.error.empty()) e["error"] = r.error;
+    rounds.push_back(e);
+  }
+  j["rounds"] = rounds;
+  if (!s.error.empty()) j["error"] = s.error;
+  if (s.backend == PlanBackend::kLlm && !s.valid() && !s.raw_answer.empty()) j["last_answer"] = s.raw_answer;
+  return j;
+}
+
+}  // namespace villa

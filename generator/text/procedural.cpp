@@ -1,0 +1,197 @@
+// The procedural backend: the brief steers the partitioner; candidates from successive seeds and
+// variants (floor counts the brief allows, with or without rooms beyond the listed ones) are checked
+// against the whole brief, and the best valid one is kept.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "generator/text/backends.h"
+#include "layout/validate.h"
+
+namespace villa {
+namespace {
+
+std::uint64_t SplitMix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// Floor counts to try, best guess first.
+std::vector<int> FloorCandidates(const Brief& brief) {
+  if (brief.floors) return {std::clamp(*brief.floors, 1, kMaxFloors)};
+  int lo = std::max(1, brief.floors_min.value_or(1));
+  int total_min = 0;
+  int highest = -1;
+  for (const auto& r : brief.rooms) {
+    if (r.level >= 0) highest = std::max(highest, r.level);
+    if (r.category == Category::kUtilityRoom && r.level == kAnyLevel && r.min == r.max && r.min >= 2)
+      return {std::min(r.min, kMaxFloors)};
+    if (r.category == Category::kUtilityRoom) continue;
+    total_min += r.level == kEachLevel ? r.min : r.min;
+  }
+  for (const auto& c : brief.connections) highest = std::max(highest, c.level);
+  for (const auto& p : brief.panoramic) highest = std::max(highest, p.level);
+  lo = std::max(lo, highest + 1);
+  // About 4.5 rooms a floor besides the staircase room.
+  int guess = std::max(lo, static_cast<int>(std::ceil(total_min / 4.5)));
+  lo = std::min(lo, kMaxFloors);
+  guess = std::clamp(guess, lo, kMaxFloors);
+  std::vector<int> out{guess};
+  for (int f = lo; f <= kMaxFloors; ++f)
+    if (f != guess) out.push_back(f);
+  return out;
+}
+
+}  // namespace
+
+PartitionOptions PartitionOptionsForBrief(const Brief& brief, int floors, bool only_required) {
+  PartitionOptions o;
+  o.floors = floors;
+  o.shape = brief.shape;
+  o.only_required_rooms = only_required;
+  // Per-floor counts first; a total then asks only for the rooms not already placed on a floor.
+  std::map<int, int> placed;  // category -> rooms on named floors
+  auto add = [&](Category c, int count, int level) {
+    if (count <= 0 && level == kAnyLevel) return;
+    if (level >= floors) return;
+    o.rooms.push_back({c, std::max(count, 0), level});
+  };
+  for (const auto& r : brief.rooms) {
+    int count = r.min;  // a range asks for its minimum; the check accepts more
+    if (r.level >= 0) {
+      add(r.category, count, r.level);
+      placed[static_cast<int>(r.category)] += count;
+    } else if (r.level == kEachLevel) {
+      for (int l = 0; l < floors; ++l) add(r.category, count, l);
+      placed[static_cast<int>(r.category)] += count * floors;
+    } else if (r.level == kUpperLevels && floors == 2) {
+      add(r.category, count, 1);
+      placed[static_cast<int>(r.category)] += count;
+    }
+  }
+  // Rooms a connection or a panoramic window places on a floor ("the second-floor bedroom reaches a
+  // balcony") must be there even when the brief counts them only for the whole building.
+  std::map<std::pair<int, int>, int> on_level;  // (category, level) -> rooms asked there
+  for (const auto& r : o.rooms)
+    if (r.level >= 0) on_level[{static_cast<int>(r.category), r.level}] += r.count;
+  auto hint = [&](Category c, int level) {
+    if (level < 0 || level >= floors || c == Category::kRoom) return;
+    if (c == Category::kUtilityRoom && floors > 1) return;
+    int& n = on_level[{static_cast<int>(c), level}];
+    if (n > 0) return;
+    // Only when the whole-building count leaves room for it.
+    for (const auto& r : brief.rooms)
+      if (r.category == c && r.level == kAnyLevel && r.max >= 0 && placed[static_cast<int>(c)] >= r.max) return;
+    n = 1;
+    add(c, 1, level);
+    placed[static_cast<int>(c)] += 1;
+  };
+  for (const auto& c : brief.connections) {
+    if (c.to.size() != 1) continue;
+    hint(c.from, c.level);
+    hint(c.to.front(), c.level);
+  }
+  for (const auto& p : brief.panoramic) hint(p.category, p.level);
+  for (const auto& s : brief.sides) hint(s.category, s.level);
+  for (const auto& r : brief.rooms) {
+    if (r.level != kAnyLevel) continue;
+    int rest = r.min - placed[static_cast<int>(r.category)];
+    if (r.category == Category::kUtilityRoom) {
+      // The partitioner counts staircase rooms in a utility requirement; a multi-story building has one
+      // a floor whatever the brief says.
+      if (floors > 1) continue;
+      rest = r.min;
+    }
+    if (rest > 0 || (r.max == 0 && placed[static_cast<int>(r.category)] == 0)) add(r.category, rest, kAnyLevel);
+  }
+  for (const auto& c : brief.connections) {
+    if (c.to.empty()) continue;
+    std::vector<int> levels;
+    if (c.level == kEachLevel)
+      for (int l = 0; l < floors; ++l) levels.push_back(l);
+    else if (c.level >= 0 && c.level < floors)
+      levels.push_back(c.level);
+    else if (c.level == kUpperLevels && floors == 2)
+      levels.push_back(1);
+    else
+      levels.push_back(kAnyLevel);
+    for (int l : levels) o.connections.push_back({c.from, c.to.front(), c.kind, l});
+  }
+  for (const auto& p : brief.panoramic) {
+    if (p.category == Category::kRoom) {
+      o.panoramic_windows = true;
+    } else if (std::find(o.panoramic_rooms.begin(), o.panoramic_rooms.end(), p.category) == o.panoramic_rooms.end()) {
+      o.panoramic_rooms.push_back(p.category);
+    }
+  }
+  // Many rooms a floor need the larger end of the size range.
+  int most = 0;
+  std::map<int, int> per_level;
+  for (const auto& r : o.rooms)
+    if (r.level >= 0) most = std::max(most, per_level[r.level] += r.count);
+  if (most >= 5) o.min_side = 14.0;
+  o.max_attempts = 120;
+  return o;
+}
+
+void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary& summary) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_budget_s));
+  const std::vector<int> floors = FloorCandidates(brief);
+  // Briefs that list their rooms one by one are met more often with exactly those rooms.
+  int exact_categories = 0;
+  for (const auto& r : brief.rooms)
+    if (r.min == r.max && r.category != Category::kUtilityRoom) ++exact_categories;
+  const bool prefer_only_required = exact_categories >= 4;
+
+  int best_met = -1;
+  std::optional<Layout> best;
+  std::optional<ShapeClass> best_shape;
+  std::string last_failure;
+  int attempts = 0;
+  int valid_candidates = 0;
+  const int goal = brief.RequirementCount();
+  for (int a = 0; a < options.max_attempts; ++a) {
+    if (a > 0 && Clock::now() >= deadline) break;
+    const int f = floors[static_cast<std::size_t>(a) % floors.size()];
+    const bool only_required = ((a / static_cast<int>(floors.size())) % 2 == 0) == prefer_only_required;
+    PartitionOptions po = PartitionOptionsForBrief(brief, f, only_required);
+    const std::uint64_t seed = SplitMix(options.seed * 0x100000001B3ull + static_cast<std::uint64_t>(a));
+    PartitionSummary ps = GenerateLayout(po, seed);
+    ++attempts;
+    if (!ps.ok()) {
+      last_failure = ps.message;
+      continue;
+    }
+    ++valid_candidates;
+    BriefCheck check = CheckBrief(brief, ps.layout);
+    int met = check.met();
+    if (met > best_met) {
+      best_met = met;
+      best = std::move(ps.layout);
+      best_shape = ps.shape;
+    }
+    if (met == goal) break;
+  }
+  PlanRound round;
+  round.round = 0;
+  round.parsed = best.has_value();
+  round.valid = best.has_value();
+  round.requirements_met = std::max(best_met, 0);
+  round.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.rounds.push_back(round);
+  summary.attempts = attempts;
+  if (best) {
+    summary.layout = std::move(best);
+    summary.shape_class = std::string(ShapeClassName(*best_shape));
+  } else {
+    summary.error = "the partitioner made no valid layout in " + std::to_string(attempts) + " attempts" +
+                    (last_failure.empty() ? "" : ": " + last_failure);
+  }
+}
+
+}  // namespace villa
