@@ -94,7 +94,20 @@ void ReadFileInto(const std::string& file, std::vector<Checked>& out) {
     if (!status) out.push_back(Check(file, "", Error{status.error()}));
     return;
   }
-  out.push_back(Check(file, "", LoadLayout(path)));
+  // A .json file holds one layout, or one record with a "layout" key (and maybe an "id").
+  auto text = ReadFile(path);
+  if (!text) {
+    out.push_back(Check(file, "", Error{text.error()}));
+    return;
+  }
+  Json json;
+  try {
+    json = Json::parse(*text);
+  } catch (const Json::parse_error& e) {
+    out.push_back(Check(file, "", Error{file + ": not valid JSON: " + e.what()}));
+    return;
+  }
+  out.push_back(Check(file, IdOf(json), LayoutOfRecord(json, file)));
 }
 
 std::string Ratio(std::optional<double> value) {
@@ -211,7 +224,7 @@ Registration registration{20, [](CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "validate",
       "Check layouts against the rules 1-10 of the layout format and report FSR, RR and VCR.\n"
-      "FILE is a layout (.json) or a JSONL stream (.jsonl: one record a line, the layout itself or a record\n"
+      "FILE is a layout (.json: the layout, or a record with a \"layout\" key) or a JSONL stream (.jsonl: one record a line, the layout itself or a record\n"
       "with a \"layout\" key and an optional \"id\"). Prints a line per invalid layout, then a summary.\n"
       "Exit status: 0 all valid, 1 some layout invalid or unparsable, 2 usage (no file, missing file).");
   sub->add_option("files", command->files, "layout files (.json) or JSONL streams (.jsonl)")->required();
