@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "layout/layout_io.h"
 
 using namespace villa;
@@ -79,7 +81,7 @@ TEST_CASE("unknown and missing top-level keys are errors", "[io]") {
 }
 
 TEST_CASE("JSONL errors carry file and line numbers", "[io]") {
-  auto dir = std::filesystem::temp_directory_path() / "villa_layout_io_test";
+  auto dir = std::filesystem::temp_directory_path() / ("villa_layout_io_test_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   auto path = dir / "stream.jsonl";
   std::string one_line = kMinimal;

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -37,8 +38,9 @@ std::string OneLine(const std::string& file) {
   return Json::parse(text).dump();
 }
 
-std::filesystem::path WriteStream() {
-  auto dir = std::filesystem::temp_directory_path() / "villa_validate_cli_test";
+// A folder of its own per test case and process: ctest runs test cases in parallel.
+std::filesystem::path WriteStream(const std::string& tag) {
+  auto dir = std::filesystem::temp_directory_path() / ("villa_validate_cli_" + tag + "_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   auto path = dir / "stream.jsonl";
   std::ofstream out(path);
@@ -72,7 +74,7 @@ TEST_CASE("villa validate: an invalid layout exits 1 with its violations on one 
 }
 
 TEST_CASE("villa validate: JSONL with ids, a broken line and an invalid layout", "[cli]") {
-  auto path = WriteStream();
+  auto path = WriteStream("text");
   Run run = Villa("validate " + path.string());
   INFO(run.output);
   CHECK(run.code == 1);
@@ -84,7 +86,7 @@ TEST_CASE("villa validate: JSONL with ids, a broken line and an invalid layout",
 }
 
 TEST_CASE("villa validate --json is machine-readable", "[cli]") {
-  auto path = WriteStream();
+  auto path = WriteStream("json");
   Run run = Villa("validate --json " + path.string(), /*with_stderr=*/false);
   CHECK(run.code == 1);
   Json report;
