@@ -157,9 +157,12 @@ std::string DataCard(const ExportSummary& s, const TrainerConfigInput& config) {
   }
 
   md << "## Serving and use\n\n"
-     << "vLLM serves the base model with the adapter under a name of its own:\n\n"
+     << "vLLM serves the base model with the adapter under a name of its own (the path is LLaMA-Factory's\n"
+     << "output folder; axolotl and TRL write to `outputs/" << o.dataset_name << "-lora`):\n\n"
      << "```sh\nvllm serve " << o.base_model << " --enable-lora --lora-modules " << adapter << "=saves/" << o.dataset_name
-     << "-lora \\\n    --max-lora-rank " << h.lora_rank << " --max-model-len " << s.cutoff_len << "\n```\n\n"
+     << "-lora \\\n    --max-lora-rank " << h.lora_rank << " --max-model-len 16384\n```\n\n"
+     << "(16,384 tokens leave room for the prompt, about " << s.system_prompt_tokens + s.prompt_tokens.max
+     << " tokens here, plus the answer budget `villa plan` asks for by default, 8,192 tokens.)\n\n"
      << "Requests name the adapter as the model and send the same system prompt (thinking off):\n\n"
      << "```json\n{\"model\": \"" << adapter << "\",\n \"messages\": [{\"role\": \"system\", \"content\": \"<finetune/system_prompt.md>\"},\n"
      << "              {\"role\": \"user\", \"content\": \"A two-storey L-shaped house with an open kitchen ...\"}],\n"
