@@ -211,14 +211,23 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     }
     const std::string id = record["id"].is_string() ? record["id"].get<std::string>() : record["id"].dump();
     const std::string status = record.contains("status") && record["status"].is_string() ? record["status"].get<std::string>() : "";
-    if (status == "rejected") return ++summary.rejected, true;
-    if (status == "pending") return ++summary.pending, true;
+    if (status == "rejected") {
+      ++summary.rejected;
+      return true;
+    }
+    if (status == "pending") {
+      ++summary.pending;
+      return true;
+    }
     if (status != "verified" && status != "auto") {
       ++summary.unknown_status;
       AddProblem(summary, where + ": " + id + ": status: expected verified, auto, rejected or pending, got \"" + status + "\"");
       return true;
     }
-    if (!StatusIncluded(options.include, status)) return ++summary.excluded_status, true;
+    if (!StatusIncluded(options.include, status)) {
+      ++summary.excluded_status;
+      return true;
+    }
 
     auto layout = LayoutFromRecord(record, where);
     if (!layout) {
@@ -266,7 +275,10 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     }
 
     std::string geometry = GeometryKey(*layout);
-    if (!seen_geometry.insert(geometry).second) return ++summary.duplicate_geometry, true;
+    if (!seen_geometry.insert(geometry).second) {
+      ++summary.duplicate_geometry;
+      return true;
+    }
 
     Candidate c;
     c.id = id;
