@@ -1,0 +1,183 @@
+// The segment-based geometry of the validator checked against Boost.Geometry on many generated cases:
+// random guillotine tilings (the partitioner's kind of floor), the same with a room taken out (a hole, a
+// notch or two pieces), random rings (the fast validity test never accepts what Boost rejects), and
+// random garbage layouts (the validator reports, never crashes).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+
+#include "layout/geometry.h"
+#include "layout/metrics.h"
+#include "test_support.h"
+
+using namespace villa;
+using namespace villa::test;
+
+namespace {
+
+// Own uniform helpers: std::*_distribution differs between standard libraries.
+double Uniform(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * (rng() >> 11) * 0x1.0p-53; }
+int UniformInt(std::mt19937_64& rng, int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1)); }
+double Grid(double v) { return std::round(v * 4) / 4; }  // quarter metres, exact in binary
+
+// Splits a box recursively (axis-aligned cuts on a 0.25 m grid, parts at least 1.5 m) into `target` rooms.
+std::vector<Ring> Guillotine(std::mt19937_64& rng, int target) {
+  struct Cell {
+    double x0, y0, x1, y1;
+  };
+  std::vector<Cell> cells{{0, 0, Grid(Uniform(rng, 8, 16)), Grid(Uniform(rng, 6, 12))}};
+  for (int guard = 0; static_cast<int>(cells.size()) < target && guard < 200; ++guard) {
+    std::size_t pick = UniformInt(rng, 0, static_cast<int>(cells.size()) - 1);
+    Cell c = cells[pick];
+    bool vertical = (c.x1 - c.x0 > c.y1 - c.y0) ? UniformInt(rng, 0, 3) > 0 : UniformInt(rng, 0, 3) == 0;
+    double lo = vertical ? c.x0 : c.y0, hi = vertical ? c.x1 : c.y1;
+    if (hi - lo < 3) continue;
+    double cut = Grid(Uniform(rng, lo + 1.5, hi - 1.5));
+    if (cut - lo < 1.5 || hi - cut < 1.5) continue;
+    Cell a = c, b = c;
+    if (vertical) a.x1 = b.x0 = cut;
+    else a.y1 = b.y0 = cut;
+    cells[pick] = a;
+    cells.push_back(b);
+  }
+  std::vector<Ring> rings;
+  for (const auto& c : cells) rings.push_back({{c.x0, c.y0}, {c.x1, c.y0}, {c.x1, c.y1}, {c.x0, c.y1}});
+  return rings;
+}
+
+Layout RoomsOnly(const std::vector<Ring>& rings) {
+  Layout layout;
+  for (std::size_t i = 0; i < rings.size(); ++i) layout.rooms.push_back({Category::kRoom, 0, static_cast<int>(i), rings[i]});
+  return layout;
+}
+
+}  // namespace
+
+TEST_CASE("guillotine tilings form one footprint; the outline matches Boost's union", "[geometry]") {
+  std::mt19937_64 rng(20240601);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Ring> rooms = Guillotine(rng, UniformInt(rng, 2, 8));
+    ValidationReport report = ValidateLayout(RoomsOnly(rooms));
+    INFO("trial " << trial << "\n" << Describe(report));
+    CHECK(report.CountRule(1) == 0);
+    ExteriorBoundary boundary = ExteriorBoundaryOf(rooms, kTolerance);
+    REQUIRE(boundary.rings.size() == 1);
+    double area = 0, perimeter = 0, shared = 0, outline = 0;
+    for (const auto& r : rooms) {
+      area += Area(r);
+      for (std::size_t i = 0; i < r.size(); ++i) perimeter += Length({r[i], r[(i + 1) % r.size()]});
+    }
+    for (std::size_t a = 0; a < rooms.size(); ++a)
+      for (std::size_t b = a + 1; b < rooms.size(); ++b) shared += SharedBoundaryLength(rooms[a], rooms[b], kTolerance);
+    for (const auto& piece : boundary.pieces) outline += Length(piece);
+    CHECK(boundary.rings[0].signed_area == Approx(area));
+    // Every edge is either outline or shared with exactly one other room (counted from both sides).
+    CHECK(perimeter == Approx(outline + 2 * shared));
+    auto footprint = UnionOfRings(rooms);
+    REQUIRE(footprint.size() == 1);
+    CHECK(footprint[0].holes.empty());
+    CHECK(Area(footprint[0].outer) == Approx(area));
+    CHECK(outline == Approx(2 * (BoundingBox(footprint[0].outer).max_x + BoundingBox(footprint[0].outer).max_y)));
+  }
+}
+
+TEST_CASE("a room taken out of a tiling: hole, notch or split, as Boost's union says", "[geometry]") {
+  std::mt19937_64 rng(77);
+  int holes = 0, splits = 0, notches = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Ring> rooms = Guillotine(rng, UniformInt(rng, 4, 9));
+    std::size_t out = UniformInt(rng, 0, static_cast<int>(rooms.size()) - 1);
+    double hole_area = Area(rooms[out]);
+    rooms.erase(rooms.begin() + out);
+    auto footprint = UnionOfRings(rooms);
+    ValidationReport report = ValidateLayout(RoomsOnly(rooms));
+    INFO("trial " << trial << "\n" << Describe(report));
+    int expected_holes = 0;
+    for (const auto& p : footprint) expected_holes += static_cast<int>(p.holes.size());
+    int reported_holes = 0, reported_splits = 0;
+    for (const auto& v : report.violations) {
+      if (v.rule != 1) continue;
+      if (v.message.find("hole") != std::string::npos) {
+        ++reported_holes;
+        CHECK(v.figure == Approx(hole_area));
+      }
+      if (v.message.find("separate pieces") != std::string::npos) ++reported_splits;
+    }
+    CHECK(reported_holes == expected_holes);
+    CHECK(reported_splits == (footprint.size() > 1 ? 1 : 0));
+    holes += expected_holes > 0;
+    splits += footprint.size() > 1;
+    notches += footprint.size() == 1 && expected_holes == 0;
+  }
+  // The generator reaches all three outcomes.
+  CHECK(holes > 10);
+  CHECK(splits > 10);
+  CHECK(notches > 10);
+}
+
+TEST_CASE("the fast validity test never accepts a ring Boost.Geometry rejects", "[geometry]") {
+  namespace bg = boost::geometry;
+  using P = bg::model::d2::point_xy<double>;
+  using Polygon = bg::model::polygon<P, false, false>;
+  std::mt19937_64 rng(5);
+  int valid = 0, invalid = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Ring ring;
+    int n = UniformInt(rng, 3, 8);
+    for (int i = 0; i < n; ++i) ring.push_back({static_cast<double>(UniformInt(rng, 0, 4)), static_cast<double>(UniformInt(rng, 0, 4))});
+    if (SignedArea(ring) < 0) std::reverse(ring.begin(), ring.end());
+    Polygon polygon;
+    for (const auto& p : ring) polygon.outer().emplace_back(p.x, p.y);
+    bool boost_valid = bg::is_valid(polygon) && Area(ring) > 0;
+    std::string problem = RingProblem(ring);
+    INFO("trial " << trial << ": " << problem);
+    CHECK(problem.empty() == boost_valid);
+    (boost_valid ? valid : invalid)++;
+  }
+  CHECK(valid > 100);
+  CHECK(invalid > 100);
+}
+
+TEST_CASE("garbage layouts get violations, never a crash", "[geometry]") {
+  std::mt19937_64 rng(99);
+  for (int trial = 0; trial < 300; ++trial) {
+    Layout layout;
+    int levels = UniformInt(rng, 1, 3);
+    int rooms = UniformInt(rng, 1, 7);
+    for (int i = 0; i < rooms; ++i) {
+      Ring ring;
+      int n = UniformInt(rng, 3, 6);
+      for (int k = 0; k < n; ++k) ring.push_back({Grid(Uniform(rng, 0, 10)), Grid(Uniform(rng, 0, 10))});
+      Category category = LabelledCategories()[UniformInt(rng, 0, 9)];
+      layout.rooms.push_back({category, UniformInt(rng, 0, levels - 1), i, ring});
+    }
+    for (ElementKind kind : kAllElementKinds) {
+      int count = UniformInt(rng, 0, 4);
+      for (int i = 0; i < count; ++i) {
+        Element e;
+        e.name = std::string(ElementKindKey(kind)) + std::to_string(i);
+        e.kind = kind;
+        e.shape = {{Grid(Uniform(rng, 0, 10)), Grid(Uniform(rng, 0, 10))}, {Grid(Uniform(rng, 0, 10)), Grid(Uniform(rng, 0, 10))}};
+        e.level = UniformInt(rng, -1, levels);
+        e.panoramic = UniformInt(rng, 0, 1) == 1;
+        layout.elements(kind).push_back(e);
+      }
+    }
+    ValidationReport report = ValidateLayout(layout);
+    for (const auto& v : report.violations) {
+      CHECK(v.rule >= 1);
+      CHECK(v.rule <= 10);
+      CHECK_FALSE(v.message.empty());
+      CHECK(std::isfinite(v.figure));
+    }
+    LayoutMetrics m = MeasureLayout(layout);
+    CHECK(m.rooms_reached_per_floor <= m.rooms);
+    CHECK(m.rooms_reached_from_entrance <= m.rooms);
+    CHECK(m.floor_pairs_connected <= m.floor_pairs);
+  }
+}
