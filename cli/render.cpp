@@ -93,7 +93,7 @@ Registration registration{30, [](CLI::App& app) {
   sub->add_option("--width", command->options.target_width_px,
                   "total picture width in px; the scale is chosen to fill it")
       ->excludes(scale);
-  sub->add_option("--levels", command->options.levels, "levels to draw, e.g. --levels 0 2 (default: all)");
+  sub->add_option("--levels", command->options.levels, "levels to draw, e.g. --levels 0,2 (default: all)")->delimiter(',');
   sub->add_option("--title", command->options.title, "title line (default: file name, floors, rooms, total area)");
   sub->add_option("--font", command->options.font_family, "font family (default \"DejaVu Sans\")");
   sub->add_option("--font-size", command->options.font_size_px, "size of room names in px (6..48; default 13)");

@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <optional>
 #include <set>
 
@@ -538,7 +537,7 @@ Result<Frame> MakeFrame(const Content& c, const PlanRenderOptions& options, cons
   f.title_bold = c.title_bold;
   f.title_rest = c.title_rest;
   f.title_bold_width = measure.Width(c.title_bold, fonts.title, true);
-  const double title_width = f.title_bold_width + (c.title_rest.empty() ? 0.0 : measure.Width("   " + c.title_rest, fonts.title * 0.8, false));
+  const double title_width = f.title_bold_width + (c.title_rest.empty() ? 0.0 : fonts.title * 0.8 + measure.Width(c.title_rest, fonts.title * 0.8, false));
   const double row_height = std::max(20.0, fonts.legend * 1.9);
 
   double s = options.pixels_per_metre;
@@ -646,7 +645,7 @@ Stroke Pen(Rgb color, double width, LineCap cap = LineCap::kButt, std::vector<do
 
 // Points of a circular arc from angle a0 to a1 (radians, screen orientation), flattened.
 std::vector<Px> Arc(Px centre, double radius, double a0, double a1) {
-  const int steps = std::max(6, static_cast<int>(std::ceil(std::abs(a1 - a0) * radius / 2.0)));
+  const int steps = std::clamp(static_cast<int>(std::ceil(std::abs(a1 - a0) * radius / 2.0)), 6, 256);
   std::vector<Px> points;
   for (int i = 0; i <= steps; ++i) {
     const double a = a0 + (a1 - a0) * i / steps;
@@ -712,7 +711,8 @@ class PlanPainter {
     const double x = options_.margin_px;
     paint_.Text(f_.title_bold, {x, f_.title_baseline}, fonts_.title, true, kText);
     if (!f_.title_rest.empty()) {
-      paint_.Text("   " + f_.title_rest, {x + f_.title_bold_width, f_.title_baseline}, fonts_.title * 0.8, false, kMuted);
+      paint_.Text(f_.title_rest, {x + f_.title_bold_width + fonts_.title * 0.8, f_.title_baseline}, fonts_.title * 0.8,
+                  false, kMuted);
     }
   }
 
@@ -730,8 +730,9 @@ class PlanPainter {
     const double heading_baseline = f_.panels_top + measure_.CapHeight(fonts_.heading);
     const std::string heading = LevelTitle(g.level);
     paint_.Text(heading, {panel_x, heading_baseline}, fonts_.heading, true, kText);
-    paint_.Text("   " + Plural(static_cast<int>(g.rooms.size()), "room", "rooms") + "  \u00b7  " + AreaText(area),
-                {panel_x + measure_.Width(heading, fonts_.heading, true), heading_baseline}, fonts_.small, false, kMuted);
+    paint_.Text(Plural(static_cast<int>(g.rooms.size()), "room", "rooms") + "  \u00b7  " + AreaText(area),
+                {panel_x + measure_.Width(heading, fonts_.heading, true) + fonts_.heading * 0.7, heading_baseline},
+                fonts_.small, false, kMuted);
 
     for (int r : g.rooms) DrawRoom(g, r);
     DrawWalls(g);
@@ -768,7 +769,9 @@ class PlanPainter {
     const double run_to = along_x ? max_x : max_y;
     const Stroke tread = Pen({0.42, 0.43, 0.45}, std::max(0.8, 0.025 * s()));
     std::vector<SubPath> treads;
-    for (double t = run_from + kTread; t < run_to - kTread * 0.5; t += kTread) {
+    // Real treads; a room far too large for a staircase (an invalid layout) gets at most 100 lines.
+    const double step = std::max(kTread, (run_to - run_from) / 100.0);
+    for (double t = run_from + step; t < run_to - step * 0.5; t += step) {
       const Point a = along_x ? Point{t, min_y - 1.0} : Point{min_x - 1.0, t};
       const Point b = along_x ? Point{t, max_y + 1.0} : Point{max_x + 1.0, t};
       for (const Segment& piece : plan::ClipSegmentToRing(a, b, ring)) {
@@ -981,7 +984,8 @@ class PlanPainter {
       min_y = std::min(min_y, p.y);
       max_y = std::max(max_y, p.y);
     }
-    const double step = std::max(0.1, std::min(max_x - min_x, max_y - min_y) / 12.0);
+    // About 12 samples across the room's narrow side, at most 60 along its long side.
+    const double step = std::max({0.1, std::min(max_x - min_x, max_y - min_y) / 12.0, std::max(max_x - min_x, max_y - min_y) / 60.0});
     std::vector<std::pair<double, Point>> grid;
     for (double x = min_x + step / 2.0; x < max_x; x += step) {
       for (double y = min_y + step / 2.0; y < max_y; y += step) {

@@ -95,7 +95,8 @@ std::string SceneToSvg(const Scene& scene) {
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(scene.width) +
          "\" height=\"" + std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) + " " +
-         std::to_string(scene.height) + "\" font-family=\"" + Escape(scene.font_family) + ", sans-serif\">\n";
+         std::to_string(scene.height) + "\" font-family=\"" + Escape(scene.font_family) +
+         ", sans-serif\" xml:space=\"preserve\">\n";
   if (!scene.title.empty()) out += "<title>" + Escape(scene.title) + "</title>\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(scene.width) + "\" height=\"" +
          std::to_string(scene.height) + "\" fill=\"" + Color(scene.background) + "\"/>\n";

@@ -296,3 +296,23 @@ TEST_CASE("the palette tells the categories apart", "[render][palette]") {
     CHECK_FALSE(CategoryDisplayName(all[i]).empty());
   }
 }
+
+TEST_CASE("absurd sizes are drawn at a scale that fits, quickly", "[render]") {
+  // A 3 km long two-floor building: the picture is scaled down to the size limit, the 3 km "staircase"
+  // gets a bounded number of treads.
+  Layout layout;
+  for (int level = 0; level < 2; ++level) {
+    layout.rooms.push_back({Category::kUtilityRoom, level, 0, {{0, 0}, {3000, 0}, {3000, 4}, {0, 4}}});
+    layout.rooms.push_back({Category::kBedroom, level, 0, {{0, 4}, {3000, 4}, {3000, 5.5}, {0, 5.5}}});
+  }
+  layout.doors.push_back({"d", ElementKind::kDoor, {{0, 4}, {2000, 4}}, 0, false});
+  PlanRenderOptions options;
+  options.max_side_px = 4000;
+  const Result<PlanFrame> frame = ComputePlanFrame(layout, options);
+  REQUIRE(frame.ok());
+  CHECK(frame->width_px <= 4000);
+  CHECK(frame->pixels_per_metre < 1.0);
+  const Result<std::string> png = RenderPlanPng(layout, options);
+  REQUIRE(png.ok());
+  CHECK(DecodePng(*png).width == frame->width_px);
+}
