@@ -393,6 +393,12 @@ bool PointInRing(const Point& p, const Ring& ring, double tolerance) {
   return inside;
 }
 
+bool PointOnBoundary(const Point& p, const Ring& ring, double tolerance) {
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    if (PointSegmentDistance(p, {ring[i], ring[(i + 1) % ring.size()]}) <= tolerance) return true;
+  return false;
+}
+
 std::string RingProblem(const Ring& ring) {
   if (ring.size() < 3) return "has fewer than 3 corners";
   // Fast path: a convex ring without repeated points or spikes, turning once, is valid; so is a ring whose

@@ -63,6 +63,8 @@ Ring WithoutCollinearCorners(const Ring& ring, double tolerance);
 bool SameRing(const Ring& a, const Ring& b, double tolerance);
 // Inside or on the boundary (within tolerance).
 bool PointInRing(const Point& p, const Ring& ring, double tolerance);
+// On the boundary (within tolerance of an edge).
+bool PointOnBoundary(const Point& p, const Ring& ring, double tolerance);
 
 // Empty when `ring` is a valid simple polygon with positive area; otherwise why not ("self-intersecting",
 // "has spikes", "has fewer than 3 distinct corners", "has zero area", ...). Boost.Geometry's is_valid.

@@ -181,3 +181,23 @@ TEST_CASE("garbage layouts get violations, never a crash", "[geometry]") {
     CHECK(m.floor_pairs_connected <= m.floor_pairs);
   }
 }
+
+TEST_CASE("points and segments on a room's boundary", "[geometry]") {
+  const Ring l_shape{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
+  CHECK(PointOnBoundary({3, 2}, l_shape, kTolerance));
+  CHECK(PointOnBoundary({2, 3}, l_shape, kTolerance));
+  CHECK_FALSE(PointOnBoundary({1, 1}, l_shape, kTolerance));
+  CHECK(PointInRing({1, 1}, l_shape, kTolerance));
+  CHECK_FALSE(PointInRing({3, 3}, l_shape, kTolerance));  // in the notch
+  // A door across the inner corner lies on the boundary for 1 m of its 2 m.
+  CHECK(LengthOnBoundary({{1, 2}, {3, 2}}, l_shape, kTolerance) == Approx(1.0));
+  CHECK(LengthOnBoundary({{2.5, 2}, {3.5, 2}}, l_shape, kTolerance) == Approx(1.0));
+  CHECK(LengthOnBoundary({{2.5, 2.1}, {3.5, 2.1}}, l_shape, kTolerance) == 0);
+  // Shared boundary of the L and the box over its notch: two collinear pieces, 2 m each.
+  auto shared = SharedBoundaries(l_shape, {{2, 2}, {4, 2}, {4, 4}, {2, 4}}, kTolerance);
+  REQUIRE(shared.size() == 2);
+  CHECK(Length(shared[0]) + Length(shared[1]) == Approx(4.0));
+  // 1e-7 m off still counts as on; 1e-5 m off does not.
+  CHECK(LengthOnBoundary({{1, 1e-7}, {3, 1e-7}}, l_shape, kTolerance) == Approx(2.0));
+  CHECK(LengthOnBoundary({{1, 1e-5}, {3, 1e-5}}, l_shape, kTolerance) == 0);
+}
