@@ -1104,7 +1104,31 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
         return result;
       }
     const FloorPlanSpec& spec = plan.specs[static_cast<std::size_t>(l)];
-    std::vector<IRing> rooms = partition::SplitRoomBsp(pieces, spec.size(), limits, rng);
+    // Room sizes the plan asks for: every category at about its usual size, except the largest (the
+    // living room, else the biggest by prior), which takes what is left.
+    std::vector<Category> planned = spec.must;
+    for (Category c : spec.optional) planned.push_back(c);
+    std::vector<int64_t> wanted;
+    {
+      int64_t floor_area2 = 0;
+      for (const IRing& p : pieces) floor_area2 += partition::TwiceArea(p);
+      std::size_t largest = 0;
+      for (std::size_t k = 1; k < planned.size(); ++k) {
+        auto size = [](Category c) { return c == Category::kLivingRoom ? 1e9 : PreferredArea(c); };
+        if (size(planned[k]) > size(planned[largest])) largest = k;
+      }
+      double sum = 0.0;
+      std::vector<double> metres;
+      for (std::size_t k = 0; k < planned.size(); ++k) {
+        if (k == largest) continue;
+        metres.push_back(PreferredArea(planned[k]) * (0.8 + 0.45 * rng.Unit()));
+        sum += metres.back();
+      }
+      const double budget = 0.75 * static_cast<double>(floor_area2) * g2 / 2.0;
+      const double shrink = sum > budget ? budget / sum : 1.0;
+      for (double m : metres) wanted.push_back(static_cast<int64_t>(2.0 * m * shrink / g2));
+    }
+    std::vector<IRing> rooms = partition::SplitRoomBsp(pieces, spec.size(), limits, rng, wanted);
     if (static_cast<int>(rooms.size()) < static_cast<int>(spec.must.size()) ||
         static_cast<int>(rooms.size()) + (stair ? 1 : 0) < std::min(o.min_rooms_per_floor, spec.size() + (stair ? 1 : 0))) {
       result.reason = "BSP gave too few rooms";

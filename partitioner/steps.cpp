@@ -297,7 +297,9 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
   return ring;
 }
 
-std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng) {
+std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
+                                std::vector<int64_t> wanted_area2) {
+  std::sort(wanted_area2.begin(), wanted_area2.end());
   int failures = 0;
   while (static_cast<int>(pieces.size()) < target && failures < 40) {
     // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always).
@@ -324,8 +326,19 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       ++failures;
       continue;
     }
-    // Near the middle more often than at the ends: average of two uniform draws.
-    const int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
+    // Near the middle more often than at the ends (average of two uniform draws), or, while rooms of a
+    // wanted size are missing, at the offset that cuts the smallest of them off one end.
+    int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
+    int64_t aimed = -1;
+    if (!wanted_area2.empty() && rng.Chance(0.75)) {
+      const int64_t want = wanted_area2.front();
+      const int64_t across = axis == Axis::kX ? box.height() : box.width();
+      const int64_t offset = std::max<int64_t>(1, (want / 2 + across / 2) / std::max<int64_t>(1, across));
+      k = rng.Chance(0.5) ? (axis == Axis::kX ? box.min_x : box.min_y) + offset
+                          : (axis == Axis::kX ? box.max_x : box.max_y) - offset;
+      k = std::clamp(k, lo, hi);
+      aimed = want;
+    }
     if (!SplitIsOnGrid(piece, axis, k)) {
       ++failures;
       continue;
@@ -345,6 +358,16 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
     if (!ok) {
       ++failures;
       continue;
+    }
+    if (aimed >= 0) {
+      // The wanted size is served when some part came within 40 % of it.
+      for (const IRing& part : parts) {
+        const int64_t a = TwiceArea(part);
+        if (a * 10 >= aimed * 6 && a * 10 <= aimed * 14) {
+          wanted_area2.erase(wanted_area2.begin());
+          break;
+        }
+      }
     }
     pieces.erase(pieces.begin() + static_cast<long>(index));
     for (auto& r : parts) pieces.push_back(std::move(r));

@@ -76,9 +76,12 @@ struct BspLimits {
 bool PieceUsable(const IRing& piece, const BspLimits& limits);
 
 // Step 4: splits `pieces` recursively by axis-aligned grid lines into at most `target` connected rooms,
-// each usable. Splits crossing slanted edges off the grid are skipped. Returns the rooms (fewer than
-// `target` when no usable split was left).
-std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng);
+// each usable. Splits crossing slanted edges off the grid are skipped. `wanted_area2` (twice-area units)
+// lists room sizes the floor's plan asks for (a bathroom, a kitchen...): while some are missing, most
+// splits cut one of them off an end of the piece; the rest of the area goes to the big rooms. Returns
+// the rooms (fewer than `target` when no usable split was left).
+std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
+                                std::vector<int64_t> wanted_area2 = {});
 
 // Step 6: a door (or open) of `width` units on the wall segment, at least `clearance` units from both of
 // its ends, at a random grid position. Nullopt when the wall is too short.
