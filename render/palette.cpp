@@ -55,6 +55,23 @@ std::string_view CategoryDisplayName(Category category) {
   return "Room";
 }
 
+std::string_view CategoryShortName(Category category) {
+  switch (category) {
+    case Category::kLivingRoom: return "Living";
+    case Category::kBedroom: return "Bed";
+    case Category::kKitchen: return "Kitchen";
+    case Category::kBathroom: return "Bath";
+    case Category::kDiningRoom: return "Dining";
+    case Category::kChildrenRoom: return "Child";
+    case Category::kOffice: return "Office";
+    case Category::kMeetingRoom: return "Meeting";
+    case Category::kUtilityRoom: return "Utility";
+    case Category::kBalcony: return "Balcony";
+    case Category::kRoom: return "Room";
+  }
+  return "Room";
+}
+
 int ToByte(double channel) { return static_cast<int>(std::lround(std::clamp(channel, 0.0, 1.0) * 255.0)); }
 
 }  // namespace villa

@@ -28,6 +28,9 @@ Rgb InvalidElementColor();
 // "Living room", "Children's room", "Utility room", "Room": the category as a person reads it.
 std::string_view CategoryDisplayName(Category category);
 
+// "Living", "Children", "Bath": a short form for labels in small rooms.
+std::string_view CategoryShortName(Category category);
+
 // 0..255 channel value of a [0, 1] channel, rounded (what an 8-bit PNG stores).
 int ToByte(double channel);
 

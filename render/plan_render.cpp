@@ -34,6 +34,8 @@ using plan::TextMeasure;
 // Wall thickness drawn, m (centred on the boundary line).
 constexpr double kExteriorWall = 0.24;
 constexpr double kInteriorWall = 0.12;
+// The smallest label, as a share of PlanRenderOptions::font_size_px (8 px at the default 13 px).
+constexpr double kMinLabelScale = 0.6;
 // Stair tread depth drawn, m.
 constexpr double kTread = 0.28;
 // How close (m) an element must be to a wall line to count as lying on it; FORMAT.md's tolerance.
@@ -740,6 +742,7 @@ class PlanPainter {
     for (const PlacedElement& e : g.windows) DrawWindow(g, e);
     for (const PlacedElement& e : g.doors) DrawDoor(e, false);
     for (const PlacedElement& e : g.entrances) DrawDoor(e, true);
+    placed_.clear();
     for (int r : g.rooms) DrawLabel(g, r);
     paint_.End();
   }
@@ -939,18 +942,27 @@ class PlanPainter {
 
   struct LabelFit {
     Point centre;
+    std::string name;        // the full display name, or the short one where that fits better
     double scale = 1.0;
     bool rotated = false;
     bool with_area = true;
-    bool overflow = false;  // fits nowhere: drawn on a chip across the walls
+    bool overflow = false;   // fits nowhere: drawn on a chip across the walls
   };
 
-  // The largest label (name over area) that fits inside the room, wall thickness and a little air
-  // kept clear; smaller, then single-line, then turned upright for tall narrow rooms.
-  LabelFit FitLabel(const LevelGeometry& g, const Ring& ring, const std::string& name, const std::string& area) const {
-    // Door swings to keep clear of: the quarter discs, as polygons.
+  // A label's rectangle in plan coordinates (m), as placed.
+  struct Placed {
+    Point lo, hi;
+  };
+
+  // The largest label that fits inside the room, wall thickness and a little air kept clear, away from
+  // labels already placed on this floor and (where the room allows) from door swings. In order: name
+  // over area, smaller, upright for tall narrow rooms; then the name alone; then the short name; and
+  // when nothing fits, the short name on a chip where it overlaps no other label.
+  LabelFit FitLabel(const LevelGeometry& g, const Ring& ring, const std::string& name, const std::string& short_name,
+                    const std::string& area) const {
+    // Door swings to keep clear of: the quarter discs, as polygons, with their boxes.
     std::vector<Ring> swings;
-    std::vector<std::pair<Point, Point>> swing_boxes;
+    std::vector<Placed> swing_boxes;
     for (const auto* list : {&g.doors, &g.entrances}) {
       for (const PlacedElement& e : *list) {
         const DoorSwing& w = e.swing;
@@ -964,18 +976,19 @@ class PlanPainter {
           const double a = a0 + (a1 - a0) * i / 8.0;
           sector.push_back({w.hinge.x + radius * std::cos(a), w.hinge.y + radius * std::sin(a)});
         }
-        Point lo = sector[0], hi = sector[0];
+        Placed box{sector[0], sector[0]};
         for (const Point& p : sector) {
-          lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-          hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+          box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y)};
+          box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y)};
         }
-        swing_boxes.push_back({lo, hi});
+        swing_boxes.push_back(box);
         swings.push_back(std::move(sector));
       }
     }
+
     const Point pole = RoomLabelPoint(ring);
-    LabelFit fit{pole, 0.8, false, false, true};
-    if (ring.size() < 3) return fit;
+    if (ring.size() < 3) return {pole, short_name, kMinLabelScale, false, false, true};
+    // Candidate centres: the pole, then a grid over the room in falling clearance.
     std::vector<std::pair<double, Point>> candidates{{plan::SignedDistanceToRing(pole, ring), pole}};
     double min_x = ring[0].x, max_x = ring[0].x, min_y = ring[0].y, max_y = ring[0].y;
     for (const Point& p : ring) {
@@ -997,54 +1010,68 @@ class PlanPainter {
     for (size_t i = 0; i < grid.size() && i < 400; ++i) candidates.push_back(grid[i]);
 
     const double margin = (kExteriorWall / 2.0) + 5.0 / s();  // m kept clear around the text
-    bool avoid_swings = true;
-    // Half sizes of the label block (plus air) in m.
-    auto half_size = [&](const LabelFit& trial) {
-      const auto [w, h] = LabelSize(name, area, trial);
-      return std::pair<double, double>{(trial.rotated ? h : w) / 2.0 / s() + margin, (trial.rotated ? w : h) / 2.0 / s() + margin};
+    auto overlaps_label = [&](Point lo, Point hi) {
+      for (const Placed& p : placed_) {
+        if (lo.x < p.hi.x && p.lo.x < hi.x && lo.y < p.hi.y && p.lo.y < hi.y) return true;
+      }
+      return false;
     };
-    auto fits = [&](const LabelFit& trial, double half_x, double half_y) {
-      const Point lo{trial.centre.x - half_x, trial.centre.y - half_y};
-      const Point hi{trial.centre.x + half_x, trial.centre.y + half_y};
+    auto fits = [&](Point c, double half_x, double half_y, bool avoid_swings) {
+      const Point lo{c.x - half_x, c.y - half_y}, hi{c.x + half_x, c.y + half_y};
+      if (overlaps_label(lo, hi)) return false;
       if (avoid_swings) {
         for (size_t i = 0; i < swings.size(); ++i) {
-          const auto& [slo, shi] = swing_boxes[i];
-          if (lo.x >= shi.x || slo.x >= hi.x || lo.y >= shi.y || slo.y >= hi.y) continue;
+          const Placed& b = swing_boxes[i];
+          if (lo.x >= b.hi.x || b.lo.x >= hi.x || lo.y >= b.hi.y || b.lo.y >= hi.y) continue;
           if (plan::RectOverlapsRing(lo, hi, swings[i])) return false;
         }
       }
       return plan::RectInsideRing(lo, hi, ring);
     };
-    // Largest first, clear of door swings if the room allows. The area line goes before the label would
-    // cross a swing; below 70 % (9 px at the default size) a label is hard to read, so a label that
-    // fits nowhere goes on a chip across the walls instead.
-    const std::vector<std::vector<std::pair<bool, double>>> tiers = {
-        {{false, 1.0}, {false, 0.9}, {false, 0.8}, {true, 1.0}, {true, 0.9}, {true, 0.8}},
-        {{false, 0.7}, {true, 0.7}}};
-    for (bool with_area : {true, false}) {
-      for (const auto& sizes : tiers) {
-        for (bool avoid : {true, false}) {
-          avoid_swings = avoid;
-          for (const auto& [rotated, scale] : sizes) {
-            const auto [half_x, half_y] = half_size({pole, scale, rotated, with_area, false});
-            for (const auto& [clearance, c] : candidates) {
-              // Candidates come in falling clearance; once a boundary point is nearer than the block's
-              // half height it lies inside the block, here and at every later candidate.
-              if (clearance < std::min(half_x, half_y)) break;
-              const LabelFit trial{c, scale, rotated, with_area, false};
-              if (fits(trial, half_x, half_y)) return trial;
-            }
+    struct Try {
+      const std::string* name;
+      bool with_area;
+      std::vector<std::pair<bool, double>> sizes;  // (upright, scale)
+    };
+    const std::vector<std::pair<bool, double>> large = {{false, 1.0}, {false, 0.9}, {false, 0.8},
+                                                        {true, 1.0},  {true, 0.9},  {true, 0.8}};
+    const std::vector<std::pair<bool, double>> small = {{false, 0.7}, {true, 0.7}, {false, kMinLabelScale}, {true, kMinLabelScale}};
+    const std::vector<std::pair<bool, double>> smaller = {{false, 0.7}, {true, 0.7}};
+    const Try tries[] = {{&name, true, large},        {&name, true, smaller}, {&name, false, large},
+                         {&short_name, false, large}, {&name, false, small},  {&short_name, false, small}};
+    for (const Try& t : tries) {
+      for (bool avoid : {true, false}) {
+        for (const auto& [rotated, scale] : t.sizes) {
+          const LabelFit probe{pole, *t.name, scale, rotated, t.with_area, false};
+          const auto [w, h] = LabelSize(probe, area);
+          const double half_x = (rotated ? h : w) / 2.0 / s() + margin;
+          const double half_y = (rotated ? w : h) / 2.0 / s() + margin;
+          for (const auto& [clearance, c] : candidates) {
+            // Candidates come in falling clearance; once a boundary point is nearer than the block's
+            // half height it lies inside the block, here and at every later candidate.
+            if (clearance < std::min(half_x, half_y)) break;
+            if (fits(c, half_x, half_y, avoid)) return {c, *t.name, scale, rotated, t.with_area, false};
           }
         }
       }
     }
-    return fit;
+    // Nowhere inside: the short name on a chip, at the first candidate clear of other labels.
+    LabelFit chip{pole, short_name, kMinLabelScale, false, false, true};
+    const auto [w, h] = LabelSize(chip, area);
+    for (const auto& [clearance, c] : candidates) {
+      const Point lo{c.x - w / 2.0 / s(), c.y - h / 2.0 / s()}, hi{c.x + w / 2.0 / s(), c.y + h / 2.0 / s()};
+      if (!overlaps_label(lo, hi)) {
+        chip.centre = c;
+        break;
+      }
+    }
+    return chip;
   }
 
   // Width (along the text) and height (across) of the label block, px.
-  std::pair<double, double> LabelSize(const std::string& name, const std::string& area, const LabelFit& fit) const {
+  std::pair<double, double> LabelSize(const LabelFit& fit, const std::string& area) const {
     const double name_size = fonts_.label * fit.scale, area_size = fonts_.area * fit.scale;
-    double width = measure_.Width(name, name_size, true);
+    double width = measure_.Width(fit.name, name_size, true);
     double height = measure_.CapHeight(name_size);
     if (fit.with_area) {
       width = std::max(width, measure_.Width(area, area_size, false));
@@ -1055,10 +1082,15 @@ class PlanPainter {
 
   void DrawLabel(const LevelGeometry& g, int r) {
     const Room& room = layout().rooms[r];
-    const std::string name = std::string(CategoryDisplayName(room.category)) + " " + std::to_string(room.index);
+    const std::string index = " " + std::to_string(room.index);
+    const std::string name = std::string(CategoryDisplayName(room.category)) + index;
+    const std::string short_name = std::string(CategoryShortName(room.category)) + index;
     const std::string area = AreaText(Area(room.polygon));
-    const LabelFit fit = FitLabel(g, room.polygon, name, area);
-    const auto [w, h] = LabelSize(name, area, fit);
+    const LabelFit fit = FitLabel(g, room.polygon, name, short_name, area);
+    const auto [w, h] = LabelSize(fit, area);
+    const double box_w = fit.rotated ? h : w, box_h = fit.rotated ? w : h;
+    placed_.push_back({{fit.centre.x - box_w / 2.0 / s(), fit.centre.y - box_h / 2.0 / s()},
+                       {fit.centre.x + box_w / 2.0 / s(), fit.centre.y + box_h / 2.0 / s()}});
     const Px c = ToPx(fit.centre);
     const double name_size = fonts_.label * fit.scale, area_size = fonts_.area * fit.scale;
     const double name_cap = measure_.CapHeight(name_size);
@@ -1066,19 +1098,19 @@ class PlanPainter {
     std::replace(id.begin(), id.end(), '/', '-');
     paint_.Begin(id);
     if (fit.overflow || (g.has_stairs && room.category == Category::kUtilityRoom)) {
-      // A chip under the text so it reads over the stair treads.
-      const double bw = (fit.rotated ? h : w) / 2.0 + 5.0, bh = (fit.rotated ? w : h) / 2.0 + 4.0;
-      Fill chip{kWhite, 0.88};
-      paint_.Polygon(RoundedRect(c.x - bw, c.y - bh, c.x + bw, c.y + bh, 3.0), chip, std::nullopt);
+      // A chip under the text so it reads over stair treads and walls.
+      const double bw = box_w / 2.0 + 4.0, bh = box_h / 2.0 + 3.0;
+      paint_.Polygon(RoundedRect(c.x - bw, c.y - bh, c.x + bw, c.y + bh, 3.0), Fill{kWhite, 0.88},
+                     fit.overflow ? std::optional<Stroke>(Pen(CategoryInk(room.category), 1.0)) : std::nullopt);
     }
     if (!fit.rotated) {
       const double top = c.y - h / 2.0;
-      paint_.Text(name, {c.x, top + name_cap}, name_size, true, kText, TextAnchor::kMiddle);
+      paint_.Text(fit.name, {c.x, top + name_cap}, name_size, true, kText, TextAnchor::kMiddle);
       if (fit.with_area) paint_.Text(area, {c.x, c.y + h / 2.0}, area_size, false, kMuted, TextAnchor::kMiddle);
     } else {
       // Reads bottom to top; the block's "top" is on the left.
       const double left = c.x - h / 2.0;
-      paint_.Text(name, {left + name_cap, c.y}, name_size, true, kText, TextAnchor::kMiddle, -90.0);
+      paint_.Text(fit.name, {left + name_cap, c.y}, name_size, true, kText, TextAnchor::kMiddle, -90.0);
       if (fit.with_area) paint_.Text(area, {c.x + h / 2.0, c.y}, area_size, false, kMuted, TextAnchor::kMiddle, -90.0);
     }
     paint_.End();
@@ -1208,6 +1240,7 @@ class PlanPainter {
   Fonts fonts_;
   Painter paint_;
   double panel_left_ = 0.0, panel_top_ = 0.0;
+  std::vector<Placed> placed_;  // labels placed on the current floor
 };
 
 Result<Scene> BuildScene(const Layout& layout, const PlanRenderOptions& options) {
