@@ -451,6 +451,52 @@ std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
   return out;
 }
 
+namespace {
+// Chains directed exterior pieces into rings. At a vertex where several pieces start (a hole or a separate
+// piece touching at a point), takes the first one counter-clockwise from the way back: the ring keeps the
+// same outside region on its right, so a hole touching the outline still comes out as its own ring.
+// False when some piece has no continuation.
+bool ChainRings(const std::vector<Segment>& pieces, const std::vector<int>& owners, double tolerance,
+                std::vector<BoundaryRing>& rings) {
+  const std::size_t n = pieces.size();
+  const double match = 4 * tolerance;
+  bool closed = true;
+  std::vector<bool> used(n, false);
+  for (std::size_t start = 0; start < n; ++start) {
+    if (used[start]) continue;
+    BoundaryRing ring;
+    std::size_t current = start;
+    while (true) {
+      used[current] = true;
+      const Segment& s = pieces[current];
+      ring.pieces.push_back(s);
+      ring.owners.push_back(owners[current]);
+      ring.signed_area += Cross(s.a.x, s.a.y, s.b.x, s.b.y) / 2;
+      double bx = s.a.x - s.b.x, by = s.a.y - s.b.y;  // the way back
+      std::size_t best = n;
+      double best_angle = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Segment& c = pieces[k];
+        double gx = c.a.x - s.b.x, gy = c.a.y - s.b.y;
+        if (gx * gx + gy * gy > match * match) continue;
+        double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
+        double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
+        if (ccw <= 0) ccw += 2 * std::numbers::pi;
+        if (best == n || ccw < best_angle) best = k, best_angle = ccw;
+      }
+      if (best == start) break;
+      if (best == n || used[best]) {
+        closed = false;
+        break;
+      }
+      current = best;
+    }
+    rings.push_back(std::move(ring));
+  }
+  return closed;
+}
+}  // namespace
+
 ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double tolerance) {
   ExteriorBoundary result;
   std::vector<Ring> reversed;  // copies only of rings given clockwise
@@ -465,6 +511,7 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
 
   // 1. Every edge part not covered by another room's edge.
   std::vector<Interval> covered;
+  std::vector<double> cuts;
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     const Ring& ring = *rooms[i];
     for (std::size_t e = 0; e < ring.size(); ++e) {
@@ -473,61 +520,41 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
       if (len <= tolerance) continue;
       Box2 eb = BoundingBox(edge);
       covered.clear();
+      cuts.clear();
+      Frame frame(edge);
       for (std::size_t j = 0; j < rooms.size(); ++j) {
         if (j == i || !boxes[j].Touches(eb, tolerance)) continue;
         AppendIntervalsOnBoundary(edge, *rooms[j], tolerance, covered);
+        // Corners of room j inside this edge: where j only touches the outline at a point, the outline
+        // must be cut there so that a hole closed off by that touch comes out as its own ring.
+        for (const Point& v : *rooms[j]) {
+          double t = (v.x - frame.ax) * frame.ux + (v.y - frame.ay) * frame.uy;
+          if (t <= tolerance || t >= len - tolerance) continue;
+          if (std::abs(frame.ux * (v.y - frame.ay) - frame.uy * (v.x - frame.ax)) <= tolerance) cuts.push_back(t);
+        }
       }
       if (covered.size() > 1) covered = MergeIntervals(std::move(covered), tolerance);
+      if (cuts.size() > 1) std::sort(cuts.begin(), cuts.end());
       double at = 0;
-      auto emit = [&](double from, double to) {
+      auto emit_piece = [&](double from, double to) {
         if (to - from <= tolerance) return;
         Point a = from == 0 ? edge.a : PointAt(edge, from);
         Point b = to == len ? edge.b : PointAt(edge, to);
         result.pieces.push_back({a, b});
         result.owners.push_back(static_cast<int>(i));
       };
+      auto emit = [&](double from, double to) {
+        for (double t : cuts)
+          if (t > from + tolerance && t < to - tolerance) emit_piece(from, t), from = t;
+        emit_piece(from, to);
+      };
       for (const auto& iv : covered) emit(at, iv.first), at = std::max(at, iv.second);
       emit(at, len);
     }
   }
 
-  // 2. Chain the pieces into rings. At a vertex where several pieces start (a hole or a separate piece
-  //    touching at a point), take the first one counter-clockwise from the way back: the ring keeps the
-  //    same outside region on its right, so a hole touching the outline still comes out as its own ring.
-  const std::size_t n = result.pieces.size();
-  const double match = 4 * tolerance;
-  std::vector<bool> used(n, false);
-  for (std::size_t start = 0; start < n; ++start) {
-    if (used[start]) continue;
-    BoundaryRing ring;
-    std::size_t current = start;
-    while (true) {
-      used[current] = true;
-      const Segment& s = result.pieces[current];
-      ring.pieces.push_back(s);
-      ring.owners.push_back(result.owners[current]);
-      ring.signed_area += Cross(s.a.x, s.a.y, s.b.x, s.b.y) / 2;
-      double bx = s.a.x - s.b.x, by = s.a.y - s.b.y;  // the way back
-      std::size_t best = n;
-      double best_angle = 0;
-      for (std::size_t k = 0; k < n; ++k) {
-        const Segment& c = result.pieces[k];
-        double gx = c.a.x - s.b.x, gy = c.a.y - s.b.y;
-        if (gx * gx + gy * gy > match * match) continue;
-        double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
-        double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
-        if (ccw <= 0) ccw += 2 * std::numbers::pi;
-        if (best == n || ccw < best_angle) best = k, best_angle = ccw;
-      }
-      if (best == start) break;
-      if (best == n || used[best]) {
-        result.closed = false;
-        break;
-      }
-      current = best;
-    }
-    result.rings.push_back(std::move(ring));
-  }
+  // 2. Chain the pieces into rings.
+  result.closed = ChainRings(result.pieces, result.owners, tolerance, result.rings);
   return result;
 }
 

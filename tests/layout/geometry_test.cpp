@@ -201,3 +201,20 @@ TEST_CASE("points and segments on a room's boundary", "[geometry]") {
   CHECK(LengthOnBoundary({{1, 1e-7}, {3, 1e-7}}, l_shape, kTolerance) == Approx(2.0));
   CHECK(LengthOnBoundary({{1, 1e-5}, {3, 1e-5}}, l_shape, kTolerance) == 0);
 }
+
+TEST_CASE("a room touching another's outline at one point encloses a hole", "[geometry]") {
+  // A bar along the bottom, a column on the right, and a room whose corner (5, 2) touches the bar's top
+  // edge in its middle: the triangle (5,2)-(10,2)-(10,4), 5 m2, is enclosed.
+  std::vector<Ring> rooms = {{{0, 0}, {10, 0}, {10, 2}, {0, 2}},
+                             {{10, 0}, {12, 0}, {12, 6}, {10, 6}},
+                             {{5, 2}, {10, 4}, {10, 6}, {4, 6}}};
+  ExteriorBoundary boundary = ExteriorBoundaryOf(rooms, kTolerance);
+  CHECK(boundary.closed);
+  double holes = 0;
+  for (const auto& ring : boundary.rings)
+    if (ring.signed_area < 0) holes += -ring.signed_area;
+  CHECK(holes == Approx(5.0));
+  ValidationReport report = ValidateLayout(RoomsOnly(rooms));
+  INFO(Describe(report));
+  CHECK(Find(report, "level 0 footprint has a hole of 5.00 m2 enclosed by room_0/0, room_0/2, room_0/1"));
+}
