@@ -1,5 +1,6 @@
 // villa validate FILE... [--json] [--quiet]: checks layouts against the rules of FORMAT.md and reports the
 // paper's metrics (FSR, RR, VCR) over them.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -146,7 +147,10 @@ Json ReportJson(const std::vector<Checked>& checked, const MetricsSummary& summa
     entry["error"] = c.parse_error ? Json(*c.parse_error) : Json(nullptr);
     Json violations = Json::array();
     for (const auto& v : c.report.violations)
-      violations.push_back({{"rule", v.rule}, {"elements", v.elements}, {"message", v.message}, {"figure", v.figure}});
+      violations.push_back({{"rule", v.rule},
+                            {"elements", v.elements},
+                            {"message", v.message},
+                            {"figure", std::round(v.figure * 1e6) / 1e6}});  // to the tolerance: 0.6, not 0.5999999999999996
     entry["violations"] = std::move(violations);
     entry["metrics"] = {{"format_success", c.metrics.parsed && c.metrics.format_success},
                         {"rooms", c.metrics.rooms},
@@ -176,7 +180,8 @@ Json ReportJson(const std::vector<Checked>& checked, const MetricsSummary& summa
 void Run(const ValidateCommand& command) {
   for (const auto& file : command.files) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw UsageError("validate: no such file: " + file);
+    if (!std::filesystem::exists(file, ec)) throw UsageError("validate: no such file: " + file);
+    if (!std::filesystem::is_regular_file(file, ec)) throw UsageError("validate: not a regular file: " + file);
   }
   std::vector<Checked> checked;
   for (const auto& file : command.files) ReadFileInto(file, checked);
