@@ -570,7 +570,7 @@ Result<Frame> MakeFrame(const Content& c, const PlanRenderOptions& options, cons
 
     f.title_baseline = options.margin_px + measure.CapHeight(fonts.title);
     f.panels_top = f.title_baseline + title_gap;
-    f.panels_left = options.margin_px + (inner - panels_width) / 2.0;
+    f.panels_left = options.margin_px;
     double bottom = f.panels_top + f.panel_height;
     if (options.legend) {
       f.rule_y = bottom + 8.0;
@@ -855,7 +855,7 @@ class PlanPainter {
     }
     std::vector<SubPath> hairlines;
     for (const Segment& piece : Minus(g.shared, walled)) hairlines.push_back(SubPath{{ToPx(piece.a), ToPx(piece.b)}, false});
-    if (!hairlines.empty()) paint_.Path(std::move(hairlines), std::nullopt, Pen(kHairline, 1.0, LineCap::kButt, {2.0, 2.0}));
+    if (!hairlines.empty()) paint_.Path(std::move(hairlines), std::nullopt, Pen(kHairline, 1.3, LineCap::kButt, {3.0, 2.5}));
 
     std::vector<Segment> good, bad;
     for (const PlacedElement& p : g.interiors) (p.on_wall ? good : bad).push_back(p.element->shape);
@@ -1182,7 +1182,7 @@ class PlanPainter {
         paint_.Line({x, mid}, {x1, mid}, Pen(kWallInk, thin));
         break;
       case LegendEntry::kNoWall:
-        paint_.Line({x, mid}, {x1, mid}, Pen(kHairline, 1.0, LineCap::kButt, {2.0, 2.0}));
+        paint_.Line({x, mid}, {x1, mid}, Pen(kHairline, 1.3, LineCap::kButt, {3.0, 2.5}));
         break;
       case LegendEntry::kDoor: {
         const double y = mid + 5.0, r = 14.0, g0 = x + 8.0;
