@@ -66,7 +66,7 @@ Checked Check(std::string source, std::string id, const Result<Layout>& layout) 
     return out;
   }
   out.report = ValidateLayout(*layout);
-  out.metrics = MeasureLayout(*layout);
+  out.metrics = MeasureLayout(*layout, out.report);
   return out;
 }
 

@@ -7,11 +7,15 @@
 namespace villa {
 
 LayoutMetrics MeasureLayout(const Layout& layout) {
-  LayoutMetrics m;
-  m.parsed = true;
   ValidateOptions geometric;
   geometric.check_architecture = false;
-  m.format_success = ValidateLayout(layout, geometric).geometric_ok();
+  return MeasureLayout(layout, ValidateLayout(layout, geometric));
+}
+
+LayoutMetrics MeasureLayout(const Layout& layout, const ValidationReport& report) {
+  LayoutMetrics m;
+  m.parsed = true;
+  m.format_success = report.geometric_ok();
 
   const int levels = layout.LevelCount();
   const std::vector<Connection> connections = RoomConnections(layout);

@@ -22,6 +22,10 @@ struct LayoutMetrics {
 };
 
 LayoutMetrics MeasureLayout(const Layout& layout);
+// The same, taking format success from a validation already made (ValidateLayout with any options: rules
+// 1-5 do not depend on them), so a caller that validates anyway does not validate twice.
+struct ValidationReport;
+LayoutMetrics MeasureLayout(const Layout& layout, const ValidationReport& report);
 
 // Sums over a set of outputs; ratios in [0, 1], empty when the denominator is zero.
 struct MetricsSummary {

@@ -101,3 +101,18 @@ TEST_CASE("MetricsSummary pools outputs, an unparsed one counting against FSR", 
   CHECK(summary.floor_pairs == 4);
   CHECK(*summary.vcr() == Approx(1.0));
 }
+
+TEST_CASE("MeasureLayout with a report already made gives the same figures", "[metrics]") {
+  for (const char* name : {"house_two_floors.json", "paper_example.json", "rule5_narrow_door.json", "rule9_kitchen_without_window.json"}) {
+    Layout layout = Fixture(name);
+    LayoutMetrics a = MeasureLayout(layout);
+    LayoutMetrics b = MeasureLayout(layout, ValidateLayout(layout));
+    INFO(name);
+    CHECK(a.format_success == b.format_success);
+    CHECK(a.rooms_reached_per_floor == b.rooms_reached_per_floor);
+    CHECK(a.rooms_reached_from_entrance == b.rooms_reached_from_entrance);
+    CHECK(a.floor_pairs_connected == b.floor_pairs_connected);
+  }
+  CHECK_FALSE(MeasureLayout(Fixture("rule5_narrow_door.json")).format_success);
+  CHECK(MeasureLayout(Fixture("rule9_kitchen_without_window.json")).format_success);
+}
