@@ -335,7 +335,7 @@ struct FloorPlanSpec {
 
 int SampleRoomsPerFloor(const PartitionOptions& o, Rng& rng) {
   // 3..6 rooms (staircase included) with an average of about 5.
-  static const double kWeights[4] = {0.07, 0.20, 0.38, 0.35};
+  static const double kWeights[4] = {0.10, 0.26, 0.38, 0.26};
   int n = 3 + rng.Weighted(kWeights, 4);
   return std::clamp(n, o.min_rooms_per_floor, o.max_rooms_per_floor);
 }
@@ -1075,8 +1075,8 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
   }
   const double g2 = scale.grid * scale.grid;
   BspLimits limits;
-  limits.min_area2 = static_cast<int64_t>(std::ceil(2.0 * 6.0 / g2));
-  limits.min_side = scale.UnitsUp(2.0);
+  limits.min_area2 = static_cast<int64_t>(std::ceil(2.0 * 7.0 / g2));
+  limits.min_side = scale.UnitsUp(2.5);
   limits.min_width = 1.2 / scale.grid;
 
   std::vector<IRing> footprints{ground};
@@ -1084,6 +1084,19 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     const int rooms = plan.specs[static_cast<std::size_t>(l)].size() + 1;
     const int64_t min_area2 = static_cast<int64_t>(2.0 * (16.0 + 14.0 * (rooms - 1)) / g2);
     footprints.push_back(partition::UpperFootprint(footprints.back(), stair, min_area2, scale, rng));
+  }
+  // A spacious floor gets more rooms from the priors (about one per 30 m2, at most the cap), unless the
+  // building is limited to the required rooms.
+  std::vector<FloorPlanSpec> specs = plan.specs;
+  if (!o.only_required_rooms) {
+    const int cap = o.max_rooms_per_floor - (stair ? 1 : 0);
+    for (int l = 0; l < F; ++l) {
+      const double area = static_cast<double>(partition::TwiceArea(footprints[static_cast<std::size_t>(l)])) * g2 / 2.0 -
+                          (stair ? 16.0 : 0.0);
+      const int want = std::min(cap, static_cast<int>(area / 30.0));
+      if (want > specs[static_cast<std::size_t>(l)].size())
+        FillFromPriors(specs[static_cast<std::size_t>(l)], l, F, want, rng);
+    }
   }
   Building& b = result.building;
   for (int l = 0; l < F; ++l) {
@@ -1103,7 +1116,7 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
         result.reason = "floor (beside the staircase) too narrow for rooms";
         return result;
       }
-    const FloorPlanSpec& spec = plan.specs[static_cast<std::size_t>(l)];
+    const FloorPlanSpec& spec = specs[static_cast<std::size_t>(l)];
     // Room sizes the plan asks for: every category at about its usual size, except the largest (the
     // living room, else the biggest by prior), which takes what is left.
     std::vector<Category> planned = spec.must;
@@ -1117,14 +1130,19 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
         auto size = [](Category c) { return c == Category::kLivingRoom ? 1e9 : PreferredArea(c); };
         if (size(planned[k]) > size(planned[largest])) largest = k;
       }
+      // On a spacious floor every room grows a little (up to 1.6x its usual size); the rest of the area
+      // goes to the largest room. On a tight floor all shrink to leave the largest a quarter.
+      const double area = static_cast<double>(floor_area2) * g2 / 2.0;
+      const double per_room = area / static_cast<double>(std::max<std::size_t>(1, planned.size()));
+      const double grow = std::clamp(per_room / 22.0, 1.0, 1.6);
       double sum = 0.0;
       std::vector<double> metres;
       for (std::size_t k = 0; k < planned.size(); ++k) {
         if (k == largest) continue;
-        metres.push_back(PreferredArea(planned[k]) * (0.8 + 0.45 * rng.Unit()));
+        metres.push_back(PreferredArea(planned[k]) * grow * (0.8 + 0.45 * rng.Unit()));
         sum += metres.back();
       }
-      const double budget = 0.75 * static_cast<double>(floor_area2) * g2 / 2.0;
+      const double budget = 0.75 * area;
       const double shrink = sum > budget ? budget / sum : 1.0;
       for (double m : metres) wanted.push_back(static_cast<int64_t>(2.0 * m * shrink / g2));
     }
