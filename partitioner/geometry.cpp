@@ -40,8 +40,12 @@ struct DirectedEdge {
 std::vector<IRing> AssembleLoops(std::vector<DirectedEdge>& edges) {
   std::vector<IRing> loops;
   // Sort by start point for lookup.
+  // A total order (start, then end point), so the loops come out the same with any sort algorithm.
   std::sort(edges.begin(), edges.end(), [](const DirectedEdge& l, const DirectedEdge& r) {
-    return l.a.x != r.a.x ? l.a.x < r.a.x : l.a.y < r.a.y;
+    if (l.a.x != r.a.x) return l.a.x < r.a.x;
+    if (l.a.y != r.a.y) return l.a.y < r.a.y;
+    if (l.b.x != r.b.x) return l.b.x < r.b.x;
+    return l.b.y < r.b.y;
   });
   auto range = [&](IPoint p) {
     auto lo = std::lower_bound(edges.begin(), edges.end(), p, [](const DirectedEdge& e, IPoint q) {

@@ -505,7 +505,8 @@ struct LabelSearch {
       if (NeedsWindow(c) && !f.window_ok[r]) continue;
       order.push_back({score[slot][r], static_cast<int>(r)});
     }
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::sort(order.begin(), order.end(),
+              [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
     for (const auto& [s, r] : order) {
       // Identical categories in consecutive slots: keep room indices increasing (no symmetric repeats).
       if (slot > 0 && slots[slot - 1] == c) {
@@ -841,7 +842,7 @@ Layout BuildLayout(const Building& b, double grid) {
     auto key = [&](std::size_t i) {
       const IBox box = partition::BoundingBox(f.rooms[i]);
       const int rank = static_cast<int>(i) == f.stair ? -1 : static_cast<int>(f.categories[i]);
-      return std::make_tuple(rank, box.min_y, box.min_x, box.max_y, box.max_x);
+      return std::make_tuple(rank, box.min_y, box.min_x, box.max_y, box.max_x, i);
     };
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return key(a) < key(c); });
     std::vector<std::string> token(n);
@@ -1329,17 +1330,24 @@ uint64_t DatasetLayoutSeed(uint64_t dataset_seed, uint64_t index) {
 }
 
 std::vector<int> DatasetFloorPlan(uint64_t count, const double weights[3]) {
-  // Exact totals by largest remainder, then an interleaving by smallest relative progress.
-  double total = weights[0] + weights[1] + weights[2];
+  // Exact totals by largest remainder (ties: fewer floors first), then an interleaving: position i goes
+  // to the class furthest behind its share target * (i + 1) / count, compared in exact integers so every
+  // platform gives the same sequence.
+  const double total = weights[0] + weights[1] + weights[2];
+  if (!(total > 0.0)) return std::vector<int>(count, 1);
   std::array<uint64_t, 3> target{0, 0, 0};
-  if (total <= 0.0) return std::vector<int>(count, 1);
   std::array<double, 3> rem{};
   uint64_t assigned = 0;
   for (int f = 0; f < 3; ++f) {
-    const long double exact = static_cast<long double>(count) * weights[f] / total;
+    const double exact = static_cast<double>(count) * weights[f] / total;
     target[f] = static_cast<uint64_t>(std::floor(exact));
-    rem[f] = static_cast<double>(exact - static_cast<long double>(target[f]));
+    rem[f] = exact - static_cast<double>(target[f]);
     assigned += target[f];
+  }
+  while (assigned > count) {  // rounding of huge counts: take back from the largest class
+    int f = static_cast<int>(std::max_element(target.begin(), target.end()) - target.begin());
+    --target[f];
+    --assigned;
   }
   while (assigned < count) {
     int best = 0;
@@ -1353,14 +1361,13 @@ std::vector<int> DatasetFloorPlan(uint64_t count, const double weights[3]) {
   plan.reserve(count);
   std::array<uint64_t, 3> made{0, 0, 0};
   for (uint64_t i = 0; i < count; ++i) {
-    // The class furthest behind its share of the positions so far (ties: fewer floors first).
     int best = -1;
-    long double best_deficit = 0.0;
+    __int128 best_deficit = 0;
     for (int f = 0; f < 3; ++f) {
       if (made[f] >= target[f]) continue;
-      const long double deficit =
-          static_cast<long double>(target[f]) * static_cast<long double>(i + 1) / static_cast<long double>(count) -
-          static_cast<long double>(made[f]);
+      // deficit * count = target * (i + 1) - made * count
+      const __int128 deficit = static_cast<__int128>(target[f]) * static_cast<__int128>(i + 1) -
+                               static_cast<__int128>(made[f]) * static_cast<__int128>(count);
       if (best < 0 || deficit > best_deficit) best = f, best_deficit = deficit;
     }
     ++made[static_cast<std::size_t>(best)];
