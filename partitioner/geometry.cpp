@@ -375,9 +375,23 @@ bool SubtractBox(const IRing& ring, const IBox& box, std::vector<IRing>* out) {
   };
   const Cut cuts[] = {{Axis::kX, box.min_x, true}, {Axis::kX, box.max_x, false},
                       {Axis::kY, box.min_y, true}, {Axis::kY, box.max_y, false}};
+  const IBox rb = BoundingBox(ring);
+  if (box.max_x <= rb.min_x || box.min_x >= rb.max_x || box.max_y <= rb.min_y || box.min_y >= rb.max_y) {
+    *out = {ring};  // no overlap
+    return true;
+  }
   for (const Cut& cut : cuts) {
     std::vector<IRing> next;
-    for (const IRing& piece : work) {
+    for (IRing& piece : work) {
+      // A line that misses the piece leaves it whole on one side.
+      const IBox pb = BoundingBox(piece);
+      const int64_t lo = cut.axis == Axis::kX ? pb.min_x : pb.min_y;
+      const int64_t hi = cut.axis == Axis::kX ? pb.max_x : pb.max_y;
+      if (cut.k <= lo || cut.k >= hi) {
+        const bool piece_low = cut.k >= hi;
+        (piece_low == cut.keep_low ? keep : next).push_back(std::move(piece));
+        continue;
+      }
       std::vector<IRing> low, high;
       if (!SplitRing(piece, cut.axis, cut.k, &low, &high)) return false;
       for (auto& r : (cut.keep_low ? low : high)) keep.push_back(std::move(r));
@@ -387,6 +401,10 @@ bool SubtractBox(const IRing& ring, const IBox& box, std::vector<IRing>* out) {
   }
   if (keep.empty()) {
     out->clear();
+    return true;
+  }
+  if (keep.size() == 1) {
+    *out = std::move(keep);
     return true;
   }
   std::vector<IRing> merged = UnionTiles(keep);

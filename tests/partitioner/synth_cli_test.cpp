@@ -172,3 +172,21 @@ TEST_CASE("villa synth rejects bad arguments with exit 2 and a clear message", "
   }
   CHECK(!fs::exists(tmp.path / "x" / "layouts.jsonl"));
 }
+
+#ifdef VILLA_HAVE_RENDER
+TEST_CASE("villa synth --previews renders the first layouts of the shard", "[partitioner][synth]") {
+  TempDir tmp;
+  const Run run = Villa("synth --count 6 --shard 1/2 --previews 2 --out '" + tmp.path.string() + "'");
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  // Shard 1/2 of 6 holds ids 3..5; the first two are previewed.
+  for (const char* id : {"villa-000003", "villa-000004"}) {
+    const std::string png = Slurp(tmp.path / "previews" / (std::string(id) + ".png"));
+    REQUIRE(png.size() > 1000);
+    CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+  }
+  CHECK(!fs::exists(tmp.path / "previews" / "villa-000005.png"));
+  const villa::Json manifest = villa::Json::parse(Slurp(tmp.path / "manifest.json"));
+  CHECK(manifest.at("files").at("previews").size() == 2);
+}
+#endif
