@@ -33,7 +33,7 @@
 //     door connection and no open connection.
 // 10. On a level with a dining room, every kitchen connects directly (door or open) to one; on a level
 //     with a kitchen or dining room, every living room connects directly to one of them. A nested room
-//     (one neighbour through doors/opens, no staircase link, not touched by the entrance, of a private
+//     (exactly one door/open connection, no staircase link, not touched by the entrance, of a private
 //     category: bedroom, bathroom, children-room, office, meeting-room, balcony) is joined by doors only
 //     (for a balcony rule 9 reports it already, so rule 10 does not repeat it).
 //
@@ -725,16 +725,12 @@ class Validator {
           !connects_to({Category::kKitchen, Category::kDiningRoom}))
         Add(10, {Name(i)}, Name(i) + " connects to neither a kitchen nor a dining room of level " + std::to_string(room.level));
       // Balconies are private too, but rule 9 already holds them to doors only.
-      if (!IsPrivate(room.category) || room.category == Category::kBalcony || stair[i] || by_room[i].empty()) continue;
+      if (!IsPrivate(room.category) || room.category == Category::kBalcony || stair[i] || by_room[i].size() != 1) continue;
       if (std::find(entrance_rooms.begin(), entrance_rooms.end(), static_cast<int>(i)) != entrance_rooms.end()) continue;
-      int neighbour = other(by_room[i][0], static_cast<int>(i));
-      bool single = true;
-      for (const Connection* k : by_room[i]) single = single && other(k, static_cast<int>(i)) == neighbour;
-      if (!single) continue;
-      for (const Connection* k : by_room[i])
-        if (k->via == Via::kOpen)
-          Add(10, {Name(i), k->element},
-              Name(i) + " is reached only from " + Name(neighbour) + ", through open " + k->element +
+      const Connection* only = by_room[i][0];
+      if (only->via == Via::kOpen)
+        Add(10, {Name(i), only->element},
+            Name(i) + " is reached only from " + Name(other(only, static_cast<int>(i))) + ", through open " + only->element +
                   "; a nested room needs a door");
     }
   }
