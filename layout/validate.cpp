@@ -34,7 +34,7 @@
 // 10. On a level with a dining room, every kitchen connects directly (door or open) to one; on a level
 //     with a kitchen or dining room, every living room connects directly to one of them. A nested room
 //     (exactly one door/open connection, no staircase link, not touched by the entrance, of a private
-//     category: bedroom, bathroom, children-room, office, meeting-room, balcony) is joined by doors only
+//     category: bedroom, bathroom, children-room, office, meeting-room, balcony) is joined by a door, not an open
 //     (for a balcony rule 9 reports it already, so rule 10 does not repeat it).
 //
 // Speed: rooms are cached with their bounding boxes, areas and shapes; all boundary work is on segments

@@ -369,3 +369,13 @@ TEST_CASE("geometric-only validation skips the architecture rules", "[validate]"
   CHECK(ValidateLayout(Fixture("rule9_kitchen_without_window.json"), options).valid());
   CHECK_FALSE(ValidateLayout(Fixture("rule4_missing_wall.json"), options).valid());
 }
+
+TEST_CASE("rule 10: a private room with two connections is not nested", "[validate][rule10]") {
+  Layout layout = Fixture("rule10_nested_room_open.json");
+  REQUIRE(ValidateLayout(layout).CountRule(10) == 1);
+  // A second way into the bathroom, a door from the bedroom: it is no longer nested, its open is fine.
+  layout.doors.push_back({"bedroom0_bathroom0", ElementKind::kDoor, {{5, 6}, {5, 7}}, 0});
+  ValidationReport report = ValidateLayout(layout);
+  INFO(Describe(report));
+  CHECK(report.valid());
+}
