@@ -1164,11 +1164,24 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     AnalyseFloor(f, s);
     const auto& links = plan.links[static_cast<std::size_t>(l)];
     if (!LabelFloor(f, categories, links, s, rng)) {
-      if (links.empty() || !LabelFloor(f, categories, {}, s, rng)) {
+      bool labelled = !links.empty() && LabelFloor(f, categories, {}, s, rng);
+      if (labelled) {
+        result.relaxed_links = true;
+      } else if (!o.only_required_rooms) {
+        // Second chance with the prior fill's most demanding room (a bathroom or balcony needs a window
+        // and ends a path; a dining room must sit by the kitchen) swapped for a plain one.
+        for (std::size_t k = categories.size(); k-- > spec.must.size() && !labelled;) {
+          const Category c = categories[k];
+          if (!IsLeaf(c) && c != Category::kDiningRoom) continue;
+          categories[k] = l == 0 ? Category::kOffice : Category::kBedroom;
+          labelled = LabelFloor(f, categories, links, s, rng);
+          if (!labelled) categories[k] = c;
+        }
+      }
+      if (!labelled) {
         result.reason = "no labelling meets the rules";
         return result;
       }
-      result.relaxed_links = true;
     }
     FloorElements e;
     if (!ConnectFloor(f, result.relaxed_links ? std::vector<ConnectionRequirement>{} : links, s, rng, &e)) {
