@@ -15,6 +15,10 @@ namespace villa {
 // `only_required` asks for exactly the rooms the brief lists.
 PartitionOptions PartitionOptionsForBrief(const Brief& brief, int floors, bool only_required);
 
+// Replaces the whole-building room counts of `o` by per-floor ones of our own choosing (living spaces
+// low, bedrooms and balconies high, the rest where there is space; ties shuffled by `seed`).
+void DistributeRooms(PartitionOptions& o, std::uint64_t seed);
+
 // Generate-and-test over partitioner seeds within options.time_budget_s / options.max_attempts.
 // Sets summary.layout (the best valid candidate), summary.shape_class, summary.attempts, summary.rounds
 // (one record) and summary.error when nothing valid came out.

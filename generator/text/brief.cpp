@@ -257,7 +257,9 @@ const std::unordered_set<std::string>& FillerWords() {
       "kind", "sort", "type", "way", "part", "stairs", "staircase", "stairway", "stair", "staircases",
       "stairwell", "window", "windows", "wall", "walls", "door", "doors", "shaped", "shape", "form",
       "floors", "mix", "people", "guests", "guest", "friends", "kid", "kids", "children", "parents",
-      "we're", "im", "ive", "id", "youre", "theyre", "its", "dont", "count", "storey", "story",
+      "im", "ive", "id", "youre", "theyre", "its", "count", "storey", "story", "wed", "weve", "youd",
+      "youll", "ill", "itll", "thats", "theres", "heres", "whats", "lets", "hes", "shes", "theyll", "hoping",
+      "looking", "searching", "wondering", "planning", "considering", "thinking", "floor", "number",
       // quality adjectives and adverbs that ask for nothing checkable
       "large", "big", "huge", "spacious", "generous", "roomy", "small", "little", "compact", "tiny",
       "cozy", "cosy", "bright", "sunny", "airy", "light", "modern", "contemporary", "classic",
@@ -299,7 +301,8 @@ bool IsAdjective(const Token& t) {
 
 bool IsNegation(const Token& t) {
   return In(t, {"no", "not", "without", "dont", "doesnt", "never", "zero", "nor", "neither", "cannot",
-                "wont", "none", "exclude", "excluding", "except", "skip", "omit"});
+                "wont", "none", "exclude", "excluding", "except", "skip", "omit", "cant", "shouldnt",
+                "wouldnt", "isnt", "arent", "didnt"});
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -644,6 +647,12 @@ int Parser::TryFloorCount(std::size_t i, Item& item) {
     item.floors_at_least = true;
     return len;
   }
+  // "Floors: 3", "Number of stories: 2" (spec style).
+  if (IsFloorNoun(t) && i + 2 < tokens_.size() && tokens_[i + 1].punct == ':' && Cardinal(tokens_[i + 2]) &&
+      !In(tokens_[i + 2], {"single", "double", "triple"})) {
+    item.floors = *Cardinal(tokens_[i + 2]);
+    return 3;
+  }
   auto n = Cardinal(t);
   if (!n || i + 1 >= tokens_.size()) return 0;
   const Token& next = tokens_[i + 1];
@@ -976,7 +985,10 @@ void Parser::Quantify(Mention& m) {
   const Token* t = at(k);
   auto negated_before = [&](int from) {
     for (int j = from, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
-      if (IsNegation(tokens_[j])) return true;
+      if (IsNegation(tokens_[j])) {
+        tokens_[j].consumed = true;
+        return true;
+      }
       if (tokens_[j].punct || tokens_[j].item >= 0) return false;
       if (!In(tokens_[j], {"need", "want", "have", "require", "include", "any", "for", "a", "an", "will",
                            "should", "would", "do", "does", "is", "are", "there", "be", "like", "must", "it",
@@ -1209,6 +1221,11 @@ void Parser::Connect() {
   auto add = [&](int a, int b, LinkKind kind, bool every, TextSpan source) {
     if (a < 0 || b < 0 || a == b) return;
     if (mentions_[a].category == mentions_[b].category) return;
+    // A balcony or a bathroom "opening onto" a room does so through a door (FORMAT.md rules 9, 10).
+    for (int m : {a, b})
+      if (kind == LinkKind::kOpen &&
+          (mentions_[m].category == Category::kBalcony || mentions_[m].category == Category::kBathroom))
+        kind = LinkKind::kAny;
     connections_.push_back({a, b, kind, every, std::move(source)});
     mentions_[a].in_connection = mentions_[b].in_connection = true;
     mentions_[a].partners.push_back(b);

@@ -45,7 +45,109 @@ std::vector<int> FloorCandidates(const Brief& brief) {
   return out;
 }
 
+// A small deterministic generator for the placement shuffles (no std::*_distribution).
+struct Rng {
+  std::uint64_t state;
+  std::uint64_t Next() { return state = SplitMix(state); }
+  int Below(int n) { return n <= 1 ? 0 : static_cast<int>(Next() % static_cast<std::uint64_t>(n)); }
+};
+
+// Where a room of this category goes when the brief does not say: living spaces low, sleeping rooms and
+// balconies high, the rest where there is space.
+enum class Preference { kLow, kHigh, kEmptiest };
+Preference PreferenceOf(Category c) {
+  switch (c) {
+    case Category::kLivingRoom:
+    case Category::kKitchen:
+    case Category::kDiningRoom:
+    case Category::kMeetingRoom: return Preference::kLow;
+    case Category::kBedroom:
+    case Category::kChildrenRoom:
+    case Category::kBalcony: return Preference::kHigh;
+    default: return Preference::kEmptiest;
+  }
+}
+
 }  // namespace
+
+// Turns whole-building counts into per-floor ones (a floor-plan of our own choosing, shuffled by `seed`),
+// so that with only_required_rooms the building holds exactly the rooms asked for and no floor is left
+// for the priors to fill.
+void DistributeRooms(PartitionOptions& o, std::uint64_t seed) {
+  const int floors = std::max(o.floors, 1);
+  const int cap = o.max_rooms_per_floor - (floors > 1 ? 1 : 0);
+  std::vector<int> load(static_cast<std::size_t>(floors), 0);
+  std::vector<RoomRequirement> fixed, loose;
+  for (const auto& r : o.rooms) {
+    if (r.level >= 0) {
+      fixed.push_back(r);
+      if (!(floors > 1 && r.category == Category::kUtilityRoom)) load[static_cast<std::size_t>(r.level)] += r.count;
+    } else if (r.count > 0 && !(floors > 1 && r.category == Category::kUtilityRoom)) {
+      loose.push_back(r);
+    } else {
+      fixed.push_back(r);  // "no balcony", staircase rooms: the partitioner's business
+    }
+  }
+  if (loose.empty()) return;
+  Rng rng{seed};
+  std::map<std::pair<int, int>, int> placed;  // (category, level) -> count
+  for (const auto& r : loose) {
+    for (int k = 0; k < r.count; ++k) {
+      std::vector<int> order;
+      for (int l = 0; l < floors; ++l) order.push_back(l);
+      const Preference pref = PreferenceOf(r.category);
+      if (pref == Preference::kHigh && floors > 1) {
+        std::rotate(order.begin(), order.begin() + 1, order.end());  // 1, 2, ..., 0
+        if (floors == 3 && rng.Below(2)) std::swap(order[0], order[1]);
+      } else if (pref == Preference::kEmptiest) {
+        for (int i = floors - 1; i > 0; --i) std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(rng.Below(i + 1))]);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return load[static_cast<std::size_t>(a)] < load[static_cast<std::size_t>(b)]; });
+      }
+      int level = -1;
+      for (int l : order)
+        if (load[static_cast<std::size_t>(l)] < cap && !(r.category == Category::kBalcony && floors > 1 && l == 0)) {
+          level = l;
+          break;
+        }
+      if (level < 0) level = order.front();  // over capacity: the partitioner reports it
+      ++load[static_cast<std::size_t>(level)];
+      ++placed[{static_cast<int>(r.category), level}];
+    }
+  }
+  // A floor with a single room beside its staircase looks odd and tempts the priors: move one over from
+  // the fullest floor when its category may live there.
+  for (int l = 0; l < floors; ++l) {
+    while (load[static_cast<std::size_t>(l)] < 2) {
+      int from = static_cast<int>(std::max_element(load.begin(), load.end()) - load.begin());
+      if (load[static_cast<std::size_t>(from)] <= 2) break;
+      bool moved = false;
+      for (auto& [key, n] : placed) {
+        if (key.second != from || n == 0) continue;
+        Category c = static_cast<Category>(key.first);
+        if (c == Category::kBalcony && l == 0 && floors > 1) continue;
+        if (c == Category::kLivingRoom || c == Category::kKitchen) continue;
+        --n;
+        ++placed[{key.first, l}];
+        --load[static_cast<std::size_t>(from)];
+        ++load[static_cast<std::size_t>(l)];
+        moved = true;
+        break;
+      }
+      if (!moved) break;
+    }
+  }
+  o.rooms = fixed;
+  for (const auto& [key, n] : placed)
+    if (n > 0) {
+      bool merged = false;
+      for (auto& r : o.rooms)
+        if (static_cast<int>(r.category) == key.first && r.level == key.second) {
+          r.count += n;
+          merged = true;
+        }
+      if (!merged) o.rooms.push_back({static_cast<Category>(key.first), n, key.second});
+    }
+}
 
 PartitionOptions PartitionOptionsForBrief(const Brief& brief, int floors, bool only_required) {
   PartitionOptions o;
@@ -160,6 +262,8 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     const int f = floors[static_cast<std::size_t>(a) % floors.size()];
     const bool only_required = ((a / static_cast<int>(floors.size())) % 2 == 0) == prefer_only_required;
     PartitionOptions po = PartitionOptionsForBrief(brief, f, only_required);
+    // Every other round of variants places the whole-building counts ourselves.
+    if ((a / (2 * static_cast<int>(floors.size()))) % 2 == 0) DistributeRooms(po, SplitMix(options.seed ^ (0xD15Full + a)));
     const std::uint64_t seed = SplitMix(options.seed * 0x100000001B3ull + static_cast<std::uint64_t>(a));
     PartitionSummary ps = GenerateLayout(po, seed);
     ++attempts;

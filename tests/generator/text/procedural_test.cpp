@@ -1,0 +1,152 @@
+// The procedural backend on 100+ varied requests (tests/fixtures/prompts/varied.jsonl, five styles):
+// every layout valid, every requirement of the brief met, and the parsed brief equal to what the prompt
+// was written to ask (floors, footprint class, rooms per category, rooms per floor).
+#include <map>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "generator/text/backends.h"
+#include "generator/text/plan.h"
+#include "layout/layout_io.h"
+
+namespace villa {
+namespace {
+
+struct PromptCase {
+  int line = 0;
+  Json record;
+};
+
+std::vector<PromptCase> LoadPrompts() {
+  std::vector<PromptCase> out;
+  Status status = ReadJsonl(std::string(VILLA_FIXTURE_DIR) + "/prompts/varied.jsonl", [&](const Json& record, int line) {
+    out.push_back({line, record});
+    return true;
+  });
+  REQUIRE(status.ok());
+  return out;
+}
+
+std::map<std::string, int> CountCategories(const Layout& layout, int level) {
+  std::map<std::string, int> out;
+  for (const Room& r : layout.rooms)
+    if (level < 0 || r.level == level) ++out[std::string(CategoryName(r.category))];
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the procedural backend meets every brief of the varied prompts with valid layouts") {
+  const auto prompts = LoadPrompts();
+  REQUIRE(prompts.size() >= 100);
+  PlanOptions options;
+  options.time_budget_s = 4.0;  // a ceiling for slow machines; most briefs are met in a few attempts
+  int met = 0;
+  std::map<std::string, int> styles;
+  for (const auto& p : prompts) {
+    const std::string text = p.record.at("text").get<std::string>();
+    const Json& expect = p.record.at("expect");
+    options.seed = static_cast<std::uint64_t>(p.line);
+    PlanSummary plan = PlanLayout(text, options);
+    INFO("line " << p.line << ": " << text << "\n" << plan.BriefReport());
+    REQUIRE(plan.layout.has_value());
+    CHECK(plan.violations.empty());
+    CHECK(plan.valid());
+    CHECK(plan.brief.unparsed.empty());
+    CHECK(plan.brief.conflicts.empty());
+    CHECK(plan.outcome == PlanOutcome::kMet);
+    met += plan.outcome == PlanOutcome::kMet;
+    ++styles[p.record.at("style").get<std::string>()];
+    // What the prompt was written to ask, read back from the layout that meets the parsed brief.
+    CHECK(plan.layout->LevelCount() == expect.at("floors").get<int>());
+    CHECK(plan.brief.shape.has_value());
+    if (plan.brief.shape) CHECK(std::string(ShapeClassName(*plan.brief.shape)) == expect.at("shape").get<std::string>());
+    const auto counts = CountCategories(*plan.layout, -1);
+    for (const auto& [category, n] : expect.at("rooms").items()) {
+      INFO(category);
+      auto it = counts.find(category);
+      CHECK((it == counts.end() ? 0 : it->second) == n.get<int>());
+    }
+    if (expect.contains("levels")) {
+      for (const auto& [level, rooms] : expect.at("levels").items()) {
+        const auto on_level = CountCategories(*plan.layout, std::stoi(level));
+        for (const auto& [category, n] : rooms.items()) {
+          INFO(category << " on level " << level);
+          auto it = on_level.find(category);
+          CHECK((it == on_level.end() ? 0 : it->second) == n.get<int>());
+        }
+      }
+    }
+  }
+  CHECK(met == static_cast<int>(prompts.size()));
+  CHECK(styles.size() >= 5);
+}
+
+TEST_CASE("the procedural backend is deterministic for a seed") {
+  PlanOptions options;
+  options.seed = 7;
+  const std::string text = "A two-story L-shaped house with a living room, a kitchen, a dining room, two bedrooms, "
+                           "a bathroom on each floor and a balcony.";
+  PlanSummary a = PlanLayout(text, options);
+  PlanSummary b = PlanLayout(text, options);
+  REQUIRE(a.valid());
+  REQUIRE(b.valid());
+  CHECK(LayoutToString(*a.layout) == LayoutToString(*b.layout));
+  options.seed = 8;
+  PlanSummary c = PlanLayout(text, options);
+  REQUIRE(c.valid());
+  CHECK(LayoutToString(*a.layout) != LayoutToString(*c.layout));
+}
+
+TEST_CASE("requirements the partitioner cannot meet are reported, and the layout is still valid") {
+  PlanOptions options;
+  options.time_budget_s = 0.5;
+  SECTION("a star-shaped footprint") {
+    PlanSummary plan = PlanLayout("A star-shaped two-story villa with a kitchen and three bedrooms.", options);
+    REQUIRE(plan.valid());
+    CHECK(plan.outcome == PlanOutcome::kPartial);
+    REQUIRE(plan.brief.unsupported_shape.has_value());
+    CHECK(plan.brief.unsupported_shape->text == "star-shaped");
+    bool reported = false;
+    for (const auto& u : plan.unmet) reported |= u.requirement.find("star-shaped") != std::string::npos;
+    CHECK(reported);
+  }
+  SECTION("more floors than the format allows") {
+    PlanSummary plan = PlanLayout("A five-storey tower house with a kitchen.", options);
+    REQUIRE(plan.valid());
+    CHECK(plan.layout->LevelCount() == 3);
+    CHECK(plan.outcome == PlanOutcome::kPartial);
+    REQUIRE(!plan.brief.conflicts.empty());
+    CHECK(plan.brief.conflicts[0].find("at most 3") != std::string::npos);
+    REQUIRE(plan.unmet.size() >= 1);
+    CHECK(plan.unmet[0].requirement == "5 floors");
+    CHECK(plan.unmet[0].detail == "has 3");
+  }
+}
+
+TEST_CASE("whole-building counts are spread over the floors without losing a room") {
+  Brief brief = ParseBrief("A three-story villa with a living room, a kitchen, a dining room, four bedrooms, "
+                           "two bathrooms, an office and two balconies.");
+  PartitionOptions o = PartitionOptionsForBrief(brief, 3, true);
+  DistributeRooms(o, 42);
+  std::map<int, int> per_level;
+  std::map<Category, int> per_category;
+  for (const auto& r : o.rooms) {
+    if (r.category == Category::kUtilityRoom) continue;
+    REQUIRE(r.level >= 0);
+    per_level[r.level] += r.count;
+    per_category[r.category] += r.count;
+    if (r.category == Category::kBalcony) CHECK(r.level > 0);
+  }
+  CHECK(per_category[Category::kBedroom] == 4);
+  CHECK(per_category[Category::kBathroom] == 2);
+  CHECK(per_category[Category::kBalcony] == 2);
+  CHECK(per_category[Category::kLivingRoom] == 1);
+  for (const auto& [level, n] : per_level) {
+    CHECK(n >= 2);
+    CHECK(n <= kMaxRoomsPerFloor - 1);
+  }
+}
+
+}  // namespace villa
