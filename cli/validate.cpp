@@ -70,10 +70,46 @@ Checked Check(std::string source, std::string id, const Result<Layout>& layout) 
   return out;
 }
 
+// The answer of the last turn by `role` in a chat array (`role_key`/`text_key`: "role"/"content" for the
+// messages format, "from"/"value" for ShareGPT).
+const Json* LastTurn(const Json& turns, const char* role_key, const char* text_key, std::initializer_list<const char*> roles,
+                     std::size_t* index) {
+  if (!turns.is_array()) return nullptr;
+  for (std::size_t i = turns.size(); i-- > 0;) {
+    const Json& turn = turns[i];
+    if (!turn.is_object() || !turn.contains(role_key) || !turn.contains(text_key) || !turn[text_key].is_string()) continue;
+    for (const char* role : roles)
+      if (turn[role_key] == role) {
+        *index = i;
+        return &turn[text_key];
+      }
+  }
+  return nullptr;
+}
+
+// A layout from one record: the layout itself; {"layout": {...}} or {"layout": "text"}; or a fine-tuning
+// sample whose answer is the layout text (messages / ShareGPT conversations / Alpaca output).
 Result<Layout> LayoutOfRecord(const Json& record, const std::string& source) {
-  // A dataset record may carry the layout as text (an LLM answer) rather than as an object.
-  if (record.is_object() && !record.contains("rooms") && record.contains("layout") && record.at("layout").is_string())
-    return ParseLayoutText(record.at("layout").get<std::string>(), source + ": layout");
+  if (record.is_object() && !record.contains("rooms")) {
+    if (record.contains("layout") && record.at("layout").is_string())
+      return ParseLayoutText(record.at("layout").get<std::string>(), source + ": layout");
+    std::size_t index = 0;
+    if (record.contains("messages")) {
+      if (const Json* text = LastTurn(record.at("messages"), "role", "content", {"assistant"}, &index))
+        return ParseLayoutText(text->get<std::string>(), source + ": messages[" + std::to_string(index) + "].content");
+      return Error{source + ": messages: no assistant answer"};
+    }
+    if (record.contains("conversations")) {
+      if (const Json* text = LastTurn(record.at("conversations"), "from", "value", {"gpt", "assistant"}, &index))
+        return ParseLayoutText(text->get<std::string>(), source + ": conversations[" + std::to_string(index) + "].value");
+      return Error{source + ": conversations: no gpt answer"};
+    }
+    if (record.contains("output") && record.at("output").is_string())
+      return ParseLayoutText(record.at("output").get<std::string>(), source + ": output");
+    if (!record.contains("layout"))
+      return Error{source + ": a record needs the layout keys, a \"layout\" key, or a fine-tuning answer (messages, "
+                            "conversations or output)"};
+  }
   return LayoutFromRecord(record, source);
 }
 
@@ -229,8 +265,10 @@ Registration registration{20, [](CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "validate",
       "Check layouts against the rules 1-10 of the layout format and report FSR, RR and VCR.\n"
-      "FILE is a layout (.json: the layout, or a record with a \"layout\" key) or a JSONL stream (.jsonl: one record a line, the layout itself or a record\n"
-      "with a \"layout\" key and an optional \"id\"). Prints a line per invalid layout, then a summary.\n"
+      "FILE is a layout (.json) or a JSONL stream (.jsonl, one record a line). A record is the layout itself,\n"
+      "{\"layout\": ...} (an object or its text) with an optional \"id\", or a fine-tuning sample whose answer is\n"
+      "the layout (messages, ShareGPT conversations, Alpaca output). Prints a line per invalid layout, then\n"
+      "a summary.\n"
       "Exit status: 0 all valid, 1 some layout invalid or unparsable, 2 usage (no file, missing file).");
   sub->add_option("files", command->files, "layout files (.json) or JSONL streams (.jsonl)")->required();
   sub->add_flag("--json", command->json,

@@ -122,3 +122,28 @@ TEST_CASE("villa validate: usage errors exit 2", "[cli]") {
   CHECK_THAT(help.output, Catch::Contains("--json"));
   CHECK_THAT(help.output, Catch::Contains("--quiet"));
 }
+
+TEST_CASE("villa validate reads fine-tuning samples: messages, ShareGPT, Alpaca", "[cli]") {
+  auto dir = std::filesystem::temp_directory_path() / ("villa_validate_cli_samples_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  auto path = dir / "samples.jsonl";
+  {
+    std::string answer = OneLine("house_one_floor.json");
+    std::string bad_answer = OneLine("rule9_kitchen_without_window.json");
+    std::ofstream out(path);
+    out << Json{{"messages", Json::array({Json{{"role", "system"}, {"content", "s"}}, Json{{"role", "user"}, {"content", "u"}},
+                                          Json{{"role", "assistant"}, {"content", answer}}})}}.dump()
+        << "\n"
+        << Json{{"conversations", Json::array({Json{{"from", "human"}, {"value", "u"}}, Json{{"from", "gpt"}, {"value", bad_answer}}})}}.dump()
+        << "\n"
+        << Json{{"instruction", "u"}, {"input", ""}, {"output", answer}}.dump() << "\n"
+        << Json{{"messages", Json::array({Json{{"role", "user"}, {"content", "u"}}})}}.dump() << "\n";
+  }
+  Run run = Villa("validate " + path.string());
+  INFO(run.output);
+  CHECK(run.code == 1);
+  CHECK_THAT(run.output, Catch::Contains(path.string() + ":2: rule 9: kitchen_0/0 has no window"));
+  CHECK_THAT(run.output, Catch::Contains(path.string() + ":4: cannot parse: messages: no assistant answer"));
+  CHECK_THAT(run.output, Catch::Contains("4 layouts: 2 valid, 2 invalid (1 unparsable)"));
+  std::filesystem::remove_all(dir);
+}
