@@ -1156,13 +1156,20 @@ class PlanPainter {
       std::snprintf(buffer, sizeof buffer, metres == std::floor(metres) ? "%.0f" : "%.1f", metres);
       return std::string(buffer);
     };
-    paint_.Text("0", {x, baseline}, fonts_.small, false, kText, TextAnchor::kMiddle);
-    for (int i = 1; i <= d; ++i) {
-      const double m = f_.scale_bar_m * i / d;
+    // Numbers under the ticks, as many as fit without touching: 0, every k-th tick, and the end in metres.
+    const std::string end_text = label(f_.scale_bar_m) + " m";
+    const double end_half = measure_.Width(end_text, fonts_.small, false) / 2.0;
+    double widest = 0.0;
+    for (int i = 0; i < d; ++i) widest = std::max(widest, measure_.Width(label(f_.scale_bar_m * i / d), fonts_.small, false));
+    const double air = fonts_.small * 0.6;
+    int k = 1;
+    while (k < d && bar * k / d < widest + air) ++k;
+    for (int i = 0; i < d; i += k) {
       const double px = x + bar * i / d;
-      if (i < d && bar / d < 26.0) continue;
-      paint_.Text(i == d ? label(m) + " m" : label(m), {px, baseline}, fonts_.small, false, kText, TextAnchor::kMiddle);
+      if (x + bar - end_half - (px + widest / 2.0) < air) break;  // would touch the end label
+      paint_.Text(label(f_.scale_bar_m * i / d), {px, baseline}, fonts_.small, false, kText, TextAnchor::kMiddle);
     }
+    paint_.Text(end_text, {x + bar, baseline}, fonts_.small, false, kText, TextAnchor::kMiddle);
     paint_.Text("Scale", {x, top + 1.0}, fonts_.small * 0.9, true, kMuted);
     paint_.End();
   }
