@@ -19,9 +19,13 @@ std::string LengthRow(const std::string& what, const LengthStats& s) {
 
 // "Floors (1 : 2 : 3 storeys): 200 : 400 : 400, ratio 2 : 4 : 4."
 std::string FloorsSentence(const std::map<int, std::size_t>& by_floors) {
-  std::size_t g = 0;
+  // The ratio in tenths of the total when that is exact (the paper's "2:4:4" for 200/400/400), else in
+  // lowest terms.
+  std::size_t g = 0, total = 0;
   int top = 0;
-  for (const auto& [floors, count] : by_floors) g = std::gcd(g, count), top = std::max(top, floors);
+  for (const auto& [floors, count] : by_floors) g = std::gcd(g, count), total += count, top = std::max(top, floors);
+  bool tenths = total > 0;
+  for (const auto& [floors, count] : by_floors) tenths = tenths && (count * 10) % total == 0;
   std::string label, counts, ratio;
   for (int f = 1; f <= top; ++f) {
     auto it = by_floors.find(f);
@@ -29,7 +33,7 @@ std::string FloorsSentence(const std::map<int, std::size_t>& by_floors) {
     const char* sep = f > 1 ? " : " : "";
     label += sep + std::to_string(f);
     counts += sep + std::to_string(count);
-    ratio += sep + std::to_string(g ? count / g : 0);
+    ratio += sep + std::to_string(tenths ? count * 10 / total : g ? count / g : 0);
   }
   return "Floors (" + label + (top == 1 ? " storey" : " storeys") + "): " + counts + ", ratio " + ratio + ".";
 }

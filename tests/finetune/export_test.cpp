@@ -200,7 +200,7 @@ TEST_CASE("The trainer configs carry the keys their trainers read", "[finetune][
   const std::string card = Slurp(dir / "out" / "README.md");
   CHECK(card.find("No person verified this dataset") != std::string::npos);
   CHECK(card.find("| train | `train.jsonl` | " + std::to_string(s.layouts_per_split[0]) + " | ") != std::string::npos);
-  CHECK(card.find("Floors (1 : 2 storeys): 20 : 20, ratio 1 : 1.") != std::string::npos);
+  CHECK(card.find("Floors (1 : 2 storeys): 20 : 20, ratio 5 : 5.") != std::string::npos);
   for (const char* needle : {"llamafactory-cli train llamafactory_lora_sft.yaml", "axolotl train axolotl.yaml", "SFTTrainer",
                              "--enable-lora --lora-modules villa-layout=", "\"model\": \"villa-layout\"", "--backend llm",
                              "coarse", "fine", "~tokens"}) {
