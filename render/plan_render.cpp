@@ -274,10 +274,15 @@ LegendLayout PlaceLegend(const std::vector<std::vector<LegendEntry>>& groups, do
   for (const auto& group : groups) {
     if (group.empty()) continue;
     double x = 0.0;
+    // Continuation rows start under the group's first entry, right of its title.
+    double indent = 0.0;
     for (const LegendEntry& entry : group) {
-      if (x > 0.0 && x + entry.width > max_width) {
-        x = 0.0;
+      if (x > indent && x + entry.width > max_width) {
+        x = indent;
         y += row_height;
+      }
+      if (entry.kind == LegendEntry::kGroupTitle && x == 0.0 && entry.width + kEntryGap < max_width / 3.0) {
+        indent = entry.width + kEntryGap;
       }
       out.entries.push_back({entry, x, y});
       x += entry.width + kEntryGap;
