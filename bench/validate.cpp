@@ -60,9 +60,9 @@ int main(int argc, char** argv) {
       for (int i = 0; i < 2; ++i) b = std::min(b, MicrosecondsPerCall(f));
       return b;
     };
-    double full = best([&] { sink += villa::ValidateLayout(*layout).violations.size(); });
-    double geom = best([&] { sink += villa::ValidateLayout(*layout, geometric).violations.size(); });
-    double metrics = best([&] { sink += villa::MeasureLayout(*layout).rooms; });
+    double full = best([&] { sink = sink + villa::ValidateLayout(*layout).violations.size(); });
+    double geom = best([&] { sink = sink + villa::ValidateLayout(*layout, geometric).violations.size(); });
+    double metrics = best([&] { sink = sink + villa::MeasureLayout(*layout).rooms; });
     std::printf("%-28s %6d %6zu %6zu %12.1f %12.1f %14.1f\n", name.c_str(), layout->LevelCount(), layout->rooms.size(),
                 violations, full, geom, metrics);
   }
