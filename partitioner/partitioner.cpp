@@ -269,9 +269,14 @@ void AnalyseFloor(Floor& f, const Sizes& s) {
   f.area_m2.assign(n, 0.0);
   f.exterior_m.assign(n, 0.0);
   const double g2 = s.scale.grid * s.scale.grid;
+  std::vector<IBox> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) boxes[i] = partition::BoundingBox(f.rooms[i]);
   for (std::size_t i = 0; i < n; ++i) {
     f.area_m2[i] = static_cast<double>(partition::TwiceArea(f.rooms[i])) * g2 / 2.0;
     for (std::size_t j = i + 1; j < n; ++j) {
+      const IBox& a = boxes[i];
+      const IBox& b = boxes[j];
+      if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
       f.shared[i][j] = partition::SharedSegments(f.rooms[i], f.rooms[j]);
       for (const ISegment& seg : f.shared[i][j]) {
         f.shared[j][i].push_back({seg.b, seg.a});
