@@ -139,20 +139,26 @@ Point OutwardOf(const Layout& layout, const LevelGeometry& g, const Segment& s, 
   return away.x * n.x + away.y * n.y >= 0.0 ? n : Scale(n, -1.0);
 }
 
-// The leaf swings into the smaller of the two rooms (a bedroom off a living room), never onto a
-// balcony; `into` forces a side (the entrance opens into the building). The hinge is the end nearer a
-// corner of that room, so the open leaf rests along a wall.
+// Which way the leaf swings (see the ranking inside); `into_side` forces a side (the entrance opens into
+// the building). The hinge is the end nearer a corner of that room, so the open leaf rests along a wall.
 DoorSwing SwingOf(const Layout& layout, const LevelGeometry& g, const Segment& s, std::optional<Point> into_side) {
   const Point n = LeftNormal(s);
   int left = -1, right = -1;
   RoomsBeside(layout, g, s, &left, &right);
   int into = left >= 0 ? left : right;
   if (left >= 0 && right >= 0) {
-    // Rank: a balcony or a stair hall never takes the leaf when the other side can; else the smaller room.
+    // Doors open into the room one enters from the common spaces: never onto a balcony, nor into a
+    // stair hall or a living, dining or meeting room when the other side is a private room; between
+    // two of a kind, into the smaller.
     auto rank = [&](const Room& room) {
-      if (room.category == Category::kBalcony) return 2;
-      if (room.category == Category::kUtilityRoom && g.has_stairs) return 1;
-      return 0;
+      switch (room.category) {
+        case Category::kBalcony: return 3;
+        case Category::kUtilityRoom: return g.has_stairs ? 2 : 0;
+        case Category::kLivingRoom:
+        case Category::kDiningRoom:
+        case Category::kMeetingRoom: return 1;
+        default: return 0;
+      }
     };
     const Room& l = layout.rooms[left];
     const Room& r = layout.rooms[right];
