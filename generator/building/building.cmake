@@ -17,4 +17,4 @@ add_library(villa_generator_building STATIC
 target_link_libraries(villa_generator_building
   PUBLIC villa_layout villa_render
   PRIVATE assimp::assimp embree PNG::PNG)
-villa_add_commands(build.cpp)
+villa_add_commands(build.cpp generate.cpp)

@@ -1,6 +1,8 @@
 #include "generator/building/export.h"
 
 #include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/metadata.h>
@@ -231,6 +233,8 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building) {
 }
 
 Status ExportBuilding(const BuildingMesh& building, const std::filesystem::path& out, MeshFormat format) {
+  std::filesystem::path folder = out.parent_path().empty() ? std::filesystem::path(".") : out.parent_path();
+  if (!std::filesystem::is_directory(folder)) return Error{out.string() + ": folder " + folder.string() + " does not exist"};
   if (format == MeshFormat::kGlb) {
     auto bytes = BuildingToGlb(building);
     if (!bytes) return Error{out.string() + ": " + bytes.error()};
@@ -259,6 +263,80 @@ Status ExportBuilding(const BuildingMesh& building, const std::filesystem::path&
     if (!written) return written;
   }
   return WriteFileAtomic(out, obj);
+}
+
+}  // namespace villa
+
+namespace villa {
+
+const SceneNodeInfo* SceneInfo::Find(std::string_view name) const {
+  for (const SceneNodeInfo& n : nodes)
+    if (n.name == name) return &n;
+  return nullptr;
+}
+
+Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+  if (!scene || !scene->mRootNode) return Error{path.string() + ": " + importer.GetErrorString()};
+  SceneInfo info;
+  for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
+    const aiMaterial* m = scene->mMaterials[i];
+    SceneMaterialInfo mi;
+    aiString name;
+    if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mi.name = name.C_Str();
+    aiColor4D base;
+    aiColor3D diffuse;
+    if (m->Get(AI_MATKEY_BASE_COLOR, base) == AI_SUCCESS) {
+      mi.color = {base.r, base.g, base.b};
+      mi.alpha = base.a;
+    } else if (m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS) {
+      mi.color = {diffuse.r, diffuse.g, diffuse.b};
+    }
+    float opacity = 1.0f;
+    if (m->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < mi.alpha) mi.alpha = opacity;
+    aiString mode;
+    if (m->Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) mi.alpha_mode = mode.C_Str();
+    info.materials.push_back(mi);
+  }
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    const aiMesh* m = scene->mMeshes[i];
+    SceneMeshInfo mi;
+    mi.name = m->mName.C_Str();
+    mi.material = static_cast<int>(m->mMaterialIndex);
+    mi.vertices = static_cast<int>(m->mNumVertices);
+    mi.triangles = static_cast<int>(m->mNumFaces);
+    for (unsigned v = 0; v < m->mNumVertices; ++v) mi.bounds.Add(Vec3{m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z});
+    info.bounds.Add(mi.bounds);
+    info.meshes.push_back(mi);
+  }
+  std::function<void(const aiNode*, const std::string&)> walk = [&](const aiNode* node, const std::string& parent) {
+    SceneNodeInfo ni;
+    ni.name = node->mName.C_Str();
+    ni.path = parent.empty() ? ni.name : parent + "/" + ni.name;
+    for (unsigned k = 0; k < node->mNumMeshes; ++k) ni.meshes.push_back(static_cast<int>(node->mMeshes[k]));
+    if (const aiMetadata* md = node->mMetaData) {
+      for (unsigned k = 0; k < md->mNumProperties; ++k) {
+        const aiMetadataEntry& e = md->mValues[k];
+        std::string value;
+        switch (e.mType) {
+          case AI_BOOL: value = *static_cast<bool*>(e.mData) ? "true" : "false"; break;
+          case AI_INT32: value = std::to_string(*static_cast<int32_t*>(e.mData)); break;
+          case AI_UINT64: value = std::to_string(*static_cast<uint64_t*>(e.mData)); break;
+          case AI_FLOAT: value = std::to_string(*static_cast<float*>(e.mData)); break;
+          case AI_DOUBLE: value = std::to_string(*static_cast<double*>(e.mData)); break;
+          case AI_AISTRING: value = static_cast<aiString*>(e.mData)->C_Str(); break;
+          default: continue;
+        }
+        ni.metadata[md->mKeys[k].C_Str()] = value;
+      }
+    }
+    info.nodes.push_back(ni);
+    std::string path_here = info.nodes.back().path;
+    for (unsigned c = 0; c < node->mNumChildren; ++c) walk(node->mChildren[c], path_here);
+  };
+  walk(scene->mRootNode, "");
+  return info;
 }
 
 }  // namespace villa

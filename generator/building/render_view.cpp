@@ -98,18 +98,30 @@ class Tracer {
     Rgb color{0, 0, 0};
     double transmit = 1.0;
     float tnear = 0.0f;
+    int inside = -1;  // the cut solid the ray is in, entered above the cut plane
     for (int bounce = 0; bounce < 24 && transmit > 0.01; ++bounce) {
       Hit h = Cast(scene_.get(), origin, dir, tnear, std::numeric_limits<float>::infinity());
       if (!h.hit) {
-        Add(color, options_.background, transmit);
+        Add(color, inside >= 0 ? options_.section_color : options_.background, transmit);
         break;
       }
-      const MeshPart& part = building_.parts[part_of_[h.geom]];
+      const int part_index = part_of_[h.geom];
+      const MeshPart& part = building_.parts[part_index];
       Vec3 p = origin + dir * h.t;
       tnear = h.t + 1e-4f;
-      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) continue;
       Vec3 n = Normal(part, h.prim);
       bool back = Dot(n, dir) > 0.0;
+      // Entered a solid above the cut and now below it: the cut face is what shows. (The solid's own
+      // exit may coincide with another part's face, e.g. a wall's bottom on the slab's top.)
+      if (inside >= 0 && p.z <= cut_z_) {
+        Add(color, options_.section_color, transmit);
+        break;
+      }
+      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) {
+        if (!back && part.kind != PartKind::kWindowGlass) inside = part_index;
+        else if (back && inside == part_index) inside = -1;
+        continue;
+      }
       const PartMaterial& mat = material_of_[h.geom];
       if (part.kind == PartKind::kWindowGlass) {
         if (back) continue;

@@ -1,4 +1,4 @@
-// Ear clipping of a polygon with holes, in the manner of mapbox's earcut: a doubly linked ring, holes
+// Ear clipping of a polygon with holes, in the manner of mapbox's earcut (but keeping every vertex): a doubly linked ring, holes
 // bridged into the outer ring, ears cut with a point-in-triangle test over reflex vertices, and two
 // fallback passes (cure local self-intersections, split along a valid diagonal) for awkward rings.
 // Conventions here: outer ring counter-clockwise, holes clockwise, Cross() > 0 for a left turn.
@@ -75,7 +75,12 @@ class EarClipper {
     bool again;
     do {
       again = false;
-      if (Equals(p, p->next) || std::abs(Cross(p->prev, p, p->next)) <= Epsilon(p->prev, p, p->next)) {
+      bool repeated = Equals(p, p->next);
+      if (repeated || std::abs(Cross(p->prev, p, p->next)) <= Epsilon(p->prev, p, p->next)) {
+        // A collinear vertex leaves as a zero-area triangle: its two edges stay in the triangulation, so
+        // a face meeting this one along them shares every vertex (a watertight solid, no T-junctions).
+        if (!repeated && !Equals(p->prev, p) && !Equals(p->prev, p->next))
+          triangles.push_back({p->prev->i, p->i, p->next->i});
         Remove(p);
         p = end = p->prev;
         if (p == p->next) break;
@@ -308,6 +313,9 @@ class EarClipper {
 std::vector<std::array<int, 3>> TriangulatePolygon(const Ring& outer, const std::vector<Ring>& holes) {
   EarClipper clipper;
   if (outer.size() < 3) return {};
+  double extent = 0.0;
+  for (Point p : outer) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  if (std::abs(SignedArea(outer)) <= 1e-12 * std::max(1.0, extent * extent)) return {};
   Node* ring = clipper.MakeRing(outer, 0, true);
   int offset = static_cast<int>(outer.size());
   std::vector<Node*> hole_rings;

@@ -10,7 +10,9 @@ namespace villa {
 
 // `outer` counter-clockwise, each hole clockwise or counter-clockwise (reoriented as needed), none
 // repeating its first point. Returns triangles as indices into the concatenation outer + holes[0] +
-// holes[1] + ..., each triangle counter-clockwise. Degenerate (zero-area) input gives no triangles.
+// holes[1] + ..., each triangle counter-clockwise. Every input vertex is used: a vertex on a straight
+// stretch of boundary gets a zero-area triangle, so faces sharing that edge meet vertex to vertex.
+// Degenerate (zero-area) input gives no triangles.
 std::vector<std::array<int, 3>> TriangulatePolygon(const Ring& outer, const std::vector<Ring>& holes = {});
 
 }  // namespace villa
