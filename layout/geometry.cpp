@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
@@ -428,9 +429,14 @@ double IntersectionArea(const Ring& a, const Ring& b) {
     Ring clipped = ClipConvex(Ccw(b), Ccw(a));
     return clipped.size() >= 3 ? std::abs(SignedArea(clipped)) : 0;
   }
-  BgMultiPolygon out;
-  bg::intersection(ToBoost(a), ToBoost(b), out);
-  return bg::area(out);
+  // Two non-convex rooms: Boost.Geometry. It may throw on invalid input (callers check validity first).
+  try {
+    BgMultiPolygon out;
+    bg::intersection(ToBoost(a), ToBoost(b), out);
+    return bg::area(out);
+  } catch (const std::exception&) {
+    return 0;
+  }
 }
 
 std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
@@ -438,7 +444,11 @@ std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
   for (const auto& ring : rings) {
     if (ring.size() < 3) continue;
     BgMultiPolygon next;
-    bg::union_(acc, ToBoost(ring), next);
+    try {
+      bg::union_(acc, ToBoost(ring), next);
+    } catch (const std::exception&) {
+      continue;  // an invalid ring (see RingProblem) is left out rather than taking the process down
+    }
     acc.swap(next);
   }
   std::vector<PolygonWithHoles> out;

@@ -70,12 +70,13 @@ bool PointOnBoundary(const Point& p, const Ring& ring, double tolerance);
 // "has spikes", "has fewer than 3 distinct corners", "has zero area", ...). Boost.Geometry's is_valid.
 std::string RingProblem(const Ring& ring);
 
-// Area of the intersection of two simple polygons (exact clipping for convex pairs, Boost.Geometry otherwise).
+// Area of the intersection of two simple polygons (exact clipping when one is convex, Boost.Geometry when
+// both are not). Meant for valid rings (RingProblem empty); for two invalid non-convex rings it may be 0.
 double IntersectionArea(const Ring& a, const Ring& b);
 
 // The footprint of a floor from its rooms by polygon union (Boost.Geometry): each polygon of the union
 // with its holes. Rooms may overlap or not touch at all; a floor that tiles properly gives exactly one
-// polygon with no holes.
+// polygon with no holes. Rings should be valid (RingProblem empty); one Boost cannot merge is left out.
 struct PolygonWithHoles {
   Ring outer;
   std::vector<Ring> holes;  // counter-clockwise like every Ring here; subtract their areas

@@ -48,7 +48,8 @@ LayoutMetrics MeasureLayout(const Layout& layout, const ValidationReport& report
       for (int d : layout.RoomsOnLevel(level)) {
         if (layout.rooms[d].category != Category::kUtilityRoom) continue;
         for (int u : layout.RoomsOnLevel(level + 1))
-          if (layout.rooms[u].category == Category::kUtilityRoom &&
+          if (layout.rooms[u].category == Category::kUtilityRoom && RingProblem(layout.rooms[d].polygon).empty() &&
+              RingProblem(layout.rooms[u].polygon).empty() &&
               IntersectionArea(layout.rooms[d].polygon, layout.rooms[u].polygon) > kTolerance)
             connected = true;
       }
