@@ -54,7 +54,9 @@ struct PlanRenderOptions {
 };
 
 // Picks PNG (.png) or SVG (.svg) by the extension of `out` (case-insensitive); any other extension is
-// an error naming the file. The picture is made in memory and written atomically.
+// an error naming the file. The picture is made in memory and written atomically (temporary beside it,
+// then renamed): an existing file is replaced whole; callers that must not overwrite check first (the
+// `villa render` command asks for --force).
 Status RenderPlan(const Layout& layout, const std::filesystem::path& out, const PlanRenderOptions& options = {});
 
 // The picture as the bytes of a PNG file (8-bit RGB(A)), for callers that embed a preview.
