@@ -260,6 +260,7 @@ const std::unordered_set<std::string>& FillerWords() {
       "im", "ive", "id", "youre", "theyre", "its", "count", "storey", "story", "wed", "weve", "youd",
       "youll", "ill", "itll", "thats", "theres", "heres", "whats", "lets", "hes", "shes", "theyll", "hoping",
       "looking", "searching", "wondering", "planning", "considering", "thinking", "floor", "number",
+      "connections", "furniture", "extras", "layouts", "storeys", "stories", "levels", "great",
       // quality adjectives and adverbs that ask for nothing checkable
       "large", "big", "huge", "spacious", "generous", "roomy", "small", "little", "compact", "tiny",
       "cozy", "cosy", "bright", "sunny", "airy", "light", "modern", "contemporary", "classic",
@@ -448,7 +449,7 @@ const std::vector<CueWord>& CueLexicon() {
                           "flow together", "openly joined"},
         true);
     add(LinkKind::kAny,
-        {"connected to", "connected with", "connect to", "connect with", "connecting to", "connecting with",
+        {"connected to", "connected with", "connect to", "led to", "led into", "led onto", "lead out onto", "connect with", "connecting to", "connecting with",
          "linked to", "linked with", "link to", "link with", "lead to", "lead into", "lead onto", "leading to",
          "leading into", "leading onto", "access to", "access into", "access onto", "access", "accessing",
          "accessible from", "accessible via", "accessible through", "reach", "reaching", "reached from",
@@ -798,10 +799,28 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   return best;
 }
 
+// Like MatchPhrase, but adverbs may sit between the words ("led directly into", "flows straight into").
+int MatchCue(const std::vector<Token>& tokens, std::size_t i, const std::vector<std::string>& phrase) {
+  std::size_t k = i;
+  for (std::size_t w = 0; w < phrase.size(); ++w) {
+    if (w > 0)
+      while (k < tokens.size() && tokens[k].item < 0 && !tokens[k].punct && tokens[k].sentence == tokens[i].sentence &&
+             In(tokens[k], {"directly", "straight", "right", "immediately", "also", "conveniently", "easily"}) &&
+             tokens[k].word != phrase[w])
+        ++k;
+    if (k >= tokens.size()) return 0;
+    const Token& t = tokens[k];
+    if (t.punct || t.item >= 0 || t.sentence != tokens[i].sentence) return 0;
+    if (t.word != phrase[w] && t.stem != phrase[w]) return 0;
+    ++k;
+  }
+  return static_cast<int>(k - i);
+}
+
 int Parser::TryCue(std::size_t i, Item& item) {
   int best = 0;
   for (const auto& w : CueLexicon()) {
-    int len = MatchPhrase(tokens_, i, w.words);
+    int len = MatchCue(tokens_, i, w.words);
     if (len > best) {
       best = len;
       item.link = w.kind;
@@ -831,6 +850,10 @@ int Parser::TryFurniture(std::size_t i, Item& item) {
   int best = 0;
   for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
   if (best == 0) return 0;
+  // "a dining table for six": the seats belong to the item.
+  if (i + best + 1 < tokens_.size() && tokens_[i + best].word == "for" && Cardinal(tokens_[i + best + 1]) &&
+      tokens_[i + best + 1].sentence == tokens_[i].sentence)
+    best += 2;
   item.item_first = static_cast<int>(i);
   // Modifiers before the noun belong to the item ("a large flat-screen TV"): unknown words and
   // adjectives back to a determiner, number or verb.
@@ -1140,7 +1163,9 @@ void Parser::PlaceLevels() {
         break;
       }
     int scope = -1;
-    if (first_word >= 0 && In(tokens_[first_word], {"it", "its", "here", "this", "that", "also", "additionally", "plus"})) {
+    // "It also has a bathroom." / "It has ..." (not "It would be great if ...").
+    if (first_word >= 0 && tokens_[first_word].word == "it" && first_word + 1 < static_cast<int>(tokens_.size()) &&
+        In(tokens_[first_word + 1], {"has", "also", "contains", "holds", "features", "includes", "offers", "houses", "gets"})) {
       scope = carried_scope;
     }
     std::vector<int> pending;  // mention indices without a level since the last floor ref
@@ -1490,6 +1515,14 @@ void Parser::Finish(Brief& brief) {
   for (std::size_t mi = 0; mi < mentions_.size(); ++mi) {
     const Mention& m = mentions_[mi];
     bool counting = m.counting && !(bare_[mi] && (m.in_connection || m.in_attachment));
+    // "... two bedrooms. One bedroom should open onto the balcony": a room in a connection whose
+    // category was already counted in an earlier sentence is one of those, not another.
+    if (counting && (m.in_connection || m.in_attachment) && m.min == 1 && m.max == 1) {
+      for (std::size_t k = 0; k < mi; ++k)
+        if (mentions_[k].category == m.category && mentions_[k].counting &&
+            tokens_[mentions_[k].first].sentence != tokens_[m.first].sentence)
+          counting = false;
+    }
     std::vector<int> levels = MentionLevels(m);
     TextSpan source = Span(m.first, m.last);
     int cat = static_cast<int>(m.category);
