@@ -5,16 +5,17 @@
 #   3. validate and render the bundled example layouts
 # Prints where every output is.
 set -euo pipefail
-villa=${1:-build/cli/villa}
-out=${2:-out}
+root=$(cd "$(dirname "$0")/.." && pwd)
+villa=$(realpath "${1:-$root/build/cli/villa}")
+out=$(realpath -m "${2:-$root/out}")
+cd "$root"
 mkdir -p "$out"
 has() { "$villa" "$1" --help >/dev/null 2>&1; }
 
 if has generate; then
   request="I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the ground floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic windows on the top floor."
   echo "== villa generate: \"$request\""
-  rm -rf "$out/villa"
-  "$villa" generate "$request" -o "$out/villa" --seed 7
+  "$villa" generate "$request" -o "$out/villa" --seed 7 --force
 fi
 
 if has synth; then
@@ -22,7 +23,7 @@ if has synth; then
   "$villa" synth --count 60 --seed 1 --out "$out/dataset" --previews 4 --force
   if has annotate; then
     "$villa" annotate "$out/dataset" --auto
-    "$villa" annotate "$out/dataset" --export "$out/dataset/annotated.jsonl"
+    "$villa" annotate "$out/dataset" --export "$out/dataset/annotated.jsonl" --force
     if has finetune; then
       "$villa" finetune export "$out/dataset/annotated.jsonl" --out "$out/finetune" --force
     fi
@@ -35,7 +36,7 @@ if has render; then
   mkdir -p "$out/examples"
   for f in examples/*.json; do
     name=$(basename "$f" .json)
-    "$villa" render "$f" -o "$out/examples/$name.png"
+    "$villa" render "$f" -o "$out/examples/$name.png" --force
   done
 fi
 
