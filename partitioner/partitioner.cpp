@@ -340,7 +340,7 @@ struct FloorPlanSpec {
 
 int SampleRoomsPerFloor(const PartitionOptions& o, Rng& rng) {
   // 3..6 rooms (staircase included) with an average of about 5.
-  static const double kWeights[4] = {0.10, 0.26, 0.38, 0.26};
+  static const double kWeights[4] = {0.16, 0.33, 0.34, 0.17};
   int n = 3 + rng.Weighted(kWeights, 4);
   return std::clamp(n, o.min_rooms_per_floor, o.max_rooms_per_floor);
 }
@@ -1152,14 +1152,24 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
       const double shrink = sum > budget ? budget / sum : 1.0;
       for (double m : metres) wanted.push_back(static_cast<int64_t>(2.0 * m * shrink / g2));
     }
-    std::vector<IRing> rooms = partition::SplitRoomBsp(pieces, spec.size(), limits, rng, wanted);
+    // Rooms over 65 m2 are split once more while the floor has room for another (not when the building
+    // is limited to the required rooms).
+    BspLimits floor_limits = limits;
+    if (!o.only_required_rooms) {
+      floor_limits.max_area2 = static_cast<int64_t>(2.0 * 65.0 / g2);
+      floor_limits.max_pieces = o.max_rooms_per_floor - (stair ? 1 : 0);
+    }
+    std::vector<IRing> rooms = partition::SplitRoomBsp(pieces, spec.size(), floor_limits, rng, wanted);
     if (static_cast<int>(rooms.size()) < static_cast<int>(spec.must.size()) ||
         static_cast<int>(rooms.size()) + (stair ? 1 : 0) < std::min(o.min_rooms_per_floor, spec.size() + (stair ? 1 : 0))) {
       result.reason = "BSP gave too few rooms";
       return result;
     }
-    std::vector<Category> categories = spec.must;
-    for (Category c : spec.optional)
+    FloorPlanSpec grown = spec;
+    if (static_cast<int>(rooms.size()) > grown.size())
+      FillFromPriors(grown, l, F, static_cast<int>(rooms.size()), rng);  // rooms split for size need a category
+    std::vector<Category> categories = grown.must;
+    for (Category c : grown.optional)
       if (static_cast<int>(categories.size()) < static_cast<int>(rooms.size())) categories.push_back(c);
     f.rooms = std::move(rooms);
     if (stair) {

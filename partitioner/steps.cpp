@@ -301,12 +301,21 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
                                 std::vector<int64_t> wanted_area2) {
   std::sort(wanted_area2.begin(), wanted_area2.end());
   int failures = 0;
-  while (static_cast<int>(pieces.size()) < target && failures < 40) {
-    // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always).
+  auto oversized = [&] {
+    if (limits.max_area2 <= 0 || static_cast<int>(pieces.size()) >= limits.max_pieces) return false;
+    for (const IRing& p : pieces)
+      if (TwiceArea(p) > limits.max_area2) return true;
+    return false;
+  };
+  while ((static_cast<int>(pieces.size()) < target || oversized()) && failures < 40) {
+    const bool extra = static_cast<int>(pieces.size()) >= target;
+    // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always);
+    // past the target only the oversized ones.
     std::vector<double> weights(pieces.size(), 0.0);
     bool any = false;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const double a = static_cast<double>(TwiceArea(pieces[i]));
+      if (extra && TwiceArea(pieces[i]) <= limits.max_area2) continue;
       if (a >= 2.0 * static_cast<double>(limits.min_area2)) {
         weights[i] = a * a * a;
         any = true;
@@ -353,7 +362,8 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       parts = std::move(low);
       for (auto& r : high) parts.push_back(std::move(r));
     }
-    bool ok = parts.size() >= 2 && static_cast<int>(pieces.size() - 1 + parts.size()) <= target;
+    const int cap = std::max(target, extra ? limits.max_pieces : target);
+    bool ok = parts.size() >= 2 && static_cast<int>(pieces.size() - 1 + parts.size()) <= cap;
     for (const IRing& part : parts) ok = ok && PieceUsable(part, limits);
     if (!ok) {
       ++failures;

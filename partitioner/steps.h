@@ -72,6 +72,10 @@ struct BspLimits {
   int64_t min_area2 = 0;      // twice the area
   int64_t min_side = 0;       // bounding box, both sides
   double min_width = 0.0;     // MinWidth of the ring
+  // Past the target room count, pieces larger than max_area2 (twice the area; 0: no limit) are split
+  // further while there are fewer than max_pieces (an oversized room becomes two).
+  int64_t max_area2 = 0;
+  int max_pieces = 0;
 };
 bool PieceUsable(const IRing& piece, const BspLimits& limits);
 
