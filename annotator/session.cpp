@@ -153,7 +153,6 @@ Result<std::unique_ptr<Session>> Session::Open(const std::filesystem::path& dir,
     if (!state) return Error{state.error()};
     std::string kind = json.value("kind", "do");
     std::string action = json.value("action", "");
-    AnnotationState before = touched[item] ? session->states_[item] : session->InitialState(item);
     auto& undo = session->undo_;
     auto& redo = session->redo_;
     if (kind == "undo") {
@@ -169,6 +168,7 @@ Result<std::unique_ptr<Session>> Session::Open(const std::filesystem::path& dir,
     } else if (kind == "batch") {
       // --auto runs are not undoable one by one.
     } else {
+      AnnotationState before = touched[item] ? session->states_[item] : session->InitialState(item);
       undo.push_back({item, std::move(before), *state, action});
       redo.clear();
     }

@@ -1,5 +1,6 @@
 // villa annotate DIR: label, filter and describe the partitioner's layouts (the paper's human-in-the-loop
 // annotation), or in batch: --status, --auto, --export FILE.jsonl.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -40,6 +41,11 @@ int Annotate(const AnnotateArgs& args) {
     options.start_id = args.id;
     return RunAnnotatorTui(session, options);
   }
+  std::error_code ec;
+  if (!args.export_path.empty() && std::filesystem::exists(args.export_path, ec) && !args.force) {
+    std::cerr << "villa annotate: " << args.export_path << ": exists (use --force to overwrite)\n";
+    return villa::cli::kExitFailure;
+  }
   if (args.automatic) {
     auto made = session.AutoAnnotate();
     if (!made) {
@@ -50,11 +56,6 @@ int Annotate(const AnnotateArgs& args) {
               << made->rejected << " rejected by the rules (none verified: no person looked at them)\n";
   }
   if (!args.export_path.empty()) {
-    std::error_code ec;
-    if (std::filesystem::exists(args.export_path, ec) && !args.force) {
-      std::cerr << "villa annotate: " << args.export_path << ": exists (use --force to overwrite)\n";
-      return villa::cli::kExitFailure;
-    }
     villa::Status written = villa::WriteFileAtomic(args.export_path, session.ExportJsonl());
     if (!written) {
       std::cerr << "villa annotate: " << written.error() << "\n";

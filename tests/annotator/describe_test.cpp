@@ -32,8 +32,10 @@ bool Linked(const Layout& l, const std::vector<Connection>& cs, int a, int b, bo
   return false;
 }
 
+}  // namespace
+
 // Independent check of one fact against the layout; returns an empty string when it holds.
-std::string CheckFact(const Layout& l, const std::string& shape, const Fact& f) {
+std::string CheckDescriptionFact(const Layout& l, const std::string& shape, const Fact& f) {
   auto cs = RoomConnections(l);
   int a = f.a.empty() ? -1 : l.FindRoom(f.a);
   int b = f.b.empty() ? -1 : l.FindRoom(f.b);
@@ -89,6 +91,10 @@ std::string CheckFact(const Layout& l, const std::string& shape, const Fact& f) 
   }
   return "unknown fact";
 }
+
+namespace {
+
+std::string CheckFact(const Layout& l, const std::string& shape, const Fact& f) { return CheckDescriptionFact(l, shape, f); }
 
 // The words the text must use for a fact (any one of them).
 std::vector<std::string> Words(Category c) {

@@ -38,10 +38,10 @@ std::string Quote(const std::string& s) {
 // One private tmux server running `villa annotate DIR` in a 80 x 24 (or larger) window.
 class Terminal {
  public:
-  Terminal(const std::filesystem::path& dir, int width = 80, int height = 24) {
+  Terminal(const std::filesystem::path& dir, int width = 80, int height = 24, const std::string& env = "") {
     static int counter = 0;
     socket_ = "villa-annotator-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-    std::string command = "exec env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=xterm-256color " + Quote(VILLA_BINARY) +
+    std::string command = "exec env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=xterm-256color " + env + " " + Quote(VILLA_BINARY) +
                           " annotate " + Quote(dir.string());
     Tmux("new-session -d -s t -x " + std::to_string(width) + " -y " + std::to_string(height) + " " + Quote(command));
   }
@@ -221,4 +221,32 @@ TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
     term.Keys("q");
     REQUIRE(term.WaitForExit());
   }
+}
+
+TEST_CASE("both descriptions edited in $EDITOR", "[tui]") {
+  if (!HaveTmux()) {
+    WARN("tmux is not installed: the terminal test is skipped");
+    return;
+  }
+  test::TempDataset ds;
+  // An "editor" that rewrites the file: the coarse text, the marker line kept, a new fine text.
+  std::filesystem::path editor = ds.dir() / "editor.sh";
+  test::Spit(editor,
+             "#!/bin/sh\n"
+             "marker=$(grep '^# ---- fine' \"$1\")\n"
+             "printf '# a comment\\nA small house.\\n%s\\nOne floor, with a kitchen\\nopen to the dining room.\\n' \"$marker\" > \"$1\"\n");
+  std::filesystem::permissions(editor, std::filesystem::perms::owner_all);
+  {
+    Terminal term(ds.dir(), 80, 24, "VISUAL= EDITOR=" + Quote(editor.string()));
+    REQUIRE_SCREEN(term, "villa-000000");
+    term.Keys("v");
+    REQUIRE_SCREEN(term, "edit descriptions of villa-000000");
+    term.Keys("q");
+    REQUIRE(term.WaitForExit());
+  }
+  auto s = Session::Open(ds.dir(), false);
+  REQUIRE(s.ok());
+  CHECK((*s)->state(0).coarse == "A small house.");
+  CHECK((*s)->state(0).fine == "One floor, with a kitchen open to the dining room.");
+  CHECK((*s)->state(0).edited);
 }
