@@ -742,7 +742,8 @@ std::optional<ISegment> WindowOnRun(const Run& run, double min_m, double max_m, 
                   {run.a.x + run.step.x * (off + w), run.a.y + run.step.y * (off + w)}};
 }
 
-bool PlaceWindows(const Floor& f, const PartitionOptions& o, bool want_panoramic, const Sizes& s, Rng& rng,
+// `panoramic_room`: a room that gets a panoramic window besides balconies and o.panoramic_rooms (-1: none).
+bool PlaceWindows(const Floor& f, const PartitionOptions& o, int panoramic_room, const Sizes& s, Rng& rng,
                   FloorElements* out) {
   const std::size_t n = f.rooms.size();
   // Runs in use (one element a run keeps windows, entrance and corners apart).
@@ -789,8 +790,8 @@ bool PlaceWindows(const Floor& f, const PartitionOptions& o, bool want_panoramic
   for (std::size_t i = 0; i < n; ++i) {
     const Category c = f.categories[i];
     const bool pano_wanted = std::find(o.panoramic_rooms.begin(), o.panoramic_rooms.end(), c) != o.panoramic_rooms.end();
-    const bool pano_living = want_panoramic && c == Category::kLivingRoom;
-    if (c == Category::kBalcony || pano_wanted || pano_living) {
+    const bool pano_here = static_cast<int>(i) == panoramic_room;
+    if (c == Category::kBalcony || pano_wanted || pano_here) {
       if (!add_window(i, 1.5, 6.0, true, true) && !add_window(i, 0.6, 6.0, true, true)) {
         if (c == Category::kBalcony) return false;
       }
@@ -1203,13 +1204,33 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
       result.reason = "rooms not all reachable";
       return result;
     }
-    const bool pano = o.panoramic_windows && l == F - 1;
-    if (!PlaceWindows(f, o, pano, s, rng, &e)) {
+    b.floors.push_back(std::move(f));
+    b.elements.push_back(std::move(e));
+  }
+  // A requested panoramic window without a balcony (balconies always have one): the living room's (the
+  // lowest with an exterior wall long enough), else the largest such room of the top floor's.
+  std::pair<int, int> panoramic{-1, -1};  // level, room
+  if (o.panoramic_windows) {
+    bool balcony = false;
+    for (const Floor& f : b.floors)
+      for (Category c : f.categories) balcony |= c == Category::kBalcony;
+    for (const Floor& f : b.floors)
+      for (std::size_t i = 0; i < f.rooms.size() && !balcony && panoramic.first < 0; ++i)
+        if (f.categories[i] == Category::kLivingRoom && f.window_ok[i]) panoramic = {f.level, static_cast<int>(i)};
+    if (!balcony && panoramic.first < 0) {
+      const Floor& top = b.floors.back();
+      for (std::size_t i = 0; i < top.rooms.size(); ++i)
+        if (top.window_ok[i] && top.categories[i] != Category::kBathroom &&
+            (panoramic.second < 0 || top.area_m2[i] > top.area_m2[static_cast<std::size_t>(panoramic.second)]))
+          panoramic = {top.level, static_cast<int>(i)};
+    }
+  }
+  for (int l = 0; l < F; ++l) {
+    const int pano_room = panoramic.first == l ? panoramic.second : -1;
+    if (!PlaceWindows(b.floors[static_cast<std::size_t>(l)], o, pano_room, s, rng, &b.elements[static_cast<std::size_t>(l)])) {
       result.reason = "no exterior wall for a required window or the entrance";
       return result;
     }
-    b.floors.push_back(std::move(f));
-    b.elements.push_back(std::move(e));
   }
   result.ok = true;
   return result;

@@ -109,7 +109,7 @@ struct PartitionOptions {
   std::vector<ConnectionRequirement> connections;
 
   // At least one panoramic window. Balconies always have one (rule 9); without a balcony the living room
-  // (or the largest room with an exterior wall) gets one.
+  // (the lowest one with a long enough exterior wall), else the top floor's largest room with one, gets it.
   bool panoramic_windows = false;
   // Every room of these categories gets a panoramic window on its longest exterior wall.
   std::vector<Category> panoramic_rooms;
@@ -137,9 +137,10 @@ struct PartitionSummary {
   int floors = 0;
   int retries = 0;               // attempts that were discarded before this layout (0 = first try)
   bool angled_edges = false;     // the ground footprint has an edge that is neither horizontal nor vertical
-  // One line per requirement that is not met, for a person: "2 bathrooms on level 1: made 1".
+  // One line per requirement that is not met, for a person: "2 bathroom on level 1: made 1", with why
+  // when no layout of the plan could meet it: "8 bedroom on level 0: made 6 (room for 6 on that floor)".
   std::vector<std::string> unmet_requirements;
-  // Why attempts failed, most frequent first ("no labelling with a window for the kitchen: 12").
+  // Why attempts failed, most frequent first ("validation: rule 2: 3", "no place for the staircase: 1").
   std::vector<std::string> retry_reasons;
   std::string message;           // kFailure: why
 

@@ -278,3 +278,24 @@ TEST_CASE("Dataset floor plans are exact and interleaved", "[partitioner][datase
   CHECK(DatasetLayoutSeed(5, 1) != DatasetLayoutSeed(5, 2));
   CHECK(DatasetLayoutSeed(5, 1) != DatasetLayoutSeed(6, 1));
 }
+
+TEST_CASE("A panoramic window without a balcony goes to the living room", "[partitioner][requirements]") {
+  PartitionOptions o;
+  o.floors = 2;
+  o.only_required_rooms = true;
+  o.panoramic_windows = true;
+  o.rooms = {{Category::kLivingRoom, 1, 0}, {Category::kKitchen, 1, 0}, {Category::kBedroom, 2, 1}, {Category::kBathroom, 1, 1}};
+  for (uint64_t seed = 0; seed < 15; ++seed) {
+    const PartitionSummary s = GenerateLayout(o, seed);
+    INFO("seed " << seed << ": " << s.BriefReport());
+    REQUIRE(s.outcome == PartitionOutcome::kSuccess);
+    CHECK(CountCategory(s.layout, Category::kBalcony) == 0);
+    int panoramic = 0;
+    for (const Element& w : s.layout.windows) {
+      if (!w.panoramic) continue;
+      ++panoramic;
+      CHECK(w.name.rfind("living0", 0) == 0);
+    }
+    CHECK(panoramic == 1);
+  }
+}
