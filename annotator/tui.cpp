@@ -508,17 +508,17 @@ void App::Help() {
   std::vector<std::string> lines = {
       "Tab / arrows / 1-9   select a room on this level",
       "[ ] PgUp PgDn        level down / up",
+      "Category of the selected room:",
   };
   std::string cats;
   for (const auto& k : kCategoryKeys) {
     std::string entry = std::string(1, static_cast<char>(k.key)) + " " + std::string(CategoryName(k.category));
-    if (Width(cats) + Width(entry) + 2 > 60) {
+    if (Width(cats) + Width(entry) + 2 > 64) {
       lines.push_back("  " + cats);
       cats.clear();
     }
     cats += (cats.empty() ? "" : "  ") + entry;
   }
-  lines.push_back("Category of the selected room:");
   lines.push_back("  " + cats);
   for (const char* s : {
            "a      accept as verified (refused while a rule breaks)",
@@ -526,20 +526,17 @@ void App::Help() {
            "O      reopen (back to pending)",
            "f      mechanical fixes for the rule violations",
            "e / E  edit the coarse / fine description here",
-           "v      edit both descriptions in $EDITOR",
+           "v      edit both descriptions in $VISUAL / $EDITOR",
            "r      redraft the descriptions",
            "u / U  undo / redo (Ctrl-R also redoes)",
            "n / p  next / previous layout;  N or space: next pending",
-           "q      quit (everything is already saved)",
-           "",
-           "Plan: door ▒  open (gap)  window ═  panoramic █  entrance ▓  stairs ≡",
-           "Every action is in annotations.journal.jsonl before it shows.",
-           "",
-           "any key: back"}) {
+           "q      quit (everything is already saved); Ctrl-C too"}) {
     lines.push_back(s);
   }
-  if (!unicode_) lines[lines.size() - 5] = "Plan: door #  open (gap)  window = H  panoramic %  entrance E  stairs =";
-  Modal("villa annotate: keys", lines, 72);
+  lines.push_back(unicode_ ? "Plan: door ▒  open: gap  window ═ ║  panoramic █  entrance ▓  stairs ═"
+                           : "Plan: door #  open: gap  window = H  panoramic %  entrance E  stairs =");
+  lines.push_back("Each action is in annotations.journal.jsonl before it shows.");
+  Modal("villa annotate: keys (any key: back)", lines, 76);
   getch();
 }
 
@@ -785,7 +782,7 @@ bool App::Handle(int ch, bool is_code) {
     return true;
   }
   switch (ch) {
-    case 'q': return false;
+    case 'q': case 3: return false;  // 3 = Ctrl-C
     case '\t': SelectRoom(1); break;
     case '[': case ']': {
       int floors = layout().LevelCount();
@@ -887,7 +884,7 @@ int App::Run() {
     std::fprintf(stderr, "villa annotate: cannot initialise the terminal\n");
     return 1;
   }
-  cbreak();
+  raw();  // Ctrl-C arrives as a key and quits cleanly (the terminal is restored); Ctrl-Z is ignored
   noecho();
   keypad(stdscr, TRUE);
   curs_set(0);
