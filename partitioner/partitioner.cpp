@@ -859,8 +859,14 @@ Layout BuildLayout(const Building& b, double grid) {
       room.category = c;
       room.level = static_cast<int>(l);
       room.index = index[c]++;
-      room.polygon.reserve(f.rooms[i].size());
-      for (IPoint p : f.rooms[i]) room.polygon.push_back(ToPoint(p, grid));
+      // Canonical vertex order of the text format (counter-clockwise from the lowest x, then y), so the
+      // layout validated here is exactly the one a reader parses back from the written text.
+      const IRing& ring = f.rooms[i];
+      std::size_t first = 0;
+      for (std::size_t k = 1; k < ring.size(); ++k)
+        if (ring[k].x < ring[first].x || (ring[k].x == ring[first].x && ring[k].y < ring[first].y)) first = k;
+      room.polygon.reserve(ring.size());
+      for (std::size_t k = 0; k < ring.size(); ++k) room.polygon.push_back(ToPoint(ring[(first + k) % ring.size()], grid));
       token[i] = std::string(ShortName(c)) + std::to_string(l) + (room.index > 0 ? "-" + std::to_string(room.index) : "");
       layout.rooms.push_back(std::move(room));
     }

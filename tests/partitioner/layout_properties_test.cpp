@@ -7,6 +7,7 @@
 #include <set>
 
 #include "layout/geometry.h"
+#include "layout/layout_io.h"
 #include "layout/topology.h"
 #include "layout/validate.h"
 #include "partitioner/partitioner.h"
@@ -297,5 +298,29 @@ TEST_CASE("A panoramic window without a balcony goes to the living room", "[part
       CHECK(w.name.rfind("living0", 0) == 0);
     }
     CHECK(panoramic == 1);
+  }
+}
+
+TEST_CASE("The layout validated is exactly the one read back from the written text", "[partitioner][round-trip]") {
+  PartitionOptions options;
+  for (uint64_t seed = 0; seed < 300; ++seed) {
+    const PartitionSummary s = GenerateLayout(options, seed);
+    REQUIRE(s.ok());
+    const Result<Layout> back = ParseLayoutText(LayoutToString(s.layout, -1), "round trip");
+    REQUIRE(back.ok());
+    REQUIRE(back->rooms.size() == s.layout.rooms.size());
+    for (std::size_t i = 0; i < s.layout.rooms.size(); ++i) {
+      INFO("seed " << seed << " " << s.layout.rooms[i].name());
+      CHECK(back->rooms[i].name() == s.layout.rooms[i].name());
+      CHECK(back->rooms[i].polygon == s.layout.rooms[i].polygon);  // same vertices, same order
+    }
+    for (ElementKind kind : kAllElementKinds) {
+      REQUIRE(back->elements(kind).size() == s.layout.elements(kind).size());
+      for (std::size_t i = 0; i < s.layout.elements(kind).size(); ++i) {
+        CHECK(back->elements(kind)[i].name == s.layout.elements(kind)[i].name);
+        CHECK(back->elements(kind)[i].shape == s.layout.elements(kind)[i].shape);
+        CHECK(back->elements(kind)[i].level == s.layout.elements(kind)[i].level);
+      }
+    }
   }
 }
