@@ -220,3 +220,22 @@ TEST_CASE("the two-floor layout's fine facts cover its rooms per floor", "[descr
     }
   }
 }
+
+TEST_CASE("a bathroom with a second way in is not called en-suite", "[describe]") {
+  Layout layout = test::FixtureLayout("villa-000000");
+  Element door;
+  door.name = "bathroom0_dining0";
+  door.kind = ElementKind::kDoor;
+  door.shape = {{6, 6}, {6, 7}};
+  door.level = 0;
+  layout.doors.push_back(door);
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    Drafts d = DraftDescriptions(layout, "rectangle", seed);
+    for (const Fact& f : d.fine_facts) {
+      INFO("seed " << seed << ": " << DescribeFact(f));
+      CHECK(f.kind != FactKind::kEnSuite);
+      CHECK(CheckDescriptionFact(layout, "rectangle", f) == "");
+    }
+    CHECK(d.fine.find("own") == std::string::npos);
+  }
+}
