@@ -89,8 +89,10 @@ Json SynthStats::ToJson() const {
 std::string SynthStats::Report() const {
   std::ostringstream out;
   const double n = static_cast<double>(layouts);
-  out << "layouts: " << layouts << " (ids " << DatasetRecordId(first_index) << " .. "
-      << DatasetRecordId(first_index + (layouts ? layouts - 1 : 0)) << "), all valid: "
+  out << "layouts: " << layouts;
+  if (layouts > 0)
+    out << " (ids " << DatasetRecordId(first_index) << " .. " << DatasetRecordId(first_index + layouts - 1) << ")";
+  out << ", all valid: "
       << (validated == layouts && failures == 0 ? "yes" : "NO") << ", failed seeds: " << failures << "\n";
   {
     TextTable t({"floors", "layouts", "share"});
