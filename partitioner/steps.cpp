@@ -203,7 +203,8 @@ bool PieceUsable(const IRing& piece, const BspLimits& limits) {
 std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const Scale& scale, Rng& rng) {
   const std::size_t n = footprint.size();
   const int64_t margin = scale.UnitsUp(2.0);
-  const double min_width = static_cast<double>(scale.UnitsUp(2.0));
+  // What is left may narrow to a 1.5 m passage beside the staircase (a hall arm), no less.
+  const double min_width = 1.5 / scale.grid - 1e-9;
   double fx, fy;
   Centroid(footprint, &fx, &fy);
   const int64_t expected = TwiceArea(footprint) - 2 * size * size;
@@ -288,7 +289,7 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
       std::vector<IRing> rest;
       if (!SubtractInside(out[0], BoxRing(*stair), &rest)) continue;
       bool wide = true;
-      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, static_cast<double>(scale.UnitsUp(2.0)));
+      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, 1.5 / scale.grid - 1e-9);
       if (!wide) continue;
     }
     ring = std::move(out[0]);
