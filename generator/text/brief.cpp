@@ -520,7 +520,9 @@ struct Mention {
   int ref = -1;         // floor ref item that places it (bound, scope or trailing)
   std::vector<int> partner_levels;  // levels taken from connection partners (resolved later)
   std::vector<int> partners;        // mention indices it connects with
+  bool definite = false;       // "the kitchen", "its own bathroom"
   bool in_connection = false;
+  bool by_cue = false;         // in a connection made by a cue ("open to", "reaches")
   bool in_attachment = false;  // furniture, panoramic, side or entrance refer to it
   int first = 0;  // token range of the whole phrase (quantifier included)
   int last = 0;
@@ -850,6 +852,8 @@ int Parser::TryFurniture(std::size_t i, Item& item) {
   int best = 0;
   for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
   if (best == 0) return 0;
+  // "flat-screen TV": the first noun is a modifier of the next one.
+  if (FurnitureStartsWithin(i + best, 1)) return 0;
   // "a dining table for six": the seats belong to the item.
   if (i + best + 1 < tokens_.size() && tokens_[i + best].word == "for" && Cardinal(tokens_[i + best + 1]) &&
       tokens_[i + best + 1].sentence == tokens_[i].sentence)
@@ -967,8 +971,18 @@ void Parser::Quantify(Mention& m) {
   auto at = [&](int j) -> const Token* {
     return j >= 0 && tokens_[j].sentence == sentence ? &tokens_[j] : nullptr;
   };
+  // "three or more bedrooms"
+  if (at(k) && at(k - 1) && at(k - 2) && at(k)->word == "more" && at(k - 1)->word == "or" && Cardinal(*at(k - 2))) {
+    m.counting = true;
+    m.min = *Cardinal(*at(k - 2));
+    m.max = -1;
+    m.first = k - 2;
+    Consume(k - 2, k);
+    k = -1;  // quantified: skip the scans below
+    determined = true;
+  }
   // Adjectives, a bound floor ("second-floor"), en-suite / open-plan words.
-  while (const Token* t = at(k)) {
+  while (const Token* t = k >= 0 ? at(k) : nullptr) {
     if (t->item >= 0 && items_[t->item].kind == ItemKind::kFloorRef && m.bound_ref < 0 &&
         items_[t->item].ref != RefType::kSame) {
       m.bound_ref = t->item;
@@ -1005,7 +1019,7 @@ void Parser::Quantify(Mention& m) {
     break;
   }
   // The quantifier.
-  const Token* t = at(k);
+  const Token* t = determined || k < 0 ? nullptr : at(k);
   auto negated_before = [&](int from) {
     for (int j = from, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
       if (IsNegation(tokens_[j])) {
@@ -1084,6 +1098,7 @@ void Parser::Quantify(Mention& m) {
     } else if (In(*t, {"the", "this", "that", "these", "those", "its", "their", "our", "my", "his", "her",
                        "both", "all", "same"})) {
       determined = true;  // a reference to a room counted elsewhere
+      m.definite = true;
       m.first = k;
     }
   }
@@ -1123,13 +1138,14 @@ void Parser::Quantify(Mention& m) {
 // Resolves a floor reference to a level (or kUpperLevels / kEachLevel).
 int Parser::ResolveRef(int ref_item) const {
   const Item& r = items_[ref_item];
+  // "upstairs" is level 1 only when the text fixes two floors; "top" is the highest floor asked or implied.
   int floors = floors_.value_or(std::max(floors_min_, 0));
   switch (r.ref) {
+    case RefType::kUpper: return floors_ == 2 ? 1 : kUpperLevels;
     case RefType::kGround: return 0;
     case RefType::kOrdinal: return british_ ? r.n : r.n - 1;
     case RefType::kNumbered: return zero_based_numbers_ ? r.n : std::max(0, r.n - 1);
     case RefType::kTop: return std::max(1, floors - 1);
-    case RefType::kUpper: return floors == 2 ? 1 : kUpperLevels;
     case RefType::kMiddle: return 1;
     case RefType::kEach: return kEachLevel;
     case RefType::kSame: return kAnyLevel;
@@ -1202,7 +1218,22 @@ void Parser::PlaceLevels() {
           }
         }
         if (attached || (!room_follows && !pending.empty())) {
-          for (int p : pending) mentions_[p].ref = it;
+          // A trailing floor phrase places the room right before it, and the rooms joined to that one by
+          // "and" ("a kitchen and a dining room on the ground floor"), not a whole comma list ("a
+          // living room, a kitchen, a bathroom on each floor": only the bathroom is on each floor).
+          std::size_t from = pending.size() - 1;
+          while (from > 0) {
+            const Mention& earlier = mentions_[pending[from - 1]];
+            const Mention& later = mentions_[pending[from]];
+            bool joined = true;
+            for (int k = earlier.last + 1; k < later.first; ++k)
+              if (tokens_[k].punct == ',' || !(In(tokens_[k], {"and", "or", "as", "well", "plus"}) || tokens_[k].punct == '/' ||
+                                               tokens_[k].punct == '&'))
+                joined = false;
+            if (!joined) break;
+            --from;
+          }
+          for (std::size_t k = from; k < pending.size(); ++k) mentions_[pending[k]].ref = it;
           pending.clear();
           // A trailing phrase at the very start of a list still scopes what follows a colon.
         } else {
@@ -1243,7 +1274,7 @@ std::vector<int> Parser::MentionLevels(const Mention& m) const {
 // the rooms after it in one clause; "with" + balcony / own bathroom; en-suite and open-plan words.
 void Parser::Connect() {
   std::vector<bool> used_right(mentions_.size(), false);
-  auto add = [&](int a, int b, LinkKind kind, bool every, TextSpan source) {
+  auto add = [&](int a, int b, LinkKind kind, bool every, TextSpan source, bool by_cue = true) {
     if (a < 0 || b < 0 || a == b) return;
     if (mentions_[a].category == mentions_[b].category) return;
     // A balcony or a bathroom "opening onto" a room does so through a door (FORMAT.md rules 9, 10).
@@ -1253,6 +1284,8 @@ void Parser::Connect() {
         kind = LinkKind::kAny;
     connections_.push_back({a, b, kind, every, std::move(source)});
     mentions_[a].in_connection = mentions_[b].in_connection = true;
+    // "a bedroom with a balcony" states both rooms; "connect to balconies" refers to rooms counted elsewhere.
+    if (by_cue) mentions_[a].by_cue = mentions_[b].by_cue = true;
     mentions_[a].partners.push_back(b);
     mentions_[b].partners.push_back(a);
   };
@@ -1262,13 +1295,21 @@ void Parser::Connect() {
     int sentence = tokens_[cue.first].sentence;
     auto walk = [&](int start, int step, bool left, bool* entrance) {
       std::vector<int> found;
+      bool relative = false;  // "the kitchen, which is open to ...": "which" points at the room before it
       for (int k = start; k >= 0 && k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence; k += step) {
         const Token& t = tokens_[k];
+        if (left && found.empty() && In(t, {"which", "that", "who"})) relative = true;
         if (t.item >= 0) {
           const Item& it = items_[t.item];
           if (it.kind == ItemKind::kRoom) {
             int mi = MentionOfItem(t.item);
-            if (left && used_right[mi]) break;
+            if (left && used_right[mi]) {
+              if (relative && found.empty()) found.push_back(mi);
+              break;
+            }
+            // "open to the living room and an office": a new, indefinite room after a definite one is the
+            // next item of a list, not a second target.
+            if (!left && !found.empty() && mentions_[mi].definite != mentions_[found.front()].definite) break;
             if (std::find(found.begin(), found.end(), mi) == found.end()) found.push_back(mi);
             k = step < 0 ? it.first : it.last;
             continue;
@@ -1340,8 +1381,7 @@ void Parser::Connect() {
     }
     if (partner < 0) continue;
     TextSpan source = Span(mentions_[partner].first, m.last);
-    add(partner, mi, m.category == Category::kBalcony ? LinkKind::kDoor : LinkKind::kDoor, mentions_[partner].every,
-        source);
+    add(partner, mi, LinkKind::kDoor, mentions_[partner].every, source, false);
   }
 }
 
@@ -1514,10 +1554,10 @@ void Parser::Finish(Brief& brief) {
   std::vector<std::pair<std::pair<int, int>, TextSpan>> references;
   for (std::size_t mi = 0; mi < mentions_.size(); ++mi) {
     const Mention& m = mentions_[mi];
-    bool counting = m.counting && !(bare_[mi] && (m.in_connection || m.in_attachment));
+    bool counting = m.counting && !(bare_[mi] && (m.by_cue || m.in_attachment));
     // "... two bedrooms. One bedroom should open onto the balcony": a room in a connection whose
     // category was already counted in an earlier sentence is one of those, not another.
-    if (counting && (m.in_connection || m.in_attachment) && m.min == 1 && m.max == 1) {
+    if (counting && (m.by_cue || m.in_attachment) && m.min == 1 && m.max == 1) {
       for (std::size_t k = 0; k < mi; ++k)
         if (mentions_[k].category == m.category && mentions_[k].counting &&
             tokens_[mentions_[k].first].sentence != tokens_[m.first].sentence)
@@ -1615,12 +1655,17 @@ void Parser::Finish(Brief& brief) {
       if ((c.a == static_cast<int>(mi) || c.b == static_cast<int>(mi)) && c.kind == LinkKind::kOpen) has_open_link = true;
     if (item.ensuite && !has_bedroom_link && m.max != 0) {
       BriefConnection bc;
+      bc.level = levels.size() == 1 ? levels[0] : kAnyLevel;
+      bc.every = m.every;
       if (m.category == Category::kBathroom) {
         // the nearest bedroom named before it in the text, else any bedroom
         Category from = Category::kBedroom;
         for (int k = static_cast<int>(mi) - 1; k >= 0; --k)
           if (mentions_[k].category == Category::kBedroom || mentions_[k].category == Category::kChildrenRoom) {
             from = mentions_[k].category;
+            bc.every = mentions_[k].every;
+            auto partner_levels = MentionLevels(mentions_[k]);
+            if (bc.level == kAnyLevel && partner_levels.size() == 1) bc.level = partner_levels[0];
             break;
           }
         bc.from = from;
@@ -1629,9 +1674,7 @@ void Parser::Finish(Brief& brief) {
         bc.from = m.category;
         bc.to = {Category::kBathroom};
       }
-      bc.level = levels.size() == 1 ? levels[0] : kAnyLevel;
       bc.kind = LinkKind::kDoor;
-      bc.every = m.every;
       bc.source = Span(m.first, m.last);
       brief.connections.push_back(bc);
     }

@@ -248,3 +248,21 @@ TEST_CASE("every fixture layout that passes the geometric rules builds into clos
     CHECK(b->Bounds().max.z == Approx(b->levels * kLevelHeight + b->slab_thickness));
   }
 }
+
+TEST_CASE("a wall ending on the facade beside a courtyard notch stops at the exterior wall's inner face") {
+  auto layout = ParseLayoutText(kUShapedHouse, "u-shaped fixture");
+  REQUIRE(layout);
+  auto b = BuildBuilding(*layout);
+  REQUIRE(b);
+  CHECK(b->warnings.empty());  // every door found its wall
+  for (const MeshPart& p : b->parts) {
+    INFO(p.name);
+    CHECK(CheckSolid(p.mesh).ok());
+    if (p.name == "wall_living0_bathroom0") {
+      Box3 box = p.mesh.Bounds();
+      CHECK(box.min.x == Approx(0.25));
+      CHECK(box.max.x == Approx(4.25));  // the courtyard's exterior wall is x in [4.25, 4.5]
+    }
+  }
+  CHECK(b->CountParts(PartKind::kDoorLeaf) == static_cast<int>(layout->doors.size() + layout->entrances.size()));
+}

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "generator/text/brief.h"
+#include "layout/layout_io.h"
 
 namespace villa {
 namespace {
@@ -85,4 +86,240 @@ TEST_CASE("the paper's example request is parsed whole") {
   CHECK(brief.conflicts.empty());
   CHECK(!brief.british_ordinals);
 }
+
+TEST_CASE("floor counts in words, digits and compounds") {
+  CHECK(ParseBrief("a three-story villa").floors == 3);
+  CHECK(ParseBrief("a 3-storey villa").floors == 3);
+  CHECK(ParseBrief("a house on 2 floors").floors == 2);
+  CHECK(ParseBrief("two levels, please").floors == 2);
+  CHECK(ParseBrief("a single-storey home").floors == 1);
+  CHECK(ParseBrief("a cosy bungalow").floors == 1);
+  CHECK(ParseBrief("Floors: 3. Shape: L-shaped.").floors == 3);
+  Brief multi = ParseBrief("a multi-storey house");
+  CHECK(!multi.floors);
+  CHECK(multi.floors_min == 2);
+  // Named floors imply at least that many.
+  CHECK(ParseBrief("a kitchen downstairs and a bedroom on the third floor").floors_min == 3);
+  Brief five = ParseBrief("a five-story villa");
+  CHECK(five.floors == 5);
+  REQUIRE(five.conflicts.size() == 1);
+  CHECK(five.conflicts[0] == "5 floors asked: a villa has at most 3 (FORMAT.md rule 6)");
+}
+
+TEST_CASE("synonyms, numbers and en-suite / open-plan words") {
+  Brief brief = ParseBrief(
+      "A 2-storey U-shaped home: lounge, open-plan kitchen, WC, study, master bedroom with en-suite, kids' room "
+      "and 2 terraces.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(brief.floors == 2);
+  CHECK(brief.shape == ShapeClass::kU);
+  CHECK(Exact(brief, Category::kLivingRoom) == 1);
+  CHECK(Exact(brief, Category::kKitchen) == 1);
+  CHECK(Exact(brief, Category::kBathroom) == 2);  // the WC and the en-suite
+  CHECK(Exact(brief, Category::kOffice) == 1);
+  CHECK(Exact(brief, Category::kBedroom) == 1);
+  CHECK(Exact(brief, Category::kChildrenRoom) == 1);
+  CHECK(Exact(brief, Category::kBalcony) == 2);
+  CHECK(HasConnection(brief, Category::kBedroom, Category::kBathroom, LinkKind::kDoor, kAnyLevel));
+  CHECK(HasConnection(brief, Category::kKitchen, Category::kLivingRoom, LinkKind::kOpen, kAnyLevel));
+  CHECK(brief.unparsed.empty());
+}
+
+TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each floor") {
+  SECTION("ground floor and upstairs") {
+    Brief brief = ParseBrief("On the ground floor there is a living room and a kitchen; upstairs are two bedrooms "
+                             "and a bathroom.");
+    CHECK(Exact(brief, Category::kLivingRoom, 0) == 1);
+    CHECK(Exact(brief, Category::kKitchen, 0) == 1);
+    CHECK(brief.floors_min == 2);
+    // "upstairs" without a floor count: the upper floors together.
+    CHECK(Exact(brief, Category::kBedroom, kUpperLevels) == 2);
+    CHECK(Exact(brief, Category::kBathroom, kUpperLevels) == 1);
+  }
+  SECTION("upstairs in a two-floor house is level 1") {
+    Brief brief = ParseBrief("A two-story house: a kitchen and a lounge downstairs, three bedrooms upstairs.");
+    CHECK(Exact(brief, Category::kKitchen, 0) == 1);
+    CHECK(Exact(brief, Category::kLivingRoom, 0) == 1);
+    CHECK(Exact(brief, Category::kBedroom, 1) == 3);
+  }
+  SECTION("a trailing phrase places the room before it, not the whole list") {
+    Brief brief = ParseBrief("A two-story house with a living room, a kitchen, two bedrooms, a bathroom on each "
+                             "floor and a balcony.");
+    CHECK(Exact(brief, Category::kBathroom, kEachLevel) == 1);
+    CHECK(Exact(brief, Category::kBedroom) == 2);
+    CHECK(Exact(brief, Category::kLivingRoom) == 1);
+    CHECK(Exact(brief, Category::kBalcony) == 1);
+  }
+  SECTION("'and' joins rooms under one trailing phrase") {
+    Brief brief = ParseBrief("I need a kitchen and a dining room on the ground floor and an office on the top floor "
+                             "of a three-story villa.");
+    CHECK(Exact(brief, Category::kKitchen, 0) == 1);
+    CHECK(Exact(brief, Category::kDiningRoom, 0) == 1);
+    CHECK(Exact(brief, Category::kOffice, 2) == 1);
+  }
+  SECTION("American ordinals by default, British when the text names a ground floor and a first floor") {
+    Brief american = ParseBrief("First floor: kitchen and living room. Second floor: two bedrooms.");
+    CHECK(!american.british_ordinals);
+    CHECK(Exact(american, Category::kKitchen, 0) == 1);
+    CHECK(Exact(american, Category::kBedroom, 1) == 2);
+    Brief british = ParseBrief("Ground floor: kitchen and living room. First floor: two bedrooms.");
+    CHECK(british.british_ordinals);
+    CHECK(Exact(british, Category::kKitchen, 0) == 1);
+    CHECK(Exact(british, Category::kBedroom, 1) == 2);
+    // The annotator's convention: ground, second (= middle), third (= top) floor.
+    Brief drafts = ParseBrief("Ground floor: a kitchen. Second floor: a study. Third floor: a bedroom.");
+    CHECK(!drafts.british_ordinals);
+    CHECK(Exact(drafts, Category::kOffice, 1) == 1);
+    CHECK(Exact(drafts, Category::kBedroom, 2) == 1);
+  }
+  SECTION("top floor and level numbers") {
+    Brief brief = ParseBrief("A three-storey villa with a meeting room on the top floor and a study on level 2.");
+    CHECK(Exact(brief, Category::kMeetingRoom, 2) == 1);
+    CHECK(Exact(brief, Category::kOffice, 1) == 1);
+  }
+}
+
+TEST_CASE("negations, ranges and counts after the noun") {
+  Brief brief = ParseBrief("A two-storey house with no balcony, without an office, at least two bathrooms, a "
+                           "couple of bedrooms and three or more children's rooms. Kitchens: 1.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(Exact(brief, Category::kBalcony) == 0);
+  CHECK(Exact(brief, Category::kOffice) == 0);
+  const BriefRooms* bathrooms = FindRooms(brief, Category::kBathroom, kAnyLevel);
+  REQUIRE(bathrooms);
+  CHECK(bathrooms->min == 2);
+  CHECK(bathrooms->max == -1);
+  CHECK(Exact(brief, Category::kBedroom) == 2);
+  const BriefRooms* children = FindRooms(brief, Category::kChildrenRoom, kAnyLevel);
+  REQUIRE(children);
+  CHECK(children->min == 3);
+  CHECK(children->max == -1);
+  CHECK(Exact(brief, Category::kKitchen) == 1);
+}
+
+TEST_CASE("footprints the partitioner cannot make are reported") {
+  for (const char* text : {"a round villa with a kitchen", "a star-shaped house", "a hexagonal home with two floors"}) {
+    Brief brief = ParseBrief(text);
+    INFO(text);
+    CHECK(brief.unsupported_shape.has_value());
+    CHECK(!brief.shape.has_value());
+  }
+  CHECK(ParseBrief("an L-shaped house").shape == ShapeClass::kL);
+  CHECK(ParseBrief("an H shape floor plan").shape == ShapeClass::kH);
+  CHECK(ParseBrief("a T-shaped villa").shape == ShapeClass::kT);
+  CHECK(ParseBrief("a square house").shape == ShapeClass::kRectangle);
+  CHECK(ParseBrief("a villa with slanted walls").shape == ShapeClass::kIrregular);
+  // A round table is furniture, not the footprint; 200 square metres is not a shape.
+  Brief table = ParseBrief("a house with a round table in the dining room, 200 square metres");
+  CHECK(!table.unsupported_shape);
+  CHECK(!table.shape);
+  REQUIRE(table.furniture.size() == 1);
+  CHECK(table.furniture[0].item == "round table");
+  CHECK(table.furniture[0].category == Category::kDiningRoom);
+}
+
+TEST_CASE("what is not understood is reported with its place in the text") {
+  const std::string text = "A two-story villa with a kitchen, a swimming pool, a garage and 200 square meters.";
+  Brief brief = ParseBrief(text);
+  REQUIRE(brief.unparsed.size() == 3);
+  CHECK(brief.unparsed[0].text == "swimming pool");
+  CHECK(brief.unparsed[1].text == "garage");
+  CHECK(brief.unparsed[2].text == "200 square meters");
+  for (const auto& u : brief.unparsed) CHECK(text.substr(u.begin, u.end - u.begin) == u.text);
+  CHECK(Exact(brief, Category::kKitchen) == 1);
+  Json json = BriefToJson(brief);
+  CHECK(json["unparsed"].size() == 3);
+  CHECK(json["unparsed"][1]["text"] == "garage");
+}
+
+TEST_CASE("connections, the entrance, sides and furniture") {
+  Brief brief = ParseBrief(
+      "The entrance opens into the lounge. The lounge leads to the kitchen, which is open to the dining area. Each "
+      "bedroom has its own bathroom. The kitchen is on the north side. Please put two desks in the study and a "
+      "large flat-screen TV in the living room.");
+  INFO(BriefToJson(brief).dump(2));
+  REQUIRE(brief.entrance.size() == 1);
+  CHECK(brief.entrance[0].category == Category::kLivingRoom);
+  CHECK(HasConnection(brief, Category::kLivingRoom, Category::kKitchen, LinkKind::kAny, kAnyLevel));
+  CHECK(HasConnection(brief, Category::kKitchen, Category::kDiningRoom, LinkKind::kOpen, kAnyLevel));
+  bool every = false;
+  for (const auto& c : brief.connections)
+    if (c.from == Category::kBedroom && c.kind == LinkKind::kDoor) every = c.every;
+  CHECK(every);
+  REQUIRE(brief.sides.size() == 1);
+  CHECK(brief.sides[0].category == Category::kKitchen);
+  CHECK(brief.sides[0].side == "north");
+  REQUIRE(brief.furniture.size() == 2);
+  CHECK(brief.furniture[0].item == "desks");
+  CHECK(brief.furniture[0].count == 2);
+  CHECK(brief.furniture[0].category == Category::kOffice);
+  CHECK(brief.furniture[1].item == "large flat-screen TV");
+  CHECK(brief.furniture[1].category == Category::kLivingRoom);
+  CHECK(brief.unparsed.empty());
+}
+
+TEST_CASE("contradictions with the format are reported as conflicts") {
+  Brief brief = ParseBrief("A three-story villa with two utility rooms, and seven bedrooms on the ground floor.");
+  INFO(BriefToJson(brief).dump(2));
+  bool staircase = false, crowded = false;
+  for (const auto& c : brief.conflicts) {
+    staircase |= c.find("utility (staircase) room a floor") != std::string::npos;
+    crowded |= c.find("7 rooms asked on level 0") != std::string::npos;
+  }
+  CHECK(staircase);
+  CHECK(crowded);
+}
+
+TEST_CASE("a layout is checked against every requirement of a brief") {
+  Result<Layout> layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/house_two_floors.json");
+  REQUIRE(layout.ok());
+  SECTION("a brief the fixture meets") {
+    Brief brief = ParseBrief(
+        "A two-story rectangular house with two living rooms, a kitchen open to the dining room, two bathrooms and a "
+        "bedroom. The children's room reaches a balcony with panoramic windows. The entrance leads into the "
+        "living room.");
+    BriefCheck check = CheckBrief(brief, *layout);
+    INFO(BriefCheckToJson(check).dump(2));
+    CHECK(check.total() == brief.RequirementCount());
+    CHECK(check.total() >= 10);
+    CHECK(check.met() == check.total());
+    CHECK(check.adherence() == 1.0);
+  }
+  SECTION("a brief it does not meet, with what it has instead") {
+    Brief brief = ParseBrief("A three-story L-shaped house with a kitchen open to the living room and an office.");
+    BriefCheck check = CheckBrief(brief, *layout);
+    INFO(BriefCheckToJson(check).dump(2));
+    std::vector<RequirementResult> unmet = check.unmet();
+    REQUIRE(unmet.size() == 4);
+    CHECK(unmet[0].requirement == "3 floors");
+    CHECK(unmet[0].detail == "has 2");
+    CHECK(unmet[1].requirement == "L footprint");
+    CHECK(unmet[1].detail == "footprint is rectangle");
+    CHECK(unmet[2].requirement == "1 office");
+    CHECK(unmet[2].detail == "found 0");
+    CHECK(unmet[3].requirement == "kitchen open to living-room");
+    CHECK(check.met() == 1);  // the kitchen
+  }
+}
+
+TEST_CASE("footprint classes from geometry") {
+  auto layout_of = [](std::vector<Ring> rings) {
+    Layout l;
+    int i = 0;
+    for (auto& r : rings) l.rooms.push_back({Category::kBedroom, 0, i++, r});
+    return l;
+  };
+  auto box = [](double x0, double y0, double x1, double y1) { return Ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; };
+  CHECK(ClassifyFootprint(layout_of({box(0, 0, 6, 10), box(6, 0, 12, 10)})) == ShapeClass::kRectangle);
+  CHECK(ClassifyFootprint(layout_of({box(0, 0, 10, 5), box(0, 5, 5, 10)})) == ShapeClass::kL);
+  CHECK(ClassifyFootprint(layout_of({box(0, 0, 12, 4), box(0, 4, 4, 10), box(8, 4, 12, 10)})) == ShapeClass::kU);
+  CHECK(ClassifyFootprint(layout_of({box(0, 6, 12, 10), box(4, 0, 8, 6)})) == ShapeClass::kT);
+  CHECK(ClassifyFootprint(layout_of({box(0, 0, 4, 10), box(4, 3, 8, 7), box(8, 0, 12, 10)})) == ShapeClass::kH);
+  CHECK(ClassifyFootprint(layout_of({Ring{{0, 0}, {10, 0}, {10, 6}, {7, 9}, {0, 9}}})) == ShapeClass::kIrregular);
+  // A slanted wall between two rooms of a rectangle is not a slanted footprint.
+  CHECK(ClassifyFootprint(layout_of({Ring{{0, 0}, {6, 0}, {4, 10}, {0, 10}}, Ring{{6, 0}, {10, 0}, {10, 10}, {4, 10}}})) ==
+        ShapeClass::kRectangle);
+  CHECK(!ClassifyFootprint(layout_of({}), 0));
+}
+
 }  // namespace villa
