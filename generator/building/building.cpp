@@ -345,7 +345,9 @@ std::vector<WallPiece> InteriorWalls(const Layout& layout, int level, const Ring
     for (int e = 0; e < 2; ++e) {
       int node = span_nodes[i][e];
       on_boundary[e] = DistToRing(nodes[node], footprint) < kOnLine;
-      extend[e] = at_node[node].size() > 1 ? 2.0 : on_boundary[e] ? 0.8 : 0.0;
+      // A junction needs room for the bisector cuts; an end on the facade needs none: the inner
+      // face of the exterior wall lies inside the footprint, so clipping to it trims the piece there.
+      extend[e] = on_boundary[e] ? 0.0 : at_node[node].size() > 1 ? 2.0 : 0.0;
     }
     WallFrame frame{s.a, d, n, thickness};
     Ring plan = {frame.ToPlan(-extend[0], -half), frame.ToPlan(len + extend[1], -half),

@@ -86,8 +86,9 @@ inline Ring CleanRing(Ring ring, double eps = 1e-7) {
       Point q = ring[(i + 1) % n];
       double base = Dist(p, q);
       bool repeated = Dist(p, c) < eps;
-      bool collinear = base > eps && std::abs(Cross(Sub(q, p), Sub(c, p))) / base < eps &&
-                       Dot(Sub(c, p), Sub(q, p)) >= 0.0 && Dot(Sub(c, q), Sub(p, q)) >= 0.0;
+      // Collinear with its neighbours: a vertex on a straight stretch, or the tip of a zero-width spike
+      // (what clipping a non-convex ring leaves where the result touches the clip line).
+      bool collinear = base > eps && std::abs(Cross(Sub(q, p), Sub(c, p))) / base < eps;
       bool spike = base < eps;  // p == q: c is the tip of a zero-width spike
       if (repeated || collinear || spike) {
         ring.erase(ring.begin() + static_cast<long>(i));
