@@ -383,7 +383,8 @@ std::vector<WallPiece> InteriorWalls(const Layout& layout, int level, const Ring
     plan = CleanRing(plan, 1e-9);
     if (!plan.empty() && (on_boundary[0] || on_boundary[1])) plan = CleanRing(ClipConvex(inner, plan), 1e-9);
     if (plan.empty() || Area(plan) < 1e-6) {
-      warnings.push_back("interior " + s.name + ": nothing left of it between the other walls");
+      // A stub between an open and the facade lies inside the exterior wall: nothing is lost.
+      if (len > 0.4) warnings.push_back("interior " + s.name + ": nothing left of it between the other walls");
       continue;
     }
     WallPiece piece;
