@@ -35,7 +35,7 @@ std::string FloorsSentence(const std::map<int, std::size_t>& by_floors) {
     counts += sep + std::to_string(count);
     ratio += sep + std::to_string(tenths ? count * 10 / total : g ? count / g : 0);
   }
-  return "Floors (" + label + (top == 1 ? " storey" : " storeys") + "): " + counts + ", ratio " + ratio + ".";
+  return "Floors (" + label + (top == 1 ? " storey" : " storeys") + "): " + counts + (ratio == counts ? "" : ", ratio " + ratio) + ".";
 }
 
 }  // namespace
@@ -86,7 +86,12 @@ std::string DataCard(const ExportSummary& s, const TrainerConfigInput& config) {
      << s.answer_mismatch << " answers off the canonical text, " << s.no_description << " without a description, "
      << s.duplicate_geometry << " duplicate geometries";
   if (s.bad_lines) md << ", " << s.bad_lines << " bad lines";
-  md << ".\n\n";
+  md << ".";
+  if (!s.rejected_reasons.empty()) {
+    md << " Reasons for rejection:";
+    for (const auto& [reason, count] : s.rejected_reasons) md << "\n- " << reason << " (" << count << ")";
+  }
+  md << "\n\n";
 
   md << "## Composition\n\n"
      << FloorsSentence(s.layouts_by_floors) << "\n\n"

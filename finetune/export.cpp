@@ -213,6 +213,10 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     const std::string status = record.contains("status") && record["status"].is_string() ? record["status"].get<std::string>() : "";
     if (status == "rejected") {
       ++summary.rejected;
+      auto reason = record.find("reason");
+      ++summary.rejected_reasons[reason != record.end() && reason->is_string() && !reason->get<std::string>().empty()
+                                     ? reason->get<std::string>()
+                                     : "(no reason given)"];
       return true;
     }
     if (status == "pending") {

@@ -76,6 +76,7 @@ struct ExportSummary {
   std::size_t records = 0;
   std::size_t bad_lines = 0;           // lines that are not JSON or not a record
   std::size_t rejected = 0;            // status "rejected"
+  std::map<std::string, std::size_t> rejected_reasons;  // its "reason" -> records
   std::size_t pending = 0;             // status "pending"
   std::size_t excluded_status = 0;     // verified/auto left out by --include
   std::size_t unknown_status = 0;      // a status outside the four

@@ -49,6 +49,8 @@ TEST_CASE("Rejected, pending, invalid and duplicate records are left out and cou
   CHECK(s.records == 9);
   CHECK(s.bad_lines == 1);
   CHECK(s.rejected == 1);
+  CHECK(s.rejected_reasons.at("rooms too small") == 1);
+  CHECK(Slurp(dir / "out" / "README.md").find("- rooms too small (1)") != std::string::npos);
   CHECK(s.pending == 1);
   CHECK(s.unreadable_layout == 1);
   CHECK(s.invalid_layout == 1);
