@@ -429,14 +429,33 @@ double IntersectionArea(const Ring& a, const Ring& b) {
     Ring clipped = ClipConvex(Ccw(b), Ccw(a));
     return clipped.size() >= 3 ? std::abs(SignedArea(clipped)) : 0;
   }
-  // Two non-convex rooms: Boost.Geometry. It may throw on invalid input (callers check validity first).
-  try {
-    BgMultiPolygon out;
-    bg::intersection(ToBoost(a), ToBoost(b), out);
-    return bg::area(out);
-  } catch (const std::exception&) {
-    return 0;
+  // Two non-convex rooms: the signed fan decomposition. A ring's indicator function is the signed sum of
+  // its fan triangles (o, p_i, p_i+1) from any origin o (a.e.), so the overlap is the signed sum of the
+  // overlaps of triangle pairs, each a convex clip. Plain doubles without Boost's rescaling, whose error
+  // (about 1e-6 m2, depending on vertex order) made exactly touching rooms look overlapping.
+  auto fan = [](const Ring& ring) {
+    std::vector<std::pair<Ring, double>> triangles;  // counter-clockwise triangle, sign
+    for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
+      Ring t{ring[0], ring[i], ring[i + 1]};
+      double area = SignedArea(t);
+      if (std::abs(area) < 1e-15) continue;
+      if (area < 0) std::swap(t[1], t[2]);
+      triangles.push_back({std::move(t), area < 0 ? -1.0 : 1.0});
+    }
+    return triangles;
+  };
+  auto fan_a = fan(a), fan_b = fan(b);
+  double total = 0;
+  for (const auto& [ta, sa] : fan_a) {
+    Box2 box_a = BoundingBox(ta);
+    for (const auto& [tb, sb] : fan_b) {
+      Box2 box_b = BoundingBox(tb);
+      if (box_a.max_x <= box_b.min_x || box_b.max_x <= box_a.min_x || box_a.max_y <= box_b.min_y || box_b.max_y <= box_a.min_y) continue;
+      Ring clipped = ClipConvex(ta, tb);
+      if (clipped.size() >= 3) total += sa * sb * std::abs(SignedArea(clipped));
+    }
   }
+  return std::max(0.0, total);
 }
 
 std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
