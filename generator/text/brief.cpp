@@ -481,7 +481,7 @@ enum class ItemKind { kFloorCount, kFloorRef, kShape, kRoom, kCue, kPanoramic, k
 enum class RefType { kOrdinal, kNumbered, kGround, kTop, kUpper, kMiddle, kEach, kSame };
 
 struct Item {
-  ItemKind kind;
+  ItemKind kind = ItemKind::kRoom;
   int first = 0;  // token range, inclusive
   int last = 0;
   // kFloorCount
@@ -504,6 +504,12 @@ struct Item {
   // kFurniture
   int item_first = 0;  // the item's words (modifiers + noun), for its name
 };
+
+Item MakeItem(ItemKind kind) {
+  Item item;
+  item.kind = kind;
+  return item;
+}
 
 // A room mention after interpretation.
 struct Mention {
@@ -921,11 +927,11 @@ void Parser::MatchAll() {
     }
     struct Candidate {
       int len = 0;
-      Item item{ItemKind::kRoom};
+      Item item = MakeItem(ItemKind::kRoom);
     };
     Candidate best;
     auto consider = [&](ItemKind kind, auto fn) {
-      Item item{kind};
+      Item item = MakeItem(kind);
       int len = (this->*fn)(i, item);
       if (len > best.len) {
         best.len = len;

@@ -32,12 +32,6 @@ int Exact(const Brief& brief, Category category, int level = kAnyLevel) {
   return r->min;
 }
 
-std::string Unparsed(const Brief& brief) {
-  std::string out;
-  for (const auto& u : brief.unparsed) out += (out.empty() ? "" : "|") + u.text;
-  return out;
-}
-
 constexpr const char* kPaperRequest =
     "I want to build a three-story, irregularly shaped villa. The house needs a living room, a kitchen, a dining "
     "room, a master bedroom, a children's room, a meeting room, an office, two bathrooms, three utility rooms, and "

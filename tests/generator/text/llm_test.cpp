@@ -38,7 +38,7 @@ Reply Completion(const std::string& content, const std::string& finish_reason = 
             {"choices", Json::array({Json{{"index", 0},
                                           {"message", Json{{"role", "assistant"}, {"content", content}}},
                                           {"finish_reason", finish_reason}}})}};
-  return {200, body.dump()};
+  return {200, body.dump(), 0.0, ""};
 }
 
 Reply Failure(int status, const std::string& message, const std::string& retry_after = "") {
