@@ -22,6 +22,8 @@ struct SceneDeleter {
   void operator()(RTCScene s) const { rtcReleaseScene(s); }
 };
 
+constexpr Rgb kSlabEdge{0.80, 0.78, 0.74};
+
 bool Cuttable(PartKind kind) {
   return kind == PartKind::kExteriorWall || kind == PartKind::kInteriorWall || kind == PartKind::kDoorLeaf ||
          kind == PartKind::kWindowGlass || kind == PartKind::kStair;
@@ -133,7 +135,10 @@ class Tracer {
         Add(color, options_.section_color, transmit);
         break;
       }
-      Add(color, Mix(mat.color, Shade(p, n)), transmit);
+      // A room floor's colour belongs on its top; the slab's edges (on the facade, round stair holes)
+      // are concrete.
+      Rgb base = part.kind == PartKind::kFloor && std::abs(n.z) < 0.5 ? kSlabEdge : mat.color;
+      Add(color, Mix(base, Shade(p, n)), transmit);
       break;
     }
     return color;
