@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "generator/building/export.h"
+#include "layout/layout_io.h"
 #include "test_layouts.h"
 
 using namespace villa;
@@ -54,5 +55,37 @@ TEST_CASE("villa build writes the .glb and the preview; refuses to overwrite wit
   std::string hole = std::string(VILLA_FIXTURE_DIR) + "/layouts/rule1_courtyard_hole.json";
   CHECK(Villa("build " + hole + " -o " + (dir / "x.glb").string()) == 1);
   CHECK_FALSE(fs::exists(dir / "x.glb"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("villa generate plans and builds: layout, plan, building, preview and report in one folder") {
+  fs::path dir = fs::temp_directory_path() / ("villa_generate_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  // The main job's request (scripts/main-job.sh).
+  const std::string request =
+      "\"I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the "
+      "ground floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic "
+      "windows on the top floor.\"";
+  REQUIRE(Villa("generate " + request + " -o " + dir.string() + " --seed 7") == 0);
+  for (const char* f : {"layout.json", "plan.png", "building.glb", "preview.png", "report.json"}) {
+    INFO(f);
+    CHECK(fs::exists(dir / f));
+  }
+  auto layout = LoadLayout(dir / "layout.json");
+  REQUIRE(layout);
+  CHECK(layout->LevelCount() == 3);
+  auto report = nlohmann::json::parse(Slurp(dir / "report.json"));
+  CHECK(report["building"]["levels"] == 3);
+  CHECK(report["building"]["vcr"]["floor_pairs"] == 2);
+  CHECK(report["building"]["vcr"]["connected"] == 2);
+  CHECK(report["problems"].empty());
+  auto scene = ReadSceneInfo(dir / "building.glb");
+  REQUIRE(scene);
+  for (const Room& r : layout->rooms) CHECK(scene->Find(r.name()));
+  // Outputs are never overwritten without --force.
+  std::string before = Slurp(dir / "building.glb");
+  CHECK(Villa("generate " + request + " -o " + dir.string()) == 2);
+  CHECK(Slurp(dir / "building.glb") == before);
+  CHECK(Villa("generate \"  \" -o " + dir.string() + " --force") == 2);  // empty request
   fs::remove_all(dir);
 }
