@@ -826,10 +826,34 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         part.kind = PartKind::kDoorLeaf;
         double lt = options.door_leaf_thickness;
         double width = p.cut.s1 - p.cut.s0 - 2 * gap;
-        if (options.door_leaves_open)  // hinged at s0, swung 90 degrees to the +normal side (inward for exterior walls)
-          part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s0 + gap + lt, half + gap, half + gap + width,
-                                 p.cut.z0 + 0.01, p.cut.z1 - gap);
-        else
+        // Swung 90 degrees open: hinged at either jamb, to the +normal side first (inward for exterior
+        // walls, which only swing inward), whichever way the leaf's sweep hits no wall and no staircase;
+        // closed in its opening when none is free.
+        bool placed_open = false;
+        if (options.door_leaves_open) {
+          bool exterior = walls[p.piece].exterior;
+          for (int side : {1, -1}) {
+            if (exterior && side < 0) continue;
+            for (int hinge = 0; hinge < 2 && !placed_open; ++hinge) {
+              double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt;
+              double q0 = side > 0 ? half + gap : -half - gap - width;
+              // The swept quarter disc lies within this square beside the opening.
+              double sweep_s0 = hinge == 0 ? p.cut.s0 : p.cut.s1 - width - 2 * gap;
+              Ring sweep = CleanRing({f.ToPlan(sweep_s0, q0), f.ToPlan(sweep_s0 + width + 2 * gap, q0),
+                                      f.ToPlan(sweep_s0 + width + 2 * gap, q0 + width),
+                                      f.ToPlan(sweep_s0, q0 + width)}, 1e-9);
+              bool blocked = false;
+              for (const WallPiece& w : walls) blocked = blocked || ConvexOverlapArea(w.plan, sweep) > 1e-4;
+              for (const BuiltStair& st : building.stairs)
+                blocked = blocked || (st.level == level && ConvexOverlapArea(st.footprint, sweep) > 1e-4);
+              if (blocked) continue;
+              part.mesh = BoxInFrame(f, s0, s0 + lt, q0, q0 + width, p.cut.z0 + 0.01, p.cut.z1 - gap);
+              placed_open = true;
+            }
+            if (placed_open) break;
+          }
+        }
+        if (!placed_open)
           part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s1 - gap, -lt / 2, lt / 2, p.cut.z0 + 0.01, p.cut.z1 - gap);
       }
       building.parts.push_back(std::move(part));
