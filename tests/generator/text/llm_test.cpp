@@ -364,3 +364,40 @@ TEST_CASE("villa plan --llm: exit status, files beside the layout, and the API k
 }
 
 }  // namespace villa
+
+namespace villa {
+
+TEST_CASE("villa eval: served-model requests in parallel, the macro table as JSON") {
+  ScriptedServer server({Completion(ValidAnswer()), Completion(ValidAnswer()), Completion(InvalidAnswer()),
+                         Completion(ValidAnswer()), Completion(ValidAnswer()), Completion(ValidAnswer()),
+                         Completion(ValidAnswer()), Completion(ValidAnswer())});
+  auto dir = TempDir("eval");
+  {
+    std::ofstream prompts(dir / "prompts.jsonl");
+    for (int i = 0; i < 4; ++i)
+      prompts << Json{{"id", "p" + std::to_string(i)}, {"text", "A two-story house with a kitchen and two bedrooms."}}.dump()
+              << "\n";
+  }
+  std::string command = std::string(VILLA_BINARY) + " eval " + (dir / "prompts.jsonl").string() + " --llm " +
+                        server.url() + " --model m --rounds 1 --jobs 4 --json > " + (dir / "out.json").string();
+  int status = std::system(command.c_str());
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  Json out = Json::parse(*ReadFile(dir / "out.json"));
+  CHECK(out["overall"]["count"] == 4);
+  CHECK(out["overall"]["fsr"] == 1.0);  // the invalid answer was corrected in its second round
+  CHECK(out["prompts"].size() == 4);
+  CHECK(server.bodies().size() == 5);
+  int two_rounds = 0;
+  for (const auto& p : out["prompts"]) two_rounds += p["rounds"] == 2;
+  CHECK(two_rounds == 1);
+  // A line without "text" is a usage error naming the line.
+  {
+    std::ofstream bad(dir / "bad.jsonl");
+    bad << "{\"text\": \"a kitchen\"}\n{\"prompt\": \"no text key\"}\n";
+  }
+  CHECK(RunVilla("eval " + (dir / "bad.jsonl").string()) == 2);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace villa

@@ -1,6 +1,10 @@
 // The procedural backend on 100+ varied requests (tests/fixtures/prompts/varied.jsonl, five styles):
 // every layout valid, every requirement of the brief met, and the parsed brief equal to what the prompt
 // was written to ask (floors, footprint class, rooms per category, rooms per floor).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -147,6 +151,36 @@ TEST_CASE("whole-building counts are spread over the floors without losing a roo
     CHECK(n >= 2);
     CHECK(n <= kMaxRoomsPerFloor - 1);
   }
+}
+
+}  // namespace villa
+
+namespace villa {
+
+TEST_CASE("villa eval --json on procedural prompts reports every prompt and the overall metrics") {
+  auto dir = std::filesystem::temp_directory_path() / ("villa-eval-test-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream prompts(dir / "p.jsonl");
+    prompts << R"({"text": "A two-story L-shaped house with a kitchen open to the dining room and three bedrooms."})" << "\n"
+            << R"({"id": "round", "text": "A round single-storey house with a garage."})" << "\n";
+  }
+  std::string command = std::string(VILLA_BINARY) + " eval " + (dir / "p.jsonl").string() + " --budget 1 --json > " +
+                        (dir / "out.json").string();
+  int status = std::system(command.c_str());
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  std::ifstream in(dir / "out.json");
+  Json out = Json::parse(in);
+  REQUIRE(out["prompts"].size() == 2);
+  CHECK(out["prompts"][0]["outcome"] == "met");
+  CHECK(out["prompts"][1]["outcome"] == "partial");
+  CHECK(out["prompts"][1]["id"] == "round");
+  CHECK(out["prompts"][1]["unparsed"] == Json::array({"garage"}));
+  CHECK(out["overall"]["fsr"] == 1.0);
+  CHECK(out["overall"]["rr"] == 1.0);
+  CHECK(out["overall"]["brief_adherence"].get<double>() < 1.0);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace villa
