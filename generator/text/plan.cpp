@@ -110,7 +110,8 @@ std::string PlanSummary::BriefReport() const {
   }
   out << "; brief " << check.met() << "/" << check.total() << " met";
   out << "; " << attempts << (backend == PlanBackend::kLlm ? (attempts == 1 ? " answer" : " answers") : " attempts");
-  out << "; " << Number(std::round(seconds * 100) / 100) << " s\n";
+  out << "; " << (seconds < 1.0 ? Number(std::round(seconds * 10000) / 10) + " ms" : Number(std::round(seconds * 100) / 100) + " s")
+      << "\n";
   out << "brief: " << BriefOneLine(brief) << "\n";
   for (const auto& u : brief.unparsed) out << "not understood: \"" << u.text << "\"\n";
   for (const auto& c : brief.conflicts) out << "conflict: " << c << "\n";
