@@ -1778,10 +1778,18 @@ void Parser::Finish(Brief& brief) {
       conflicts_.push_back("a " + std::to_string(floors_known) + "-floor villa has one utility (staircase) room a floor, " +
                            "not " + std::to_string(r.min));
   }
-  for (const auto& [level, n] : per_level_min)
-    if (n > kMaxRoomsPerFloor)
-      conflicts_.push_back(std::to_string(n) + " rooms asked on level " + std::to_string(level) + ": at most " +
-                           std::to_string(kMaxRoomsPerFloor) + " a floor (FORMAT.md rule 6)");
+  // A multi-story building's staircase room takes one of the six places on every floor.
+  const bool multi = floors_known > 1 || floors_min_ > 1;
+  std::map<int, int> utility_on_level;
+  for (const auto& r : brief.rooms)
+    if (r.category == Category::kUtilityRoom && r.level >= 0) utility_on_level[r.level] += r.min;
+  for (const auto& [level, n] : per_level_min) {
+    int total = n + ((multi && utility_on_level[level] == 0) ? 1 : 0);
+    if (total > kMaxRoomsPerFloor)
+      conflicts_.push_back(std::to_string(n) + " rooms asked on level " + std::to_string(level) +
+                           (total > n ? " besides its staircase room" : "") + ": at most " +
+                           std::to_string(kMaxRoomsPerFloor) + " rooms a floor (FORMAT.md rule 6)");
+  }
   {
     int total_min = 0;
     for (const auto& r : brief.rooms)
