@@ -94,7 +94,7 @@ void Run(PlanCommand& command) {
   const std::filesystem::path png_path = Beside(out, ".png");
   const std::filesystem::path invalid_path = Beside(out, ".invalid.json");
   if (!command.force)
-    for (const auto& p : {out, report_path, png_path})
+    for (const auto& p : {out, report_path, png_path, invalid_path})
       if (std::filesystem::exists(p)) throw UsageError(p.string() + " exists: pass --force to overwrite it");
   if (!out.parent_path().empty() && !std::filesystem::is_directory(out.parent_path()))
     throw UsageError("-o " + command.out + ": folder " + out.parent_path().string() + " does not exist");

