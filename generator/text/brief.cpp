@@ -553,6 +553,7 @@ class Parser {
   int TryEntrance(std::size_t i, Item& item);
   int TrySide(std::size_t i, Item& item);
   bool RoomStartsWithin(std::size_t i, int span) const;
+  bool IsBedroomCount(std::size_t i) const;
   bool FurnitureStartsWithin(std::size_t i, int span) const;
 
   // interpretation
@@ -782,7 +783,23 @@ int Parser::TryShape(std::size_t i, Item& item) {
   return len;
 }
 
+// "4 bed 3 bath", "a 3-bed house": a count of bedrooms, not beds (a bed is furniture in "a double bed",
+// "two beds in the children's room").
+bool Parser::IsBedroomCount(std::size_t i) const {
+  const Token& t = tokens_[i];
+  if (t.punct || (t.word != "bed" && t.word != "beds") || i == 0) return false;
+  auto n = Cardinal(tokens_[i - 1]);
+  if (!n || tokens_[i - 1].word == "single" || tokens_[i - 1].word == "double" || tokens_[i - 1].word == "triple")
+    return false;
+  if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "into", "inside", "for", "per"})) return false;
+  return true;
+}
+
 int Parser::TryRoom(std::size_t i, Item& item) {
+  if (IsBedroomCount(i)) {
+    item.category = Category::kBedroom;
+    return 1;
+  }
   int best = 0;
   for (const auto& w : RoomLexicon()) {
     int len = MatchPhrase(tokens_, i, w.words);
@@ -855,6 +872,7 @@ int Parser::TryPanoramic(std::size_t i, Item& item) {
 }
 
 int Parser::TryFurniture(std::size_t i, Item& item) {
+  if (IsBedroomCount(i)) return 0;
   int best = 0;
   for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
   if (best == 0) return 0;

@@ -173,6 +173,18 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
   }
 }
 
+TEST_CASE("estate-agent shorthand: 4 bed 3 bath") {
+  Brief brief = ParseBrief("2 story home, 4 bed 3 bath, with a study and a double bed in the study.");
+  CHECK(brief.floors == 2);
+  CHECK(Exact(brief, Category::kBedroom) == 4);
+  CHECK(Exact(brief, Category::kBathroom) == 3);
+  CHECK(Exact(brief, Category::kOffice) == 1);
+  REQUIRE(brief.furniture.size() == 1);
+  CHECK(brief.furniture[0].item == "double bed");
+  CHECK(brief.furniture[0].category == Category::kOffice);
+  CHECK(brief.unparsed.empty());
+}
+
 TEST_CASE("negations, ranges and counts after the noun") {
   Brief brief = ParseBrief("A two-storey house with no balcony, without an office, at least two bathrooms, a "
                            "couple of bedrooms and three or more children's rooms. Kitchens: 1.");
