@@ -185,7 +185,7 @@ TEST_CASE("bad datasets give messages naming the file and line", "[dataset]") {
   }
 }
 
-TEST_CASE("--auto: drafted labels, fixes and descriptions; never verified; deterministic", "[auto]") {
+TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verified, deterministic", "[auto]") {
   test::TempDataset a, b;
   std::string export_a, export_b;
   for (auto* ds : {&a, &b}) {
@@ -230,7 +230,7 @@ TEST_CASE("--auto: drafted labels, fixes and descriptions; never verified; deter
   CHECK(records[3]["reason"].get<std::string>().find("auto: rule 8") == 0);
 }
 
-TEST_CASE("--auto leaves what a person decided alone", "[auto]") {
+TEST_CASE("auto mode leaves what a person decided alone", "[auto]") {
   test::TempDataset ds;
   auto s = OpenOrFail(ds.dir());
   std::string msg;

@@ -58,7 +58,7 @@ Layout RoomsOnly(const std::vector<Ring>& rings) {
 
 }  // namespace
 
-TEST_CASE("guillotine tilings form one footprint; the outline matches Boost's union", "[geometry]") {
+TEST_CASE("guillotine tilings form one footprint, the outline matches Boost's union", "[geometry]") {
   std::mt19937_64 rng(20240601);
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Ring> rooms = Guillotine(rng, UniformInt(rng, 2, 8));

@@ -197,7 +197,7 @@ TEST_CASE("walls meet cleanly: no plan point is under two wall pieces, junctions
     CHECK(TopHits(b, 0, c) == 1);
 }
 
-TEST_CASE("a wall piece with a door and a window is one closed solid; openings are cut through") {
+TEST_CASE("a wall piece with a door and a window is one closed solid, openings are cut through") {
   WallFrame f{{0, 0.0}, {1, 0}, {0, 1}, 0.2};
   Ring plan = {{0, -0.1}, {5, -0.1}, {5, 0.1}, {0, 0.1}};
   SRange full = FullSection(plan, f);

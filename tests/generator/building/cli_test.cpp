@@ -25,7 +25,7 @@ std::string Slurp(const fs::path& p) {
 
 }  // namespace
 
-TEST_CASE("villa build writes the .glb and the preview; refuses to overwrite without --force") {
+TEST_CASE("villa build writes the .glb and the preview, refuses to overwrite without --force") {
   fs::path dir = fs::temp_directory_path() / ("villa_build_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);

@@ -29,7 +29,7 @@ TEST_CASE("an L-shaped room triangulates to its own area, every triangle counter
   CHECK(TriangulatePolygon(l).size() == 4);
 }
 
-TEST_CASE("a clockwise ring is reoriented; collinear points are kept out of the triangles' area error") {
+TEST_CASE("a clockwise ring is reoriented, collinear points are kept out of the triangles' area error") {
   Ring cw = {{0, 0}, {0, 4}, {2, 4}, {4, 4}, {4, 0}, {2, 0}};
   bool ccw = false;
   CHECK(TriangulatedArea(cw, {}, &ccw) == Approx(16.0));
