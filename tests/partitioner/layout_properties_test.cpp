@@ -116,7 +116,7 @@ TEST_CASE("Thousands of seeded layouts are valid and cover every footprint class
   CHECK(retries < static_cast<int>(kCount));  // well under one retry a layout
 }
 
-TEST_CASE("The same seed gives the same layout; another seed another", "[partitioner][determinism]") {
+TEST_CASE("The same seed gives the same layout, another seed another", "[partitioner][determinism]") {
   PartitionOptions options;
   options.floors = 2;
   const PartitionSummary a = GenerateLayout(options, 42), b = GenerateLayout(options, 42), c = GenerateLayout(options, 43);
