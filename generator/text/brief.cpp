@@ -1139,6 +1139,21 @@ void Parser::Quantify(Mention& m) {
     m.last = after + 1;
     determined = true;
   }
+  // "the kitchen, dining room and living room": a bare noun continuing a definite list is definite too.
+  if (!determined && !mentions_.empty()) {
+    const Mention& previous = mentions_.back();
+    if (previous.definite && tokens_[previous.last].sentence == sentence && previous.last < m.first) {
+      bool list = true;
+      for (int j = previous.last + 1; j < m.first; ++j)
+        if (!(tokens_[j].punct == ',' || tokens_[j].punct == '/' || tokens_[j].punct == '&' ||
+              In(tokens_[j], {"and", "or"}) || IsAdjective(tokens_[j])))
+          list = false;
+      if (list) {
+        determined = true;
+        m.definite = true;
+      }
+    }
+  }
   if (!determined) {
     bare_mention_ = true;
     // A bare noun: "kitchen, living room and bathrooms" states one kitchen, and some bathrooms.

@@ -173,6 +173,18 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
   }
 }
 
+TEST_CASE("a definite list refers to rooms, an indefinite one counts them") {
+  Brief definite = ParseBrief("The ground floor holds the kitchen, dining room and living room.");
+  for (Category c : {Category::kKitchen, Category::kDiningRoom, Category::kLivingRoom}) {
+    const BriefRooms* r = FindRooms(definite, c, 0);
+    REQUIRE(r);
+    CHECK(r->min == 1);
+    CHECK(r->max == -1);
+  }
+  Brief indefinite = ParseBrief("The ground floor holds a kitchen, dining room and living room.");
+  for (Category c : {Category::kKitchen, Category::kDiningRoom, Category::kLivingRoom}) CHECK(Exact(indefinite, c, 0) == 1);
+}
+
 TEST_CASE("estate-agent shorthand: 4 bed 3 bath") {
   Brief brief = ParseBrief("2 story home, 4 bed 3 bath, with a study and a double bed in the study.");
   CHECK(brief.floors == 2);
