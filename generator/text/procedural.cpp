@@ -169,8 +169,12 @@ PartitionOptions PartitionOptionsForBrief(const Brief& brief, int floors, bool o
     } else if (r.level == kEachLevel) {
       for (int l = 0; l < floors; ++l) add(r.category, count, l);
       placed[static_cast<int>(r.category)] += count * floors;
-    } else if (r.level == kUpperLevels && floors == 2) {
-      add(r.category, count, 1);
+    } else if (r.level == kUpperLevels && floors >= 2) {
+      // "upstairs" in a three-floor building: the rooms alternate over the upper floors, level 1 first.
+      std::vector<int> per_level(static_cast<std::size_t>(floors), 0);
+      for (int k = 0; k < count; ++k) ++per_level[static_cast<std::size_t>(1 + k % (floors - 1))];
+      for (int l = 1; l < floors; ++l)
+        if (per_level[static_cast<std::size_t>(l)] > 0) add(r.category, per_level[static_cast<std::size_t>(l)], l);
       placed[static_cast<int>(r.category)] += count;
     }
   }

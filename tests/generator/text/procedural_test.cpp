@@ -129,6 +129,19 @@ TEST_CASE("requirements the partitioner cannot meet are reported, and the layout
   }
 }
 
+TEST_CASE("'upstairs' in a three-floor villa is met on the upper floors together") {
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  PlanSummary plan = PlanLayout("A three-storey villa. Downstairs a living room and a kitchen; upstairs three bedrooms "
+                                "and two bathrooms.", options);
+  INFO(plan.BriefReport());
+  REQUIRE(plan.valid());
+  CHECK(plan.outcome == PlanOutcome::kMet);
+  int upper_bedrooms = 0;
+  for (const Room& r : plan.layout->rooms) upper_bedrooms += r.category == Category::kBedroom && r.level > 0;
+  CHECK(upper_bedrooms == 3);
+}
+
 TEST_CASE("whole-building counts are spread over the floors without losing a room") {
   Brief brief = ParseBrief("A three-story villa with a living room, a kitchen, a dining room, four bedrooms, "
                            "two bathrooms, an office and two balconies.");
