@@ -124,7 +124,7 @@ void Run(EvalCommand& command) {
                               {"rr_entrance", RatioJson(overall.rr_entrance())}, {"vcr", RatioJson(overall.vcr())},
                               {"brief_adherence", adherence}, {"requirements_met", met},
                               {"requirements", total}, {"failed", failed}, {"seconds", seconds}}}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << out.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
   } else {
     TextTable table({"#", "prompt", "outcome", "FSR", "RR", "VCR", "brief", "rounds", "s"});
     for (std::size_t i = 0; i < results.size(); ++i) {

@@ -123,7 +123,7 @@ void Run(PlanCommand& command) {
       else report["picture_file"] = png_path.filename().string();
     }
   }
-  if (Status s = WriteFileAtomic(report_path, report.dump(2) + "\n"); !s) fail(s.error());
+  if (Status s = WriteFileAtomic(report_path, report.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"); !s) fail(s.error());
 
   if (!command.quiet) std::cerr << plan.BriefReport();
   if (plan.valid() && ok) {

@@ -73,7 +73,8 @@ std::vector<Token> Tokenise(std::string_view text) {
   };
   while (i < text.size()) {
     unsigned char c = static_cast<unsigned char>(text[i]);
-    if (IsWordByte(c) && !(c >= 0x80 && is_apostrophe(i))) {
+    // A word starts at a letter, a digit or a UTF-8 lead byte (never inside a multi-byte character).
+    if (IsWordByte(c) && !(c >= 0x80 && c < 0xC0) && !is_apostrophe(i)) {
       Token t;
       t.begin = i;
       std::string word;
@@ -166,7 +167,9 @@ std::vector<Token> Tokenise(std::string_view text) {
       ++i;
       continue;
     }
-    ++i;  // quotes, spaces and other symbols carry nothing
+    // Quotes, spaces and other symbols carry nothing; skip a whole multi-byte character at once.
+    if (int a = is_apostrophe(i); a) i += a;
+    else ++i;
   }
   return tokens;
 }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "generator/text/backends.h"
 #include "layout/validate.h"
@@ -252,17 +253,41 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
   int exact_categories = 0;
   for (const auto& r : brief.rooms)
     if (r.min == r.max && r.category != Category::kUtilityRoom) ++exact_categories;
-  const bool prefer_only_required = exact_categories >= 4;
+  // ... and so are briefs that say what every floor holds ("The top floor has a bedroom and a WC").
+  std::set<int> listed_levels;
+  for (const auto& r : brief.rooms)
+    if (r.level >= 0) listed_levels.insert(r.level);
+  const int stated_floors = brief.floors.value_or(brief.floors_min.value_or(0));
+  bool every_floor_listed = stated_floors > 0;
+  for (int l = 0; l < stated_floors; ++l) every_floor_listed &= listed_levels.count(l) > 0;
+  const bool prefer_only_required = exact_categories >= 4 || every_floor_listed;
 
   int best_met = -1;
+  int best_extras = 0;
   std::optional<Layout> best;
   std::optional<ShapeClass> best_shape;
   std::string last_failure;
   int attempts = 0;
   int valid_candidates = 0;
+  int since_goal = -1;  // attempts since the first candidate meeting the whole brief
   const int goal = brief.RequirementCount();
+  // Rooms the priors added on floors whose contents the brief lists: met, but untidy.
+  std::map<int, int> listed_per_level;
+  for (const auto& r : brief.rooms)
+    if (r.level >= 0 && r.category != Category::kUtilityRoom) listed_per_level[r.level] += r.min;
+  auto extras_of = [&](const Layout& layout) {
+    if (!every_floor_listed) return 0;
+    int extras = 0;
+    for (const auto& [level, n] : listed_per_level) {
+      int rooms = 0;
+      for (int i : layout.RoomsOnLevel(level)) rooms += layout.rooms[static_cast<std::size_t>(i)].category != Category::kUtilityRoom;
+      extras += std::max(0, rooms - n);
+    }
+    return extras;
+  };
   for (int a = 0; a < options.max_attempts; ++a) {
     if (a > 0 && Clock::now() >= deadline) break;
+    if (since_goal >= 0 && ++since_goal > 40) break;  // a tidier layout is not worth a long search
     const int f = floors[static_cast<std::size_t>(a) % floors.size()];
     const bool only_required = ((a / static_cast<int>(floors.size())) % 2 == 0) == prefer_only_required;
     PartitionOptions po = PartitionOptionsForBrief(brief, f, only_required);
@@ -277,13 +302,16 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     }
     ++valid_candidates;
     BriefCheck check = CheckBrief(brief, ps.layout);
-    int met = check.met();
-    if (met > best_met) {
+    const int met = check.met();
+    const int extras = extras_of(ps.layout);
+    if (met > best_met || (met == best_met && extras < best_extras)) {
       best_met = met;
+      best_extras = extras;
       best = std::move(ps.layout);
       best_shape = ps.shape;
     }
-    if (met == goal) break;
+    if (best_met == goal && since_goal < 0) since_goal = 0;
+    if (best_met == goal && best_extras == 0) break;
   }
   PlanRound round;
   round.round = 0;

@@ -341,3 +341,45 @@ TEST_CASE("footprint classes from geometry") {
 }
 
 }  // namespace villa
+
+namespace villa {
+
+TEST_CASE("any text parses: random word soup keeps every span inside the text") {
+  const std::vector<std::string> words = {
+      "a", "the", "two", "3", "3rd", "first", "floor", "floors", "-", "story", "storey", "level", "0", "on", "each",
+      "upstairs", "top", "ground", "kitchen", "open", "to", "dining", "room", "living", "bedroom", "bed", "4",
+      "bath", "en", "suite", "with", "its", "own", "bathroom", "balcony", "balconies", "panoramic", "windows",
+      "TV", "in", "children's", "kids'", "’s", "no", "without", "at", "least", "or", "more", ",", ".", ";", ":",
+      "\n", "L", "shaped", "round", "star", "entrance", "leads", "into", "north", "side", "which", "is", "and",
+      "x", "Bedrooms", "for", "six", "table", "m²", "é", "\"", "(", ")", "/", "&", "directly", "access", "it",
+      "has", "also", "every", "couple", "of", "1.5", "999999999", "upstairs:", "Floors", "zero"};
+  std::uint64_t state = 12345;
+  auto next = [&state] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::size_t>(state >> 33);
+  };
+  for (int n = 0; n < 3000; ++n) {
+    std::string text;
+    const std::size_t length = next() % 40;
+    for (std::size_t k = 0; k < length; ++k) {
+      text += words[next() % words.size()];
+      if (next() % 3) text += ' ';
+    }
+    Brief brief = ParseBrief(text);
+    INFO(text);
+    for (const auto& u : brief.unparsed) {
+      REQUIRE(u.begin <= u.end);
+      REQUIRE(u.end <= text.size());
+      CHECK(text.substr(u.begin, u.end - u.begin) == u.text);
+    }
+    for (const auto& r : brief.rooms) {
+      CHECK(r.min >= 0);
+      CHECK((r.max < 0 || r.max >= r.min));
+      CHECK(r.source.end <= text.size());
+    }
+    CHECK_NOTHROW(BriefToJson(brief).dump());
+    CHECK(brief.RequirementCount() >= 0);
+  }
+}
+
+}  // namespace villa
