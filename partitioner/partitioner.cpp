@@ -179,15 +179,16 @@ int LabelOrder(Category c) {
 // Preferred area of each category, m2 (the labeller's size prior).
 double PreferredArea(Category c) {
   switch (c) {
-    case Category::kKitchen: return 12.0;
-    case Category::kBathroom: return 6.0;
-    case Category::kDiningRoom: return 16.0;
-    case Category::kBedroom: return 17.0;
+    case Category::kKitchen: return 11.0;
+    case Category::kBathroom: return 5.5;
+    case Category::kDiningRoom: return 15.0;
+    case Category::kBedroom: return 16.0;
     case Category::kChildrenRoom: return 13.0;
     case Category::kOffice: return 11.0;
-    case Category::kMeetingRoom: return 20.0;
+    case Category::kMeetingRoom: return 18.0;
     case Category::kUtilityRoom: return 8.0;
-    case Category::kBalcony: return 8.0;
+    case Category::kBalcony: return 7.0;
+    case Category::kLivingRoom: return 30.0;
     default: return 15.0;
   }
 }
@@ -345,7 +346,12 @@ int SampleRoomsPerFloor(const PartitionOptions& o, Rng& rng) {
   return std::clamp(n, o.min_rooms_per_floor, o.max_rooms_per_floor);
 }
 
-void FillFromPriors(FloorPlanSpec& plan, int level, int floors, int target, Rng& rng) {
+// `fixed`: categories whose number the caller's requirements set (a brief's "a meeting room"): the fill
+// adds none of them, and stops short of `target` when nothing else is left, unless `must_fill` (rooms the
+// BSP already made need a category).
+void FillFromPriors(FloorPlanSpec& plan, int level, int floors, int target, Rng& rng,
+                    const std::vector<Category>& fixed = {}, bool must_fill = false) {
+  auto is_fixed = [&](Category c) { return std::find(fixed.begin(), fixed.end(), c) != fixed.end(); };
   auto count = [&](Category c) {
     return static_cast<int>(std::count(plan.must.begin(), plan.must.end(), c) +
                             std::count(plan.optional.begin(), plan.optional.end(), c));
@@ -362,7 +368,7 @@ void FillFromPriors(FloorPlanSpec& plan, int level, int floors, int target, Rng&
     essentials = {Category::kBedroom, Category::kBathroom};
   }
   for (Category c : essentials)
-    if (plan.size() < target && count(c) == 0) plan.optional.push_back(c);
+    if (plan.size() < target && count(c) == 0 && !is_fixed(c)) plan.optional.push_back(c);
   struct Option {
     Category c;
     double w;
@@ -378,15 +384,16 @@ void FillFromPriors(FloorPlanSpec& plan, int level, int floors, int target, Rng&
             {Category::kBalcony, 0.3, 1}};
   } else {
     pool = {{Category::kChildrenRoom, 2.0, 2}, {Category::kBalcony, 1.8, 1},     {Category::kBedroom, 1.6, 3},
-            {Category::kOffice, 1.0, 1},       {Category::kBathroom, 0.7, 2},    {Category::kMeetingRoom, 0.5, 1},
-            {Category::kLivingRoom, 0.3, 1}};
+            {Category::kOffice, 1.0, 1},       {Category::kBathroom, 0.7, 2},    {Category::kMeetingRoom, 0.5, 1}};
   }
   int guard = 0;
   while (plan.size() < target && guard++ < 100) {
     std::vector<double> w;
-    for (const Option& o : pool) w.push_back(count(o.c) < o.cap ? o.w : 0.0);
+    for (const Option& o : pool) w.push_back(count(o.c) < o.cap && !is_fixed(o.c) ? o.w : 0.0);
     if (std::all_of(w.begin(), w.end(), [](double x) { return x == 0.0; })) {
-      plan.optional.push_back(level == 0 ? Category::kOffice : Category::kBedroom);
+      const Category plain = level == 0 ? Category::kOffice : Category::kBedroom;
+      if (!must_fill && is_fixed(plain)) break;
+      plan.optional.push_back(plain);
       continue;
     }
     plan.optional.push_back(pool[static_cast<std::size_t>(rng.Weighted(w.data(), static_cast<int>(w.size())))].c);
@@ -575,6 +582,13 @@ bool LabelFloor(Floor& f, const std::vector<Category>& plan, const std::vector<C
     std::vector<double> row(n);
     for (std::size_t r = 0; r < n; ++r) {
       double score = -std::abs(room_rank[r] - ideal_rank[k]) + rng.Unit() * 0.9;
+      // Absolute sizes too: a room far above its category's usual size (a 20 m2 bathroom), or a living
+      // room under 18 m2, ranks lower.
+      if (c == Category::kLivingRoom) {
+        score -= 3.0 * std::max(0.0, 1.0 - f.area_m2[r] / 18.0);
+      } else if (r != static_cast<std::size_t>(f.stair)) {
+        score -= 2.0 * std::max(0.0, std::log(f.area_m2[r] / (1.7 * PreferredArea(c))));
+      }
       if (c == Category::kBalcony) score += 3.0 * ExteriorShare(f, r, s.scale.grid);
       if (c == Category::kLivingRoom && f.level == 0 && f.entrance_ok[r]) score += 0.5;
       row[r] = score;
@@ -908,6 +922,7 @@ struct Plan {
   ShapeClass shape = ShapeClass::kRectangle;
   std::vector<FloorPlanSpec> specs;  // per floor, non-staircase rooms
   std::vector<std::vector<ConnectionRequirement>> links;  // per floor
+  std::vector<Category> fixed;  // categories whose number the requirements set (the prior fill adds none)
   // Why a requirement cannot be met by any layout of this plan (empty when it can), by index into
   // options.rooms / options.connections: over a floor's capacity, no such floor, no such room.
   std::vector<std::string> room_hints, link_hints;
@@ -928,6 +943,8 @@ Plan MakePlan(const PartitionOptions& o, Rng& rng) {
   plan.specs.assign(static_cast<std::size_t>(F), {});
   plan.links.assign(static_cast<std::size_t>(F), {});
   plan.room_hints.assign(o.rooms.size(), "");
+  for (const RoomRequirement& r : o.rooms)
+    if (r.category != Category::kUtilityRoom) plan.fixed.push_back(r.category);
   plan.link_hints.assign(o.connections.size(), "");
   const int cap = o.max_rooms_per_floor - (multi ? 1 : 0);
   auto spec_of = [&](int l) -> FloorPlanSpec& { return plan.specs[static_cast<std::size_t>(l)]; };
@@ -1042,7 +1059,7 @@ Plan MakePlan(const PartitionOptions& o, Rng& rng) {
   for (int l = 0; l < F; ++l) {
     const int target = o.only_required_rooms ? std::max(spec_of(l).size(), 1)
                                              : std::max(spec_of(l).size(), SampleRoomsPerFloor(o, rng) - (multi ? 1 : 0));
-    FillFromPriors(spec_of(l), l, F, std::min(target, cap), rng);
+    FillFromPriors(spec_of(l), l, F, std::min(target, cap), rng, plan.fixed);
   }
   return plan;
 }
@@ -1054,20 +1071,54 @@ struct AttemptResult {
   bool relaxed_links = false;
 };
 
-AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& s, Rng& rng) {
+// BSP draws a floor gets, and the worst ShapePenalty of its rooms that ends the draws (every room within
+// about 2.7:1) and that is still accepted (about 3.2:1).
+constexpr int kBspDraws = 3;
+constexpr double kShapeGood = 2.0;
+constexpr double kShapeAcceptable = 6.0;
+// The footprint: the largest floor's usual room sizes times kNeedLo..kNeedLo + kNeedSpan (before the
+// minimum sides); a floor gets extra rooms while its area exceeds kSpacious times its rooms' usual sizes;
+// rooms over kOversized m2 are split once more while the floor has room for another.
+constexpr double kNeedLo = 0.8;
+constexpr double kNeedSpan = 0.2;
+constexpr double kSpacious = 2.0;
+constexpr double kOversized = 40.0;
+
+// A floor whose labelled rooms are sized against their type: a living room under 14 m2, or another room
+// over 3x its category's usual size (a 17 m2 bathroom, a 48 m2 bedroom).
+bool SizedAgainstType(const Floor& f) {
+  for (std::size_t i = 0; i < f.rooms.size(); ++i) {
+    if (static_cast<int>(i) == f.stair) continue;
+    const Category c = f.categories[i];
+    if (c == Category::kLivingRoom ? f.area_m2[i] < 14.0 : f.area_m2[i] > 3.0 * PreferredArea(c)) return true;
+  }
+  return false;
+}
+
+// `strict`: floors with rooms sized against their type are retried (the first attempts; later ones take
+// any valid layout, so a tight brief still gets one).
+AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& s, Rng& rng, bool strict) {
   AttemptResult result;
   const int F = plan.floors;
   const Scale& scale = s.scale;
-  // Footprint: about 20-32 m2 a room on the ground floor, in a rectangle of aspect 1-1.6 whose cuts
-  // (notches, angled bites) take roughly `kept` of it.
-  const int ground_rooms = plan.specs[0].size() + (F > 1 ? 1 : 0);
+  // Footprint: the usual sizes of the planned rooms (PreferredArea, plus the staircase) of the floor that
+  // needs most (an upper floor's need counts 15 % more: its cuts take some of the ground floor), times
+  // kNeedLo.., in a rectangle of aspect 1-1.6 whose cuts (notches, angled bites) take roughly `kept` of it.
   static const double kKept[kShapeClassCount] = {1.0, 0.78, 0.8, 0.72, 0.7, 0.85};
   const double kept = kKept[static_cast<int>(plan.shape)];
-  const double area = ground_rooms * (20.0 + rng.Unit() * 12.0) / kept;
+  double need = 0.0;
+  for (int l = 0; l < F; ++l) {
+    const FloorPlanSpec& spec = plan.specs[static_cast<std::size_t>(l)];
+    double sum = F > 1 ? kStairRoomSize * kStairRoomSize : 0.0;
+    for (Category c : spec.must) sum += PreferredArea(c);
+    for (Category c : spec.optional) sum += PreferredArea(c);
+    need = std::max(need, l == 0 ? sum : sum * 1.15);
+  }
+  const double area = need * (kNeedLo + rng.Unit() * kNeedSpan) / kept;
   const double aspect = 1.0 + rng.Unit() * 0.6;
   double long_side = std::sqrt(area * aspect), short_side = std::sqrt(area / aspect);
   const bool winged = plan.shape == ShapeClass::kU || plan.shape == ShapeClass::kT || plan.shape == ShapeClass::kH;
-  const double floor_side = std::max(o.min_side, winged ? 13.0 : 0.0);
+  const double floor_side = std::max(o.min_side, winged ? 11.0 : 0.0);
   long_side = std::clamp(long_side, floor_side, std::max(floor_side, o.max_side));
   short_side = std::clamp(short_side, floor_side, std::max(floor_side, o.max_side));
   int64_t W = scale.Units(long_side), H = scale.Units(short_side);
@@ -1088,7 +1139,7 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
   }
   const double g2 = scale.grid * scale.grid;
   BspLimits limits;
-  limits.min_area2 = static_cast<int64_t>(std::ceil(2.0 * 7.0 / g2));
+  limits.min_area2 = static_cast<int64_t>(std::ceil(2.0 * 6.0 / g2));
   limits.min_side = scale.UnitsUp(2.5);
   limits.min_width = 1.2 / scale.grid;
 
@@ -1098,17 +1149,25 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     const int64_t min_area2 = static_cast<int64_t>(2.0 * (16.0 + 14.0 * (rooms - 1)) / g2);
     footprints.push_back(partition::UpperFootprint(footprints.back(), stair, min_area2, scale, rng));
   }
-  // A spacious floor gets more rooms from the priors (about one per 30 m2, at most the cap), unless the
-  // building is limited to the required rooms.
+  // A spacious floor gets more rooms from the priors (one at a time while its area exceeds kSpacious
+  // times the usual sizes of its rooms, at most the cap), unless the building is limited to the required
+  // rooms.
   std::vector<FloorPlanSpec> specs = plan.specs;
   if (!o.only_required_rooms) {
     const int cap = o.max_rooms_per_floor - (stair ? 1 : 0);
     for (int l = 0; l < F; ++l) {
+      FloorPlanSpec& spec = specs[static_cast<std::size_t>(l)];
       const double area = static_cast<double>(partition::TwiceArea(footprints[static_cast<std::size_t>(l)])) * g2 / 2.0 -
                           (stair ? 16.0 : 0.0);
-      const int want = std::min(cap, static_cast<int>(area / 30.0));
-      if (want > specs[static_cast<std::size_t>(l)].size())
-        FillFromPriors(specs[static_cast<std::size_t>(l)], l, F, want, rng);
+      while (spec.size() < cap) {
+        double usual = 0.0;
+        for (Category c : spec.must) usual += PreferredArea(c);
+        for (Category c : spec.optional) usual += PreferredArea(c);
+        if (area < kSpacious * usual) break;
+        const int before = spec.size();
+        FillFromPriors(spec, l, F, spec.size() + 1, rng, plan.fixed);
+        if (spec.size() == before) break;
+      }
     }
   }
   Building& b = result.building;
@@ -1143,38 +1202,60 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
         auto size = [](Category c) { return c == Category::kLivingRoom ? 1e9 : PreferredArea(c); };
         if (size(planned[k]) > size(planned[largest])) largest = k;
       }
-      // On a spacious floor every room grows a little (up to 1.6x its usual size); the rest of the area
-      // goes to the largest room. On a tight floor all shrink to leave the largest a quarter.
+      // Every room at its usual size scaled to the floor (0.8-1.35x: a spacious floor's surplus goes to the
+      // largest room, or into an extra room when that grows oversized), +-15 %; the rest of the area goes
+      // to the largest room. On a tight floor all shrink to leave the largest a quarter.
       const double area = static_cast<double>(floor_area2) * g2 / 2.0;
-      const double per_room = area / static_cast<double>(std::max<std::size_t>(1, planned.size()));
-      const double grow = std::clamp(per_room / 22.0, 1.0, 1.6);
+      double usual = 0.0;
+      for (Category c : planned) usual += PreferredArea(c);
+      const double grow = std::clamp(area / std::max(1.0, usual), 0.8, 1.35);
       double sum = 0.0;
       std::vector<double> metres;
       for (std::size_t k = 0; k < planned.size(); ++k) {
         if (k == largest) continue;
-        metres.push_back(PreferredArea(planned[k]) * grow * (0.8 + 0.45 * rng.Unit()));
+        // Bathrooms do not grow with the floor.
+        const double g = planned[k] == Category::kBathroom ? std::min(grow, 1.0) : grow;
+        metres.push_back(PreferredArea(planned[k]) * g * (0.85 + 0.3 * rng.Unit()));
         sum += metres.back();
       }
       const double budget = 0.75 * area;
       const double shrink = sum > budget ? budget / sum : 1.0;
       for (double m : metres) wanted.push_back(static_cast<int64_t>(2.0 * m * shrink / g2));
     }
-    // Rooms over 65 m2 are split once more while the floor has room for another (not when the building
-    // is limited to the required rooms).
+    // Rooms over kOversized m2 are split once more while the floor has room for another (not when the
+    // building is limited to the required rooms).
     BspLimits floor_limits = limits;
     if (!o.only_required_rooms) {
-      floor_limits.max_area2 = static_cast<int64_t>(2.0 * 65.0 / g2);
+      floor_limits.max_area2 = static_cast<int64_t>(2.0 * kOversized / g2);
       floor_limits.max_pieces = o.max_rooms_per_floor - (stair ? 1 : 0);
     }
-    std::vector<IRing> rooms = partition::SplitRoomBsp(pieces, spec.size(), floor_limits, rng, wanted);
-    if (static_cast<int>(rooms.size()) < static_cast<int>(spec.must.size()) ||
-        static_cast<int>(rooms.size()) + (stair ? 1 : 0) < std::min(o.min_rooms_per_floor, spec.size() + (stair ? 1 : 0))) {
+    // A few BSP draws of the floor; the one whose worst room is best proportioned wins, and the first
+    // whose rooms all stay within about 2.7:1 and fill their bounding box is taken at once. A floor
+    // with a room still beyond about 3.2:1 is retried.
+    auto enough = [&](const std::vector<IRing>& r) {
+      return static_cast<int>(r.size()) >= static_cast<int>(spec.must.size()) &&
+             static_cast<int>(r.size()) + (stair ? 1 : 0) >= std::min(o.min_rooms_per_floor, spec.size() + (stair ? 1 : 0));
+    };
+    std::vector<IRing> rooms;
+    double worst_best = 1e18;
+    for (int draw = 0; draw < kBspDraws && worst_best > kShapeGood; ++draw) {
+      std::vector<IRing> candidate = partition::SplitRoomBsp(pieces, spec.size(), floor_limits, rng, wanted);
+      if (!enough(candidate)) continue;
+      double worst = 0.0;
+      for (const IRing& r : candidate) worst = std::max(worst, partition::ShapePenalty(r));
+      if (worst < worst_best) worst_best = worst, rooms = std::move(candidate);
+    }
+    if (rooms.empty()) {
       result.reason = "BSP gave too few rooms";
+      return result;
+    }
+    if (worst_best > kShapeAcceptable) {
+      result.reason = "rooms too elongated";
       return result;
     }
     FloorPlanSpec grown = spec;
     if (static_cast<int>(rooms.size()) > grown.size())
-      FillFromPriors(grown, l, F, static_cast<int>(rooms.size()), rng);  // rooms split for size need a category
+      FillFromPriors(grown, l, F, static_cast<int>(rooms.size()), rng, plan.fixed, true);  // rooms split for size need a category
     std::vector<Category> categories = grown.must;
     for (Category c : grown.optional)
       if (static_cast<int>(categories.size()) < static_cast<int>(rooms.size())) categories.push_back(c);
@@ -1204,6 +1285,10 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
         result.reason = "no labelling meets the rules";
         return result;
       }
+    }
+    if (strict && SizedAgainstType(f)) {
+      result.reason = "rooms sized against their type";
+      return result;
     }
     FloorElements e;
     if (!ConnectFloor(f, result.relaxed_links ? std::vector<ConnectionRequirement>{} : links, s, rng, &e)) {
@@ -1334,7 +1419,7 @@ PartitionSummary GenerateLayout(const PartitionOptions& options, uint64_t seed) 
   for (int attempt = 0; attempt < options.max_attempts; ++attempt) {
     Rng rng(partition::MixSeed(seed, static_cast<uint64_t>(attempt)));
     const Plan plan = MakePlan(fixed, rng);
-    AttemptResult a = Attempt(fixed, plan, sizes, rng);
+    AttemptResult a = Attempt(fixed, plan, sizes, rng, attempt < std::max(1, options.max_attempts / 8));
     if (!a.ok) {
       ++reasons[a.reason];
       continue;

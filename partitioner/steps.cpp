@@ -298,6 +298,18 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
   return ring;
 }
 
+double ShapePenalty(const IRing& piece) {
+  const IBox box = BoundingBox(piece);
+  const double w = static_cast<double>(box.width()), h = static_cast<double>(box.height());
+  if (w <= 0.0 || h <= 0.0) return 1e9;
+  const double aspect = std::max(w, h) / std::min(w, h);
+  const double fill = static_cast<double>(TwiceArea(piece)) / (2.0 * w * h);
+  double penalty = 0.0;
+  if (aspect > 2.0) penalty += 4.0 * (aspect - 2.0) * (aspect - 2.0);  // 2.5: 1, 3: 4, 4: 16
+  if (fill < 0.75) penalty += 12.0 * (0.75 - fill);                    // a thin L round a corner
+  return penalty;
+}
+
 std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
                                 std::vector<int64_t> wanted_area2) {
   std::sort(wanted_area2.begin(), wanted_area2.end());
@@ -308,17 +320,18 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       if (TwiceArea(p) > limits.max_area2) return true;
     return false;
   };
+  constexpr int kCandidates = 4;
   while ((static_cast<int>(pieces.size()) < target || oversized()) && failures < 40) {
     const bool extra = static_cast<int>(pieces.size()) >= target;
-    // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always);
-    // past the target only the oversized ones.
+    // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always),
+    // elongated or L-shaped pieces more often; past the target only the oversized ones.
     std::vector<double> weights(pieces.size(), 0.0);
     bool any = false;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const double a = static_cast<double>(TwiceArea(pieces[i]));
       if (extra && TwiceArea(pieces[i]) <= limits.max_area2) continue;
       if (a >= 2.0 * static_cast<double>(limits.min_area2)) {
-        weights[i] = a * a * a;
+        weights[i] = a * a * a * (1.0 + ShapePenalty(pieces[i]));
         any = true;
       }
     }
@@ -326,62 +339,101 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
     const std::size_t index = static_cast<std::size_t>(rng.Weighted(weights.data(), static_cast<int>(weights.size())));
     const IRing& piece = pieces[index];
     const IBox box = BoundingBox(piece);
-    // Cut across the longer side more often (rooms stay compact).
     const double ratio = static_cast<double>(box.width()) / static_cast<double>(std::max<int64_t>(1, box.height()));
-    const double p_vertical = ratio > 1.25 ? 0.85 : (ratio < 0.8 ? 0.15 : 0.5);
-    const Axis axis = rng.Chance(p_vertical) ? Axis::kX : Axis::kY;
-    const int64_t lo = (axis == Axis::kX ? box.min_x : box.min_y) + limits.min_side;
-    const int64_t hi = (axis == Axis::kX ? box.max_x : box.max_y) - limits.min_side;
-    if (hi < lo) {
-      ++failures;
-      continue;
-    }
-    // Near the middle more often than at the ends (average of two uniform draws), or, while rooms of a
-    // wanted size are missing, at the offset that cuts the smallest of them off one end.
-    int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
-    int64_t aimed = -1;
-    if (!wanted_area2.empty() && rng.Chance(0.75)) {
-      const int64_t want = wanted_area2.front();
-      const int64_t across = axis == Axis::kX ? box.height() : box.width();
-      const int64_t offset = std::max<int64_t>(1, (want / 2 + across / 2) / std::max<int64_t>(1, across));
-      k = rng.Chance(0.5) ? (axis == Axis::kX ? box.min_x : box.min_y) + offset
-                          : (axis == Axis::kX ? box.max_x : box.max_y) - offset;
-      k = std::clamp(k, lo, hi);
-      aimed = want;
-    }
-    if (!SplitIsOnGrid(piece, axis, k)) {
-      ++failures;
-      continue;
-    }
-    std::vector<IRing> parts;
-    {
-      std::vector<IRing> low, high;
-      if (!SplitRing(piece, axis, k, &low, &high)) {
-        ++failures;
-        continue;
-      }
-      parts = std::move(low);
-      for (auto& r : high) parts.push_back(std::move(r));
-    }
+    // Cut across the longer side (rooms stay compact); a squarish piece either way.
+    const double p_vertical = ratio > 1.2 ? 0.92 : (ratio < 1.0 / 1.2 ? 0.08 : 0.5);
     const int cap = std::max(target, extra ? limits.max_pieces : target);
-    bool ok = parts.size() >= 2 && static_cast<int>(pieces.size() - 1 + parts.size()) <= cap;
-    for (const IRing& part : parts) ok = ok && PieceUsable(part, limits);
-    if (!ok) {
-      ++failures;
-      continue;
+    // A few candidate lines; the one whose parts are best proportioned wins (the first of equals).
+    std::vector<IRing> best_parts;
+    double best_score = 1e18;
+    int64_t best_aimed = -1;
+    for (int c = 0; c < kCandidates && best_score > 0.0; ++c) {
+      const Axis axis = rng.Chance(p_vertical) ? Axis::kX : Axis::kY;
+      const int64_t min_end = axis == Axis::kX ? box.min_x : box.min_y;
+      const int64_t max_end = axis == Axis::kX ? box.max_x : box.max_y;
+      const int64_t lo = min_end + limits.min_side, hi = max_end - limits.min_side;
+      if (hi < lo) continue;
+      // Near the middle more often than at the ends (average of two uniform draws), or, while rooms of a
+      // wanted size are missing, at the offset that cuts one of the two smallest off one end.
+      int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
+      int64_t aimed = -1;
+      if (!wanted_area2.empty() && rng.Chance(0.75)) {
+        const int64_t want =
+            wanted_area2[static_cast<std::size_t>(rng.Int(0, std::min<int64_t>(1, static_cast<int64_t>(wanted_area2.size()) - 1)))];
+        const int64_t across = axis == Axis::kX ? box.height() : box.width();
+        const int64_t offset = std::max<int64_t>(1, (want / 2 + across / 2) / std::max<int64_t>(1, across));
+        k = rng.Chance(0.5) ? min_end + offset : max_end - offset;
+        k = std::clamp(k, lo, hi);
+        aimed = want;
+      }
+      if (!SplitIsOnGrid(piece, axis, k)) continue;
+      std::vector<IRing> low, high;
+      if (!SplitRing(piece, axis, k, &low, &high)) continue;
+      for (auto& r : high) low.push_back(std::move(r));
+      bool ok = low.size() >= 2 && static_cast<int>(pieces.size() - 1 + low.size()) <= cap;
+      for (const IRing& part : low) ok = ok && PieceUsable(part, limits);
+      if (!ok) continue;
+      double score = 0.0;
+      for (const IRing& part : low) score += ShapePenalty(part);
+      bool matched = false;
+      if (aimed >= 0) {
+        // The wanted size is served when some part came within -40 % / +30 % of it.
+        for (const IRing& part : low) {
+          const int64_t a = TwiceArea(part);
+          matched |= a * 10 >= aimed * 6 && a * 10 <= aimed * 13;
+        }
+        if (!matched) score += 1.5;
+      } else if (!wanted_area2.empty()) {
+        score += 0.75;  // a middle cut while small rooms are still wanted
+      }
+      if (score < best_score) {
+        best_score = score;
+        best_parts = std::move(low);
+        best_aimed = matched ? aimed : -1;
+      }
     }
-    if (aimed >= 0) {
-      // The wanted size is served when some part came within 40 % of it.
-      for (const IRing& part : parts) {
-        const int64_t a = TwiceArea(part);
-        if (a * 10 >= aimed * 6 && a * 10 <= aimed * 14) {
-          wanted_area2.erase(wanted_area2.begin());
-          break;
+    // A small wanted room (a bathroom) carved out of one corner of the piece, the rest an L (a single line
+    // would cut a strip as deep as the piece).
+    if (!wanted_area2.empty() && best_aimed != wanted_area2.front() && static_cast<int>(pieces.size()) + 1 <= cap) {
+      const int64_t want = wanted_area2.front();
+      const double side = std::sqrt(static_cast<double>(want) / 2.0) * (0.85 + 0.3 * rng.Unit());
+      const int64_t d1 = std::max<int64_t>(limits.min_side, std::llround(side));
+      const int64_t d2 = std::max<int64_t>(limits.min_side, (want / 2 + d1 - 1) / d1);
+      const bool swap = rng.Chance(0.5);
+      const int64_t dx = swap ? d2 : d1, dy = swap ? d1 : d2;
+      if (dx <= box.width() - limits.min_side && dy <= box.height() - limits.min_side) {
+        // At a corner of the bounding box that is a corner of the piece; the areas adding up below
+        // proves the carved box lies inside the piece.
+        const int corner = static_cast<int>(rng.Int(0, 3));
+        const int64_t x0 = corner & 1 ? box.max_x - dx : box.min_x;
+        const int64_t y0 = corner & 2 ? box.max_y - dy : box.min_y;
+        const IPoint tip{corner & 1 ? box.max_x : box.min_x, corner & 2 ? box.max_y : box.min_y};
+        const IBox cut{x0, y0, x0 + dx, y0 + dy};
+        std::vector<IRing> rest;
+        if (std::find(piece.begin(), piece.end(), tip) != piece.end() && SubtractBox(piece, cut, &rest) &&
+            rest.size() == 1) {
+          std::vector<IRing> parts{std::move(rest[0]), BoxRing(cut)};
+          if (PieceUsable(parts[0], limits) && PieceUsable(parts[1], limits) &&
+              TwiceArea(parts[0]) + TwiceArea(parts[1]) == TwiceArea(piece)) {
+            const int64_t a = TwiceArea(parts[1]);
+            const bool matched = a * 10 >= want * 6 && a * 10 <= want * 13;
+            const double score = ShapePenalty(parts[0]) + ShapePenalty(parts[1]) + (matched ? 0.0 : 1.5);
+            if (score < best_score) {
+              best_score = score;
+              best_parts = std::move(parts);
+              best_aimed = matched ? want : -1;
+            }
+          }
         }
       }
     }
+    if (best_parts.empty()) {
+      ++failures;
+      continue;
+    }
+    if (best_aimed >= 0) wanted_area2.erase(std::find(wanted_area2.begin(), wanted_area2.end(), best_aimed));
     pieces.erase(pieces.begin() + static_cast<long>(index));
-    for (auto& r : parts) pieces.push_back(std::move(r));
+    for (auto& r : best_parts) pieces.push_back(std::move(r));
   }
   return pieces;
 }

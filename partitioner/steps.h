@@ -79,11 +79,17 @@ struct BspLimits {
 };
 bool PieceUsable(const IRing& piece, const BspLimits& limits);
 
+// How badly a piece is proportioned as a room: 0 for a bounding-box aspect up to 2 that the piece fills to
+// at least 75 %; grows with the square of the aspect beyond 2 (2.5: 1, 3: 4) and with the unfilled share
+// (a thin L wrapped round a corner or the staircase).
+double ShapePenalty(const IRing& piece);
+
 // Step 4: splits `pieces` recursively by axis-aligned grid lines into at most `target` connected rooms,
 // each usable. Splits crossing slanted edges off the grid are skipped. `wanted_area2` (twice-area units)
 // lists room sizes the floor's plan asks for (a bathroom, a kitchen...): while some are missing, most
 // splits cut one of them off an end of the piece; the rest of the area goes to the big rooms. Returns
-// the rooms (fewer than `target` when no usable split was left).
+// the rooms (fewer than `target` when no usable split was left). Each split tries a few candidate lines
+// (mostly across the piece's longer side) and keeps the one whose parts have the least ShapePenalty.
 std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
                                 std::vector<int64_t> wanted_area2 = {});
 
