@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/backend_flags.h"
 #include "cli/command.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
@@ -17,8 +18,6 @@
 
 namespace villa::cli {
 
-void ApplyBackendFlags(const std::string& backend, const std::string& api_key_env, PlanOptions& options);
-void AddBackendFlags(CLI::App* sub, std::string& backend, std::string& api_key_env, PlanOptions& options);
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli/backend_flags.h"
 #include "cli/command.h"
 #include "generator/building/building.h"
 #include "generator/building/export.h"
@@ -20,9 +21,6 @@
 
 namespace villa::cli {
 
-// The backend flags, shared with `villa plan` and `villa eval` (cli/plan.cpp).
-void ApplyBackendFlags(const std::string& backend, const std::string& api_key_env, PlanOptions& options);
-void AddBackendFlags(CLI::App* sub, std::string& backend, std::string& api_key_env, PlanOptions& o);
 
 namespace {
 
@@ -133,7 +131,7 @@ void Run(GenerateCommand& command) {
   report["files"] = files;
   report["problems"] = problems;
   files.push_back("report.json");
-  if (Status s = WriteFileAtomic(report_path, report.dump(2) + "\n"); !s) problems.push_back(s.error());
+  if (Status s = WriteFileAtomic(report_path, report.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"); !s) problems.push_back(s.error());
 
   const bool ok = plan.valid() && problems.empty();
   if (!command.quiet || !ok) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/backend_flags.h"
 #include "cli/command.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
@@ -35,7 +36,6 @@ std::filesystem::path Beside(const std::filesystem::path& out, const std::string
 
 }  // namespace
 
-// Shared with eval.cpp: reads --backend / --llm / --api-key-env into the options; throws UsageError.
 void ApplyBackendFlags(const std::string& backend, const std::string& api_key_env, PlanOptions& options) {
   if (backend == "procedural") {
     options.backend = PlanBackend::kProcedural;
