@@ -565,7 +565,10 @@ Drafts Draft(const Layout& layout, const std::string& shape, std::uint64_t seed)
         else
           for (const std::string& p : per_level) parts.push_back(p);
         if (!link_sentences.empty()) {
-          parts.push_back("For the layout, " + link_sentences[0]);
+          std::string first = link_sentences[0];  // lower-case after the comma, but keep the pronoun "I"
+          if (first.size() > 1 && first[0] >= 'A' && first[0] <= 'Z' && first.rfind("I ", 0) != 0)
+            first[0] = static_cast<char>(first[0] - 'A' + 'a');
+          parts.push_back("For the layout, " + first);
           for (std::size_t i = 1; i < link_sentences.size(); ++i) parts.push_back(link_sentences[i]);
         }
         if (!furniture_text.empty()) parts.push_back("In addition, please include " + furniture_text);
