@@ -306,7 +306,7 @@ double ShapePenalty(const IRing& piece) {
   const double fill = static_cast<double>(TwiceArea(piece)) / (2.0 * w * h);
   double penalty = 0.0;
   if (aspect > 2.0) penalty += 4.0 * (aspect - 2.0) * (aspect - 2.0);  // 2.5: 1, 3: 4, 4: 16
-  if (fill < 0.75) penalty += 12.0 * (0.75 - fill);                    // a thin L round a corner
+  if (fill < 0.75) penalty += 16.0 * (0.75 - fill);                    // a thin L round a corner
   return penalty;
 }
 
@@ -343,6 +343,13 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
     // Cut across the longer side (rooms stay compact); a squarish piece either way.
     const double p_vertical = ratio > 1.2 ? 0.92 : (ratio < 1.0 / 1.2 ? 0.08 : 0.5);
     const int cap = std::max(target, extra ? limits.max_pieces : target);
+    // Reflex corners of a non-convex piece (beside the staircase, in a notch): a line through one squares
+    // off the L instead of leaving it to a room.
+    std::vector<IPoint> reflex;
+    for (std::size_t v = 0; v < piece.size() && piece.size() > 4; ++v) {
+      const IPoint a = piece[(v + piece.size() - 1) % piece.size()], b = piece[v], c = piece[(v + 1) % piece.size()];
+      if (Cross(a, b, c) < 0) reflex.push_back(b);
+    }
     // A few candidate lines; the one whose parts are best proportioned wins (the first of equals).
     std::vector<IRing> best_parts;
     double best_score = 1e18;
@@ -357,7 +364,11 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       // wanted size are missing, at the offset that cuts one of the two smallest off one end.
       int64_t k = (rng.Int(lo, hi) + rng.Int(lo, hi) + static_cast<int64_t>(rng.Int(0, 1))) / 2;
       int64_t aimed = -1;
-      if (!wanted_area2.empty() && rng.Chance(0.75)) {
+      if (!reflex.empty() && rng.Chance(0.5)) {
+        const IPoint p = reflex[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(reflex.size()) - 1))];
+        const int64_t at = axis == Axis::kX ? p.x : p.y;
+        if (at >= lo && at <= hi) k = at;
+      } else if (!wanted_area2.empty() && rng.Chance(0.75)) {
         const int64_t want =
             wanted_area2[static_cast<std::size_t>(rng.Int(0, std::min<int64_t>(1, static_cast<int64_t>(wanted_area2.size()) - 1)))];
         const int64_t across = axis == Axis::kX ? box.height() : box.width();

@@ -89,7 +89,9 @@ double ShapePenalty(const IRing& piece);
 // lists room sizes the floor's plan asks for (a bathroom, a kitchen...): while some are missing, most
 // splits cut one of them off an end of the piece; the rest of the area goes to the big rooms. Returns
 // the rooms (fewer than `target` when no usable split was left). Each split tries a few candidate lines
-// (mostly across the piece's longer side) and keeps the one whose parts have the least ShapePenalty.
+// (mostly across the piece's longer side, half of them through a reflex corner of a non-convex piece),
+// plus a corner carve of the smallest wanted room (the rest an L), and keeps the one whose parts have the
+// least ShapePenalty.
 std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
                                 std::vector<int64_t> wanted_area2 = {});
 

@@ -25,7 +25,7 @@ double Quantile(std::vector<double> v, double q) {
 }
 
 struct Realism {
-  int rooms = 0, elongated = 0, very_elongated = 0;
+  int rooms = 0, elongated = 0, very_elongated = 0, sparse = 0;
   std::map<Category, std::vector<double>> areas, aspects;
   int layouts = 0, layouts_living_ground = 0;
   int living = 0, living_ground = 0, private_rooms = 0, private_upper = 0, balconies = 0, balconies_upper = 0;
@@ -58,6 +58,7 @@ Realism Measure(uint64_t count) {
       ++r.rooms;
       r.elongated += aspect > 3.0;
       r.very_elongated += aspect > 4.0;
+      r.sparse += area < 0.65 * w * h;  // an L or C that fills under 65 % of its bounding box
       r.areas[room.category].push_back(area);
       r.aspects[room.category].push_back(aspect);
       if (room.category == Category::kLivingRoom) {
@@ -82,8 +83,10 @@ Realism Measure(uint64_t count) {
 TEST_CASE("Synthesized rooms are well proportioned and sized by type", "[partitioner][realism]") {
   const Realism r = Measure(1000);
   const double elongated = static_cast<double>(r.elongated) / r.rooms;
-  std::printf("realism over 1000 layouts: %d rooms (%.2f a floor, staircase included), aspect > 3: %.1f %%, aspect > 4: %.1f %%\n",
-              r.rooms, static_cast<double>(r.all_rooms) / r.floors, 100.0 * elongated, 100.0 * r.very_elongated / r.rooms);
+  std::printf("realism over 1000 layouts: %d rooms (%.2f a floor, staircase included), aspect > 3: %.1f %%, aspect > 4: %.1f %%, "
+              "filling under 65 %% of the bounding box: %.1f %%\n",
+              r.rooms, static_cast<double>(r.all_rooms) / r.floors, 100.0 * elongated, 100.0 * r.very_elongated / r.rooms,
+              100.0 * r.sparse / r.rooms);
   for (const auto& [c, a] : r.areas) {
     const auto& asp = r.aspects.at(c);
     std::printf("  %-14s n %5zu  area p10 %5.1f median %5.1f p90 %5.1f max %5.1f  aspect median %.2f p90 %.2f\n",
@@ -97,6 +100,7 @@ TEST_CASE("Synthesized rooms are well proportioned and sized by type", "[partiti
   // kitchens median 20; bedrooms median 30, p90 56.8; living rooms p90 64.5; meeting rooms p90 56.
   CHECK(elongated < 0.03);
   CHECK(static_cast<double>(r.very_elongated) / r.rooms < 0.01);
+  CHECK(static_cast<double>(r.sparse) / r.rooms < 0.05);  // before: 6.2 %
   auto median = [&](Category c) { return Quantile(r.areas.at(c), 0.5); };
   auto p90 = [&](Category c) { return Quantile(r.areas.at(c), 0.9); };
   CHECK(median(Category::kBathroom) < 10.0);

@@ -225,3 +225,37 @@ TEST_CASE("Doors sit on their wall, clear of its corners", "[partitioner][doors]
   CHECK_FALSE(PlaceDoor({{0, 0}, {3, 0}}, 2, 1, rng));  // 3 units: no room for 2 + 2 x 1
   CHECK(PlaceDoor({{0, 0}, {4, 0}}, 2, 1, rng));
 }
+
+TEST_CASE("ShapePenalty: compact rooms free, strips and thin Ls penalised", "[partitioner][bsp]") {
+  CHECK(ShapePenalty(BoxRing({0, 0, 8, 8})) == 0.0);
+  CHECK(ShapePenalty(BoxRing({0, 0, 16, 8})) == 0.0);           // 2:1
+  CHECK(ShapePenalty(BoxRing({0, 0, 10, 4})) == Approx(1.0));   // 2.5:1
+  CHECK(ShapePenalty(BoxRing({0, 0, 24, 8})) == Approx(4.0));   // 3:1
+  // An L of 3-unit arms round a 10 x 10 box fills 51 % of it: 16 * (0.75 - 0.51).
+  const IRing thin_l{{0, 0}, {10, 0}, {10, 3}, {3, 3}, {3, 10}, {0, 10}};
+  CHECK(ShapePenalty(thin_l) == Approx(16.0 * (0.75 - 0.51)));
+  // A wide L (a small corner missing) stays free.
+  const IRing wide_l{{0, 0}, {10, 0}, {10, 7}, {7, 7}, {7, 10}, {0, 10}};
+  CHECK(ShapePenalty(wide_l) == 0.0);
+}
+
+TEST_CASE("BSP carves a small wanted room out of a corner with both parts compact", "[partitioner][bsp]") {
+  BspLimits limits;
+  limits.min_area2 = 2 * 24;  // 6 m2 in 0.5 m units
+  limits.min_side = 5;        // 2.5 m
+  limits.min_width = 2.4;
+  int small = 0;
+  for (uint64_t seed = 0; seed < 40; ++seed) {
+    Rng rng(seed);
+    // A 10 x 8 m floor into two rooms, one of them wanted at 6.25 m2 (25 units).
+    const std::vector<IRing> rooms = SplitRoomBsp({BoxRing({0, 0, 20, 16})}, 2, limits, rng, {2 * 25});
+    REQUIRE(rooms.size() == 2);
+    CHECK(TwiceArea(rooms[0]) + TwiceArea(rooms[1]) == 2 * 20 * 16);
+    for (const IRing& r : rooms) {
+      CHECK(PieceUsable(r, limits));
+      CHECK(ShapePenalty(r) < 2.0);
+      small += TwiceArea(r) <= 2 * 36;  // at most 9 m2
+    }
+  }
+  CHECK(small >= 30);  // a line alone would cut a strip of at least 2.5 x 8 = 20 m2
+}
