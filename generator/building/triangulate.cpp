@@ -67,8 +67,10 @@ class EarClipper {
     return last;
   }
 
-  // Removes repeated and collinear points between start and end.
-  Node* Filter(Node* start, Node* end = nullptr) {
+  // Removes repeated points between start and end, and collinear ones too when `drop_collinear` (the
+  // rescue passes: a first pass keeps collinear vertices as corners of proper triangles, so no
+  // zero-area triangle is made where one can be avoided).
+  Node* Filter(Node* start, Node* end = nullptr, bool drop_collinear = true) {
     if (!start) return start;
     if (!end) end = start;
     Node* p = start;
@@ -76,7 +78,7 @@ class EarClipper {
     do {
       again = false;
       bool repeated = Equals(p, p->next);
-      if (repeated || std::abs(Cross(p->prev, p, p->next)) <= Epsilon(p->prev, p, p->next)) {
+      if (repeated || (drop_collinear && std::abs(Cross(p->prev, p, p->next)) <= Epsilon(p->prev, p, p->next))) {
         // A collinear vertex leaves as a zero-area triangle: its two edges stay in the triangulation, so
         // a face meeting this one along them shares every vertex (a watertight solid, no T-junctions).
         if (!repeated && !Equals(p->prev, p) && !Equals(p->prev, p->next))
@@ -137,8 +139,8 @@ class EarClipper {
       Node* bridge = FindBridge(hole, outer, leftmost, k);
       if (!bridge) continue;  // a hole outside the outer ring or unreachable: left out
       Node* reverse = Split(bridge, hole);
-      Filter(reverse, reverse->next);
-      outer = Filter(bridge, bridge->next);
+      Filter(reverse, reverse->next, false);
+      outer = Filter(bridge, bridge->next, false);
     }
     return outer;
   }
@@ -327,7 +329,7 @@ std::vector<std::array<int, 3>> TriangulatePolygon(const Ring& outer, const std:
     offset += static_cast<int>(hole.size());
   }
   if (!hole_rings.empty()) ring = clipper.BridgeHoles(ring, hole_rings);
-  ring = clipper.Filter(ring);
+  ring = clipper.Filter(ring, nullptr, false);
   if (ring && ring->next != ring->prev) clipper.Clip(ring, 0);
   return std::move(clipper.triangles);
 }
