@@ -11,7 +11,8 @@ namespace villa {
 // `outer` counter-clockwise, each hole clockwise or counter-clockwise (reoriented as needed), none
 // repeating its first point. Returns triangles as indices into the concatenation outer + holes[0] +
 // holes[1] + ..., each triangle counter-clockwise. Every input vertex is used: a vertex on a straight
-// stretch of boundary gets a zero-area triangle, so faces sharing that edge meet vertex to vertex.
+// stretch of boundary is a corner of proper triangles (a zero-area triangle only where ear clipping would
+// otherwise get stuck), so faces sharing that edge meet vertex to vertex.
 // Degenerate (zero-area) input gives no triangles.
 std::vector<std::array<int, 3>> TriangulatePolygon(const Ring& outer, const std::vector<Ring>& holes = {});
 
