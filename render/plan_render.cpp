@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "layout/topology.h"
 #include "render/palette.h"
 #include "render/plan_geometry.h"
 #include "render/scene.h"
@@ -99,11 +100,17 @@ struct LevelGeometry {
   bool stairs_go_up = false;
 };
 
-std::vector<PlacedElement> Place(const std::vector<Element>& elements, int level, const std::vector<Segment>& wall) {
+// Whether an element lies where FORMAT.md rule 3 puts it, decided by the same query the validator uses
+// (layout/topology.h): doors, opens and walls on the shared boundary of exactly two rooms; windows and
+// the entrance on the boundary of exactly one room, which no other room touches there (the exterior).
+std::vector<PlacedElement> Place(const Layout& layout, const std::vector<Element>& elements, int level) {
   std::vector<PlacedElement> placed;
   for (const Element& e : elements) {
     if (!e.OnLevel(level)) continue;
-    placed.push_back({&e, plan::CoveredBy(e.shape, wall, kOnWall), {}, {}});
+    const SegmentRooms rooms = RoomsAlongSegment(layout, level, e.shape, kOnWall);
+    const bool exterior = e.kind == ElementKind::kWindow || e.kind == ElementKind::kEntrance;
+    const bool in_place = exterior ? rooms.holding.size() == 1 && rooms.touching.size() == 1 : rooms.holding.size() == 2;
+    placed.push_back({&e, in_place, {}, {}});
   }
   return placed;
 }
@@ -207,11 +214,11 @@ LevelGeometry AnalyseLevel(const Layout& layout, int level, bool multi_story, in
     if (multi_story && layout.rooms[g.rooms[i]].category == Category::kUtilityRoom) g.has_stairs = true;
   }
   g.stairs_go_up = level < top_level;
-  g.entrances = Place(layout.entrances, level, g.exterior);
-  g.windows = Place(layout.windows, level, g.exterior);
-  g.doors = Place(layout.doors, level, g.shared);
-  g.opens = Place(layout.opens, level, g.shared);
-  g.interiors = Place(layout.interiors, level, g.shared);
+  g.entrances = Place(layout, layout.entrances, level);
+  g.windows = Place(layout, layout.windows, level);
+  g.doors = Place(layout, layout.doors, level);
+  g.opens = Place(layout, layout.opens, level);
+  g.interiors = Place(layout, layout.interiors, level);
 
   // The middle of the floor, to tell outside from inside where no room says it.
   Point centre;
