@@ -142,7 +142,9 @@ std::vector<Token> Tokenise(std::string_view text) {
       continue;
     }
     pending_hyphen = false;
-    if (c == '.' || c == '!' || c == '?' || c == ';' || c == '\n') {
+    const bool ends_sentence = c == '.' || c == '!' || c == '?' || c == ';' || c == '\n';
+    if (ends_sentence || c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' ||
+        c == '-' || c == '*') {
       Token t;
       t.begin = i;
       t.end = i + 1;
@@ -151,19 +153,7 @@ std::vector<Token> Tokenise(std::string_view text) {
       t.word = std::string(1, static_cast<char>(c));
       t.stem = t.word;
       tokens.push_back(std::move(t));
-      ++sentence;
-      ++i;
-      continue;
-    }
-    if (c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' || c == '-' || c == '*') {
-      Token t;
-      t.begin = i;
-      t.end = i + 1;
-      t.punct = static_cast<char>(c);
-      t.sentence = sentence;
-      t.word = std::string(1, static_cast<char>(c));
-      t.stem = t.word;
-      tokens.push_back(std::move(t));
+      if (ends_sentence) ++sentence;
       ++i;
       continue;
     }
