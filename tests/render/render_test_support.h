@@ -35,61 +35,10 @@ inline Layout LoadExample(const std::string& name) {
 }
 
 // The paper's own example ("A text-JSON pair", without its "..." line): ground-floor rooms that do not
-// touch, doors and opens on one room's boundary only, upper floors without interior walls.
-inline const char* kPaperExample = R"json({
-  "rooms": {
-      "utility-room_0/0": {"shape": "shapely.box(0, 0, 4, 4)"},
-      "kitchen_0/0": {"shape": "shapely.box(4, 0, 8, 4)"},
-      "dining-room_0/0": {"shape": "shapely.Polygon([(8, 0), (12, 0), (10, 4), (8, 4)])"},
-      "living-room_0/0": {"shape": "shapely.box(0, 8, 20, 16)"},
-      "bathroom_0/0": {"shape": "shapely.Polygon([(10, 4), (13, 4), (13, 8), (10, 8)])"},
-      "utility-room_1/0": {"shape": "shapely.box(0, 0, 4, 4)"},
-      "bedroom_1/0": {"shape": "shapely.box(4, 0, 8, 4)"},
-      "meeting-room_1/0": {"shape": "shapely.box(0, 4, 8, 8)"},
-      "office_1/0": {"shape": "shapely.Polygon([(8, 4), (11, 4), (11, 8), (8, 8)])"},
-      "balcony_1/0": {"shape": "shapely.Polygon([(8, 0), (10, 2), (8, 4)])"},
-      "utility-room_2/0": {"shape": "shapely.box(0, 0, 4, 4)"},
-      "children-room_2/0": {"shape": "shapely.box(0, 4, 8, 8)"},
-      "bathroom_2/0": {"shape": "shapely.box(4, 0, 8, 4)"},
-      "balcony_2/0": {"shape": "shapely.Polygon([(8, 4), (10, 6), (8, 8)])"}
-  },
-  "entrance": {
-      "main_door": {"shape": "shapely.LineString([(0, 5), (0, 7)])", "level": 0}
-  },
-  "doors": {
-      "living0_kitchen0": {"shape": "shapely.LineString([(5, 4), (7, 4)])", "level": 0},
-      "living0_bathroom0": {"shape": "shapely.LineString([(10, 5), (10, 7)])", "level": 0},
-      "meeting1_bedroom1": {"shape": "shapely.LineString([(5, 4), (7, 4)])", "level": 1},
-      "meeting1_office1": {"shape": "shapely.LineString([(8, 5), (8, 7)])", "level": 1},
-      "bedroom1_balcony1": {"shape": "shapely.LineString([(8, 1), (8, 3)])", "level": 1},
-      "children2_bathroom2": {"shape": "shapely.LineString([(5, 4), (7, 4)])", "level": 2},
-      "children2_balcony2": {"shape": "shapely.LineString([(8, 5), (8, 7)])", "level": 2}
-  },
-  "opens": {
-      "utility0_living0": {"shape": "shapely.LineString([(1, 4), (3, 4)])", "level": 0},
-      "kitchen0_dining0": {"shape": "shapely.LineString([(8, 1), (8, 3)])", "level": 0},
-      "utility1_meeting1": {"shape": "shapely.LineString([(1, 4), (3, 4)])", "level": 1},
-      "utility2_children2": {"shape": "shapely.LineString([(1, 4), (3, 4)])", "level": 2}
-  },
-  "windows": {
-      "kitchen0_window": {"shape": "shapely.LineString([(5, 0), (7, 0)])", "is_panoramic": 0, "level": 0},
-      "bathroom0_window": {"shape": "shapely.LineString([(13, 5), (13, 7)])", "is_panoramic": 0, "level": 0},
-      "office1_window": {"shape": "shapely.LineString([(11, 6), (11, 7)])", "is_panoramic": 0, "level": 1},
-      "balcony1_pano": {"shape": "shapely.LineString([(8, 0), (10, 2)])", "is_panoramic": 1, "level": 1},
-      "bathroom2_window": {"shape": "shapely.LineString([(5, 0), (7, 0)])", "is_panoramic": 0, "level": 2},
-      "balcony2_pano": {"shape": "shapely.LineString([(8, 4), (10, 6)])", "is_panoramic": 1, "level": 2}
-  },
-  "interiors": {
-      "wall_utility0_kitchen0": {"shape": "shapely.LineString([(4, 0), (4, 4)])", "level": 0},
-      "wall_utility0_living0": {"shape": "shapely.LineString([(0, 4), (4, 4)])", "level": 0},
-      "wall_living0_kitchen0": {"shape": "shapely.LineString([(4, 4), (8, 4)])", "level": 0},
-      "wall_living0_dining0": {"shape": "shapely.LineString([(8, 4), (10, 4)])", "level": 0},
-      "wall_kitchen0_dining0": {"shape": "shapely.LineString([(8, 0), (8, 4)])", "level": 0}
-  }
-})json";
-
+// touch, doors and opens on one room's boundary only, upper floors without interior walls. The same
+// fixture the validator's tests use.
 inline Layout PaperExample() {
-  Result<Layout> layout = ParseLayoutText(kPaperExample, "paper.json");
+  Result<Layout> layout = LoadLayout(std::filesystem::path(VILLA_FIXTURE_DIR) / "layouts" / "paper_example.json");
   INFO((layout.ok() ? "" : layout.error()));
   REQUIRE(layout.ok());
   return *layout;
