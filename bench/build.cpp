@@ -6,11 +6,11 @@
 #include <functional>
 #include <vector>
 
-#include "generator/building/building.h"
-#include "generator/building/export.h"
-#include "generator/building/render_view.h"
+#include "building/building.h"
+#include "building/export.h"
+#include "building/render_view.h"
 #include "layout/layout_io.h"
-#include "tests/generator/building/test_layouts.h"
+#include "tests/building/test_layouts.h"
 
 using namespace villa;
 

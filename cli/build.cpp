@@ -9,9 +9,9 @@
 #include <string>
 
 #include "cli/command.h"
-#include "generator/building/building.h"
-#include "generator/building/export.h"
-#include "generator/building/render_view.h"
+#include "building/building.h"
+#include "building/export.h"
+#include "building/render_view.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 

@@ -11,9 +11,9 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
-#include "generator/building/building.h"
-#include "generator/building/export.h"
-#include "generator/building/render_view.h"
+#include "building/building.h"
+#include "building/export.h"
+#include "building/render_view.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 #include "render/plan_render.h"

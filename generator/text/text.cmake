@@ -16,7 +16,7 @@ target_include_directories(villa_generator PUBLIC ${PROJECT_SOURCE_DIR})
 target_link_libraries(villa_generator
   PUBLIC villa_partitioner villa_finetune villa_render villa_layout villa_util nlohmann_json::nlohmann_json
   PRIVATE CURL::libcurl Threads::Threads)
-if(TARGET villa_generator_building)
-  target_link_libraries(villa_generator PUBLIC villa_generator_building)
+if(TARGET villa_building)
+  target_link_libraries(villa_generator PUBLIC villa_building)
 endif()
-villa_add_commands(plan.cpp eval.cpp)
+villa_add_commands(plan.cpp eval.cpp generate.cpp)

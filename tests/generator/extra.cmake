@@ -8,8 +8,3 @@ if(TARGET villa_tests_generator_text AND TARGET villa_annotator)
   target_link_libraries(villa_tests_generator_text PRIVATE villa_annotator)
   target_compile_definitions(villa_tests_generator_text PRIVATE VILLA_HAVE_ANNOTATOR=1)
 endif()
-# The building's solids are cross-checked with CGAL (tests/generator/building/cgal_solids_test.cpp).
-if(TARGET villa_tests_generator_building)
-  find_package(CGAL REQUIRED)
-  target_link_libraries(villa_tests_generator_building PRIVATE CGAL::CGAL)
-endif()

@@ -2,8 +2,8 @@
 
 #include <set>
 
-#include "generator/building/building.h"
-#include "generator/building/solids.h"
+#include "building/building.h"
+#include "mesh/solids.h"
 #include "layout/layout_io.h"
 #include "test_support.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "generator/building/building.h"
+#include "building/building.h"
 #include "render/palette.h"
 #include "util/result.h"
 

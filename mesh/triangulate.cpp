@@ -2,7 +2,7 @@
 // bridged into the outer ring, ears cut with a point-in-triangle test over reflex vertices, and two
 // fallback passes (cure local self-intersections, split along a valid diagonal) for awkward rings.
 // Conventions here: outer ring counter-clockwise, holes clockwise, Cross() > 0 for a left turn.
-#include "generator/building/triangulate.h"
+#include "mesh/triangulate.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "generator/building/export.h"
+#include "building/export.h"
 #include "layout/layout_io.h"
 #include "test_layouts.h"
 

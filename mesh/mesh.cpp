@@ -1,4 +1,4 @@
-#include "generator/building/mesh.h"
+#include "mesh/mesh.h"
 
 #include <algorithm>
 #include <cmath>

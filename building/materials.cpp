@@ -1,4 +1,4 @@
-#include "generator/building/materials.h"
+#include "building/materials.h"
 
 namespace villa {
 

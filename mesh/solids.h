@@ -3,7 +3,7 @@
 // profile (stair flights) and straight wall pieces with openings cut through them.
 #include <vector>
 
-#include "generator/building/mesh.h"
+#include "mesh/mesh.h"
 #include "layout/layout.h"
 
 namespace villa {

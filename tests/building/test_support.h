@@ -5,7 +5,7 @@
 #include <limits>
 #include <optional>
 
-#include "generator/building/building.h"
+#include "building/building.h"
 #include "layout/layout_io.h"
 #include "test_layouts.h"
 

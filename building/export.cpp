@@ -1,4 +1,4 @@
-#include "generator/building/export.h"
+#include "building/export.h"
 
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "generator/building/materials.h"
+#include "building/materials.h"
 #include "util/atomic_file.h"
 
 namespace villa {

@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "generator/building/building.h"
+#include "building/building.h"
 #include "render/palette.h"
 #include "util/result.h"
 

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "generator/building/triangulate.h"
+#include "mesh/triangulate.h"
 
 using namespace villa;
 

@@ -3,7 +3,7 @@
 // part kind. The exporters and the preview renderer read the same table.
 #include <string>
 
-#include "generator/building/building.h"
+#include "building/building.h"
 #include "render/palette.h"
 
 namespace villa {

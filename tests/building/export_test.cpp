@@ -4,7 +4,7 @@
 #include <fstream>
 #include <map>
 
-#include "generator/building/export.h"
+#include "building/export.h"
 #include "test_support.h"
 
 using namespace villa;

@@ -1,11 +1,11 @@
-#include "generator/building/solids.h"
+#include "mesh/solids.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
-#include "generator/building/geometry2d.h"
-#include "generator/building/triangulate.h"
+#include "mesh/geometry2d.h"
+#include "mesh/triangulate.h"
 
 namespace villa {
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "generator/building/mesh.h"
+#include "mesh/mesh.h"
 #include "layout/layout.h"
 #include "util/result.h"
 

@@ -1,4 +1,4 @@
-#include "generator/building/render_view.h"
+#include "building/render_view.h"
 
 #include <embree3/rtcore.h>
 #include <png.h>
@@ -9,7 +9,7 @@
 #include <numbers>
 #include <thread>
 
-#include "generator/building/materials.h"
+#include "building/materials.h"
 #include "util/atomic_file.h"
 
 namespace villa {

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "generator/building/render_view.h"
+#include "building/render_view.h"
 #include "test_support.h"
 
 using namespace villa;

@@ -14,7 +14,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include "generator/building/building.h"
+#include "building/building.h"
 #include "layout/layout_io.h"
 #include "test_support.h"
 

@@ -2,7 +2,7 @@
 // (mitred at every corner), interior walls along `interiors` (cut at junctions by the bisectors between
 // neighbouring walls, so any angle and any number of walls meet without overlap), openings cut through
 // them, door leaves and glass, staircases in the utility rooms and slabs with their stair holes.
-#include "generator/building/building.h"
+#include "building/building.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "generator/building/geometry2d.h"
-#include "generator/building/solids.h"
+#include "mesh/geometry2d.h"
+#include "mesh/solids.h"
 
 namespace villa {
 namespace {
