@@ -15,6 +15,7 @@
 #include "cli/command.h"
 #include "partitioner/dataset.h"
 #include "util/atomic_file.h"
+#include "util/hash.h"
 #include "util/progress.h"
 #include "util/version.h"
 #ifdef VILLA_HAVE_RENDER
@@ -76,11 +77,6 @@ void ParseShard(const std::string& text, uint64_t* index, uint64_t* count) {
     throw UsageError("synth: --shard \"" + text + "\": expected i/n, e.g. 0/4");
 }
 
-uint64_t Fnv1a(uint64_t hash, const std::string& text) {
-  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001B3ull;
-  return hash;
-}
-
 void Run(const SynthCommand& command) {
   SynthOptions options;
   options.count = command.count;
@@ -113,7 +109,7 @@ void Run(const SynthCommand& command) {
   const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
   AtomicFileWriter layouts(dir / "layouts.jsonl");
   if (!layouts.ok()) throw std::runtime_error(layouts.error());
-  uint64_t checksum = 0xCBF29CE484222325ull;
+  uint64_t checksum = kFnv1a64Offset;
   std::vector<std::string> preview_lines;
   std::vector<std::string> failures;
   SynthStats stats;
@@ -124,7 +120,7 @@ void Run(const SynthCommand& command) {
         [&](const std::string& line) {
           layouts.Write(line);
           layouts.Write("\n");
-          checksum = Fnv1a(checksum, line + "\n");
+          checksum = Fnv1a64("\n", Fnv1a64(line, checksum));
           if (static_cast<int>(preview_lines.size()) < options.previews) preview_lines.push_back(line);
         },
         [&](std::size_t n) { bar.Advance(n); }, &failures);

@@ -18,6 +18,7 @@
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "util/atomic_file.h"
+#include "util/hash.h"
 #include "util/text_table.h"
 
 namespace villa {
@@ -266,7 +267,7 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
       if (!coarse.empty()) texts.push_back({"coarse", coarse});
       if (!fine.empty()) texts.push_back({"fine", fine});
     } else {
-      bool pick_fine = (MixHash(StableHash(id) ^ MixHash(options.seed)) & 1) != 0;
+      bool pick_fine = (SplitMix64Hash(StableHash(id) ^ SplitMix64Hash(options.seed)) & 1) != 0;
       if (pick_fine && fine.empty()) pick_fine = false;
       if (!pick_fine && coarse.empty()) pick_fine = true;
       const std::string& text = pick_fine ? fine : coarse;
@@ -290,7 +291,7 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     c.shape = record.contains("shape") && record["shape"].is_string() ? record["shape"].get<std::string>()
                                                                        : ClassifyFootprint(*layout);
     c.floors = layout->LevelCount();
-    c.order = MixHash(StableHash(geometry) ^ MixHash(options.seed));
+    c.order = SplitMix64Hash(StableHash(geometry) ^ SplitMix64Hash(options.seed));
     c.geometry = std::move(geometry);
     c.answer = std::move(answer);
     c.samples = std::move(texts);

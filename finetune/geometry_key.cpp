@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "layout/shape_codec.h"
+#include "util/hash.h"
 
 namespace villa {
 namespace {
@@ -66,21 +67,7 @@ std::string GeometryKey(const Layout& layout) {
   return key;
 }
 
-std::uint64_t MixHash(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-std::uint64_t StableHash(std::string_view text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ULL;
-  }
-  return MixHash(h);
-}
+std::uint64_t StableHash(std::string_view text) { return SplitMix64Hash(Fnv1a64(text)); }
 
 Ring FootprintOutline(const Layout& layout, int level) {
   std::vector<std::vector<GridPoint>> rings;

@@ -18,10 +18,9 @@ namespace villa {
 
 std::string GeometryKey(const Layout& layout);
 
-// 64-bit FNV-1a of `text`, finished with the splitmix64 mixer: stable across machines and standard
-// libraries (std::hash is not), so splits are the same everywhere.
+// 64-bit FNV-1a of `text`, finished with the SplitMix64 mixer (util/hash.h): stable across machines and
+// standard libraries (std::hash is not), so splits are the same everywhere.
 std::uint64_t StableHash(std::string_view text);
-std::uint64_t MixHash(std::uint64_t value);
 
 // The outer boundary of the rooms of `level`, counter-clockwise, collinear vertices merged. Coordinates on
 // the format's 0.01 m grid. Empty when the level has no rooms or its rooms do not form one outline.
