@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "annotator/plan_geometry.h"
+#include "layout/geometry.h"
 #include "layout/topology.h"
 #include "util/hash.h"
 
@@ -240,7 +240,7 @@ Links FindLinks(const Layout& layout, const Analysis& an) {
     if (layout.rooms[b].category != Category::kBalcony) continue;
     bool panoramic = false;
     for (const Element& w : layout.windows)
-      if (w.panoramic && w.OnLevel(layout.rooms[b].level) && SegmentOnRing(w.shape, layout.rooms[b].polygon))
+      if (w.panoramic && w.OnLevel(layout.rooms[b].level) && RingHoldsSegment(layout.rooms[b].polygon, w.shape, kOnWallTolerance))
         panoramic = true;
     if (!panoramic) continue;
     for (const Connection& c : an.connections) {
@@ -258,7 +258,7 @@ Links FindLinks(const Layout& layout, const Analysis& an) {
     const Room& room = layout.rooms[r];
     if (room.category == Category::kRoom || room.category == Category::kUtilityRoom) continue;
     if (!UniqueOnLevel(layout, an, r)) continue;
-    Bounds bounds = LevelBounds(layout, room.level);
+    Box2 bounds = LevelBounds(layout, room.level);
     if (bounds.width() <= 0 || bounds.height() <= 0) continue;
     Point c = Centroid(room.polygon);
     double fx = (c.x - bounds.min_x) / bounds.width();

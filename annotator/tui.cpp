@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <clocale>
 #include <cmath>
 #include <cstdio>
@@ -23,10 +24,8 @@
 #include "layout/layout_io.h"
 #include "layout/topology.h"
 #include "layout/validate.h"
-#include "util/atomic_file.h"
-#ifdef VILLA_ANNOTATOR_HAS_PALETTE
 #include "render/palette.h"
-#endif
+#include "util/atomic_file.h"
 
 namespace villa::annotator {
 namespace {
@@ -36,20 +35,19 @@ namespace {
 struct CategoryKey {
   int key;
   Category category;
-  const char* shortname;  // for the legend and tight labels
 };
 const CategoryKey kCategoryKeys[] = {
-    {'l', Category::kLivingRoom, "living"}, {'b', Category::kBedroom, "bed"},
-    {'k', Category::kKitchen, "kitchen"},   {'w', Category::kBathroom, "bath"},
-    {'d', Category::kDiningRoom, "dining"}, {'c', Category::kChildrenRoom, "child"},
-    {'o', Category::kOffice, "office"},     {'m', Category::kMeetingRoom, "meeting"},
-    {'s', Category::kUtilityRoom, "stair"}, {'y', Category::kBalcony, "balcony"},
+    {'l', Category::kLivingRoom}, {'b', Category::kBedroom},      {'k', Category::kKitchen},
+    {'w', Category::kBathroom},   {'d', Category::kDiningRoom},   {'c', Category::kChildrenRoom},
+    {'o', Category::kOffice},     {'m', Category::kMeetingRoom},  {'s', Category::kUtilityRoom},
+    {'y', Category::kBalcony},
 };
 
-const char* ShortName(Category c) {
-  for (const auto& k : kCategoryKeys)
-    if (k.category == c) return k.shortname;
-  return "room";
+// layout.h's short name in lower case, for the legend and tight labels ("bed", "child", "utility").
+std::string ShortName(Category c) {
+  std::string name(CategoryShortName(c));
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return name;
 }
 
 // Code points of a UTF-8 string (display width 1 each; the tool writes no wide glyphs).
@@ -178,13 +176,8 @@ void InitColours() {
     Category c = static_cast<Category>(i);
     short bg = COLOR_WHITE;
     if (rich) {
-#ifdef VILLA_ANNOTATOR_HAS_PALETTE
       Rgb rgb = CategoryColor(c);
       bg = Xterm256(rgb.r, rgb.g, rgb.b);
-#else
-      static const short soft[] = {255, 223, 153, 222, 116, 216, 218, 151, 183, 250, 157};
-      bg = soft[i];
-#endif
     } else {
       static const short basic[] = {COLOR_WHITE, COLOR_YELLOW, COLOR_BLUE,  COLOR_RED,   COLOR_CYAN, COLOR_MAGENTA,
                                     COLOR_MAGENTA, COLOR_GREEN, COLOR_BLUE, COLOR_WHITE, COLOR_GREEN};
@@ -325,7 +318,7 @@ void App::DrawPlan(int top, int left, int width, int height) {
     const Room& r = layout().rooms[rooms[k]];
     std::string n = std::to_string(k + 1);
     o.labels[rooms[k]] = {n + " " + std::string(CategoryName(r.category)), n + " " + ShortName(r.category),
-                          n + " " + std::string(ShortName(r.category)).substr(0, 3), n};
+                          n + " " + ShortName(r.category).substr(0, 3), n};
   }
   Canvas canvas = DrawFloorPlan(layout(), level_, o);
   for (int y = 0; y < canvas.height; ++y) {
@@ -461,7 +454,7 @@ void App::DrawStatus(int h, int w) {
                        std::to_string(c.automatic) + "  pending " + std::to_string(c.pending) + " ";
   std::string keys = " ?:help a:accept x:reject f:fix u:undo n/p/N:next/prev/pending q:quit";
   std::string legend;
-  for (const auto& k : kCategoryKeys) legend += std::string(1, static_cast<char>(k.key)) + ":" + k.shortname + " ";
+  for (const auto& k : kCategoryKeys) legend += std::string(1, static_cast<char>(k.key)) + ":" + ShortName(k.category) + " ";
   // Line h-2: the last message; line h-1: counts and keys.
   Put(h - 2, 0, Pad(message_.empty() ? " " + legend : " " + message_, w), message_bad_ ? kPairBad : kPairDim,
       message_bad_ ? A_BOLD : A_NORMAL);

@@ -15,6 +15,7 @@
 #include "finetune/sample_format.h"
 #include "finetune/system_prompt.h"
 #include "finetune/trainer_configs.h"
+#include "layout/footprint.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "util/atomic_file.h"
@@ -288,8 +289,12 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     Candidate c;
     c.id = id;
     c.status = status;
-    c.shape = record.contains("shape") && record["shape"].is_string() ? record["shape"].get<std::string>()
-                                                                       : ClassifyFootprint(*layout);
+    if (record.contains("shape") && record["shape"].is_string()) {
+      c.shape = record["shape"].get<std::string>();
+    } else {
+      std::optional<ShapeClass> shape = ClassifyFootprint(*layout);
+      c.shape = shape ? std::string(ShapeClassName(*shape)) : "none";
+    }
     c.floors = layout->LevelCount();
     c.order = SplitMix64Hash(StableHash(geometry) ^ SplitMix64Hash(options.seed));
     c.geometry = std::move(geometry);
