@@ -13,7 +13,7 @@
 #include "cli/command.h"
 #include "building/building.h"
 #include "building/export.h"
-#include "building/render_view.h"
+#include "building/view_scene.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 #include "render/plan_render.h"
@@ -96,7 +96,7 @@ void Run(GenerateCommand& command) {
       if (exported) files.push_back("building.glb");
       else fail(exported.error());
       start = std::chrono::steady_clock::now();
-      auto image = RenderPreview(*building);
+      auto image = RenderPreview(ViewSceneOf(*building));
       Status written = image ? WritePng(*image, preview_png) : Status(Error{preview_png.string() + ": " + image.error()});
       double preview_s = Since(start);
       if (written) files.push_back("preview.png");
