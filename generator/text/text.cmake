@@ -8,6 +8,7 @@ add_library(villa_generator STATIC
   ${VILLA_GENERATOR_TEXT_DIR}/llm_plan.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/procedural.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/plan.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/eval.cpp
 )
 target_include_directories(villa_generator PUBLIC ${PROJECT_SOURCE_DIR})
 target_link_libraries(villa_generator
@@ -16,4 +17,4 @@ target_link_libraries(villa_generator
 if(TARGET villa_building)
   target_link_libraries(villa_generator PUBLIC villa_building)
 endif()
-villa_add_commands(plan.cpp eval.cpp generate.cpp)
+villa_add_commands(plan.cpp eval.cpp)
