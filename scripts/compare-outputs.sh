@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Every deterministic output of the villa command, made by two binaries and compared byte for byte:
 # synth with a seed (layouts, stats, previews), validate --json (examples, fixtures, the synth output),
-# render SVG and PNG, build .glb/.obj and the preview PNG (examples and some synth layouts),
-# finetune export of an annotated fixture, generate on a sample request, and (with --dataset) the
-# reference dataset recipe of scripts/make-dataset.sh.
+# render SVG and PNG, build .glb/.obj and the preview PNG (examples and some synth layouts; again with the
+# door leaves hung shut),
+# finetune export of an annotated fixture, plan, eval and generate on sample requests, and (with --dataset)
+# the reference dataset recipe of scripts/make-dataset.sh.
 # Usage: scripts/compare-outputs.sh [--dataset] OLD_VILLA NEW_VILLA [WORKDIR]
 # Prints one line per file that differs (or is missing on one side) and exits 1 when any does.
 set -euo pipefail
@@ -50,10 +51,20 @@ produce() {
     local b; b=$(basename "$f" .json)
     run "build-$b" "$villa" build "$f" -o "$out/$b.glb" --preview "$out/$b.preview.png"
   done
+  # With the leaves hung shut, door swings aside, every other part of the 3D output shows.
+  for f in "$ROOT"/examples/*.json "${samples[@]}"; do
+    local b; b=$(basename "$f" .json)
+    run "build-closed-$b" "$villa" build "$f" -o "$out/$b.closed.glb" --preview "$out/$b.closed.png" --closed-doors
+  done
   run build-obj "$villa" build "$ROOT/examples/two-floor-house.json" -o "$out/two-floor-house.obj"
+  mkdir -p "$out/plan"
   run finetune "$villa" finetune export "$ROOT/tests/fixtures/finetune/annotated.jsonl" --out "$out/finetune" --seed 3
   run generate "$villa" generate "I want a two-story L-shaped villa with a living room, a kitchen, a bathroom, two bedrooms and a balcony." \
     --seed 5 --out "$out/generate"
+  run plan "$villa" plan "A one-story U-shaped bungalow with a living room, a kitchen, a dining room and two bedrooms." \
+    --seed 2 -o "$out/plan/layout.json"
+  run eval "$villa" eval "$ROOT/tests/fixtures/prompts/varied.jsonl" --json --jobs 2 --limit 8
+  run eval-text "$villa" eval "$ROOT/tests/fixtures/prompts/varied.jsonl" --jobs 2 --limit 8
   if [[ $DATASET == 1 ]]; then
     run dataset-synth "$villa" synth --count 1000 --floors 2:4:4 --seed 2026 --out "$out/dataset/synth"
     run dataset-auto "$villa" annotate "$out/dataset/synth" --auto
@@ -62,14 +73,15 @@ produce() {
   fi
 }
 
-# Paths of the two work folders and measured times are the only expected differences: both are
-# replaced by placeholders in a normalised copy (*.norm) that is compared instead of the file.
+# Paths of the two work folders, measured times and the annotation journal's clock are the only expected
+# differences: they are replaced by placeholders in a normalised copy (*.norm) compared instead of the file.
 normalise() {
   local out=$1
   while IFS= read -r -d '' f; do
     sed -E -e "s#$out#OUT#g" -e 's/[0-9]+(\.[0-9]+)? ?(s|ms)\b/T/g' -e 's/[0-9]+ layouts\/s/N layouts\/s/g' \
-      -e 's/"(seconds|export|preview|build|plan|total|ms)": [0-9.e-]+/"\1": T/g' "$f" > "$f.norm"
-  done < <(find "$out" -type f \( -name '*.stdout' -o -name '*.stderr' -o -name '*.json' \) -print0)
+      -e 's/"(seconds|seconds_plan|export|preview|build|plan|total|ms)": [0-9.e-]+/"\1": T/g' \
+      -e 's/ [0-9]+\.[0-9]{2}$/ T/' -e 's/"time":"[^"]*"/"time":T/g' "$f" > "$f.norm"
+  done < <(find "$out" -type f \( -name '*.stdout' -o -name '*.stderr' -o -name '*.json' -o -name '*.journal.jsonl' \) -print0)
 }
 
 produce "$OLD" "$WORK/old"
