@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "assets/category.h"
+#include "assets/category_phrase.h"
 
 namespace villa {
 namespace {
@@ -52,78 +53,15 @@ bool ParseNumber(const std::string& text, double* out) {
   return ec == std::errc() && end == s.data() + s.size() && !s.empty() && std::isfinite(*out);
 }
 
-// ---- words
-
-struct Word {
-  std::string lower;    // lowercase
-  bool capitalised;     // starts with an upper-case letter in the catalog ("Chambord", "BZ")
-  bool numeric;         // starts with a digit ("2", "16:9", "1998")
-};
-
-// The words of a name; apostrophes stay inside words ("captain's"), everything else separates them.
-std::vector<Word> Words(const std::string& text) {
-  std::vector<Word> out;
-  std::string current;
-  bool capital = false;
-  auto flush = [&] {
-    if (!current.empty()) out.push_back({current, capital, std::isdigit(static_cast<unsigned char>(current[0])) != 0});
-    current.clear();
-  };
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    unsigned char c = static_cast<unsigned char>(text[i]);
-    bool separator = c == ',' || c == ';' || c == '(' || c == ')';
-    if (std::isalnum(c) || (c == '\'' && !current.empty()) || c >= 0x80) {
-      if (current.empty()) capital = std::isupper(c) != 0;
-      current.push_back(static_cast<char>(std::tolower(c)));
-    } else {
-      flush();
-      if (separator) out.push_back({",", false, false});
-    }
-  }
-  flush();
-  return out;
-}
-
-std::string Join(const std::vector<Word>& words, std::size_t begin, std::size_t end) {
-  std::string out;
-  for (std::size_t i = begin; i < end; ++i) out += (out.empty() ? "" : " ") + words[i].lower;
-  return out;
-}
-
-// The first segment of a name: up to a comma, a joining word ("Chair with cushion", "Plate, glass and
-// cutlery", "Table on trestles") or a number ("Sofa 2 seats", "TV 16:9", "Concept Sedan 01").
-std::vector<Word> FirstSegment(const std::vector<Word>& words) {
-  static const std::set<std::string> kJoins = {",", "with", "and", "on", "for", "in", "of", "&"};
-  std::vector<Word> out;
-  for (const Word& w : words) {
-    if (kJoins.count(w.lower) || (w.numeric && !out.empty())) break;
-    out.push_back(w);
-  }
-  return out;
-}
-
-// English compounds put the head last ("coffee table" is a table, "toilet brush" a brush): try the
-// phrases that end at the last word, longest first.
-const CategoryInfo* HeadCategory(const std::vector<Word>& words) {
-  for (std::size_t begin = 0; begin < words.size(); ++begin)
-    if (const CategoryInfo* c = CategoryForWord(Join(words, begin, words.size()))) return c;
-  return nullptr;
-}
-
 const CategoryInfo* VocabularyCategory(const Sh3dPiece& piece) {
-  std::vector<Word> words = Words(piece.name);
-  std::string whole = Join(words, 0, words.size());
-  if (const CategoryInfo* c = CategoryForWord(whole)) return c;
-  std::vector<Word> segment = FirstSegment(words);
-  if (const CategoryInfo* c = HeadCategory(segment)) return c;
-  // Trailing proper nouns and brands ("Frame Chambord", "Convertible sofa BZ") are not the head.
-  while (segment.size() > 1 && segment.back().capitalised) {
-    segment.pop_back();
-    if (const CategoryInfo* c = HeadCategory(segment)) return c;
-  }
-  // A tag that is itself a category name ("Nightstand").
-  for (const std::string& tag : piece.tags)
-    if (const CategoryInfo* c = FindCategory(CategorySlug(tag))) return c;
+  // People, animals and vehicles are scenery, whatever their names say ("Seat Leon" is a car).
+  if (piece.category == "Characters" || piece.category == "Vehicles") return nullptr;
+  // Tables for games are not where one dines.
+  static const std::set<std::string> kOther = {"pool table", "football table", "table tennis", "table tennis bat"};
+  if (kOther.count(HeadPhrase(piece.name))) return nullptr;
+  if (const CategoryInfo* c = CategoryInPhrase(piece.name)) return c;
+  // Tags are left out here: they name a family more often than the thing ("Cooker" on a sandwich
+  // maker, "Bed" on a hammock, "TV" on an antenna plug). Retrieval still reads them.
   return nullptr;
 }
 
@@ -271,9 +209,8 @@ Sh3dMapping MapSh3dPiece(const Sh3dPiece& piece) {
   if (info) {
     m.category = std::string(info->name);
   } else {
-    std::vector<Word> words = Words(piece.name);
-    std::vector<Word> segment = FirstSegment(words);
-    m.category = CategorySlug(Join(segment.empty() ? words : segment, 0, segment.empty() ? words.size() : segment.size()));
+    m.category = CategorySlug(HeadPhrase(piece.name));
+    if (m.category.empty()) m.category = CategorySlug(piece.name);
     if (m.category.empty()) m.category = "object";
   }
   m.room_types = RoomTypesOf(piece.category);

@@ -1,5 +1,6 @@
 // villa assets import|list|show|search: the asset library (assets/asset_library.h).
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <mutex>
 #include <memory>
@@ -8,6 +9,8 @@
 
 #include "assets/asset_library.h"
 #include "assets/category.h"
+#include "assets/embedder.h"
+#include "assets/retrieval.h"
 #include "assets/sh3d_import.h"
 #include "cli/command.h"
 #include "util/progress.h"
@@ -157,6 +160,78 @@ void RunShow(const ShowCommand& command) {
   SetExitCode(kExitOk);
 }
 
+// ---- search
+
+struct SearchCommand {
+  std::string library;
+  std::string text;
+  int k = 10;
+  std::vector<double> size;
+  std::string placement;
+  bool json = false;
+  RetrievalQuery query;
+};
+
+void RunSearch(SearchCommand& command) {
+  if (!command.size.empty()) {
+    if (command.size.size() != 3 || !(command.size[0] > 0 && command.size[1] > 0 && command.size[2] > 0))
+      throw UsageError("assets search: --size takes three lengths > 0 in m: W,D,H");
+    command.query.size = Vec3{command.size[0], command.size[1], command.size[2]};
+  }
+  if (!command.placement.empty()) {
+    command.query.placement = ParsePlacement(command.placement);
+    if (!command.query.placement) throw UsageError("assets search: --placement: expected floor, wall, ceiling or surface, got " + command.placement);
+  }
+  if (!command.query.category.empty() && !FindCategory(command.query.category))
+    std::cerr << "villa assets search: note: " << command.query.category << " is not in the vocabulary; matching it as a name\n";
+  command.query.text = command.text;
+  std::optional<AssetLibrary> library = OpenLibrary(command.library, "search");
+  if (!library) return;
+  // The offline lexical embedder; an OpenAI-compatible endpoint plugs in here once llm/ is available.
+  auto embedder = std::make_shared<LexicalEmbedder>();
+  Result<AssetRetriever> retriever = AssetRetriever::Build(library->records(), embedder);
+  if (!retriever.ok()) {
+    std::cerr << "villa assets search: " << retriever.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  RetrievalOptions options;
+  options.k = command.k;
+  Result<RetrievalResult> result = retriever->Rank(command.query, options);
+  if (!result.ok()) {
+    std::cerr << "villa assets search: " << result.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  if (command.json) {
+    for (const RankedAsset& r : result->ranked) {
+      nlohmann::ordered_json j;
+      j["id"] = r.asset->id;
+      j["score"] = std::round(r.score * 1e4) / 1e4;
+      j["similarity"] = std::round(r.similarity * 1e4) / 1e4;
+      j["size_fit"] = std::round(r.size_fit * 1e4) / 1e4;
+      j["name"] = r.asset->name;
+      j["category"] = r.asset->category;
+      std::cout << j.dump() << "\n";
+    }
+  } else {
+    TextTable table({"#", "score", "text", "size", "id", "name", "category", "size (m)"});
+    int rank = 0;
+    for (const RankedAsset& r : result->ranked)
+      table.AddRow({std::to_string(++rank), FormatFixed(r.score, 3), FormatFixed(r.similarity, 3), FormatFixed(r.size_fit, 2),
+                    r.asset->id, r.asset->name, r.asset->category, Size(r.asset->size)});
+    std::cout << "query: " << command.query.Text() << (result->category.empty() ? "" : " [category " + result->category + "]") << "\n";
+    std::cout << table.Render();
+  }
+  if (result->category_missing) {
+    std::cerr << "villa assets search: the library has no " << result->category << " that meets the query; "
+              << (result->fallback_generator.empty() ? "no procedural generator makes one either"
+                                                     : "the procedural generator '" + result->fallback_generator + "' makes one")
+              << "\n";
+  }
+  SetExitCode(kExitOk);
+}
+
 Registration registration{70, [](CLI::App& app) {
   CLI::App* assets = app.add_subcommand(
       "assets",
@@ -194,6 +269,24 @@ Registration registration{70, [](CLI::App& app) {
   sub->add_option("--library", show->library, "library folder");
   sub->add_option("id", show->id, "asset id, e.g. \"sh3d:BlendSwap-CC-0#bookcase\"")->required();
   sub->callback([show] { RunShow(*show); });
+
+  auto search = std::make_shared<SearchCommand>();
+  sub = assets->add_subcommand(
+      "search",
+      "Rank the library's assets for a query: cosine similarity of text embeddings (offline lexical\n"
+      "embedding of names, categories, tags and synonyms) plus the fit of their size to --size (or to the\n"
+      "category's usual sizes) plus a bonus for the query's category.");
+  sub->add_option("text", search->text, "what to look for, e.g. \"dark leather couch\"")->required();
+  sub->add_option("--library", search->library, "library folder");
+  sub->add_option("-k", search->k, "answers to print (default 10)")->check(CLI::PositiveNumber);
+  sub->add_option("--category", search->query.category, "vocabulary category (default: read from the text)");
+  sub->add_option("--room-type", search->query.room_type, "room type the asset is for (e.g. bedroom)");
+  sub->add_option("--size", search->size, "wanted size W,D,H in m (asset frame)")->delimiter(',');
+  sub->add_flag("--needs-surface", search->query.needs_surface, "only assets with a support surface");
+  sub->add_flag("--needs-cavity", search->query.needs_cavity, "only assets with a cavity");
+  sub->add_option("--placement", search->placement, "only assets placed so: floor, wall, ceiling or surface");
+  sub->add_flag("--json", search->json, "one JSON object a line: id, score, similarity, size_fit, name, category");
+  sub->callback([search] { RunSearch(*search); });
 }};
 
 }  // namespace

@@ -1,0 +1,137 @@
+#include "assets/retrieval.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "assets/category.h"
+#include "assets/category_phrase.h"
+
+namespace villa {
+namespace {
+
+std::string Spaced(std::string text) {
+  std::replace(text.begin(), text.end(), '-', ' ');
+  return text;
+}
+
+double Cosine(const Embedding& a, const Embedding& b) {
+  if (a.size() != b.size()) return 0.0;
+  double dot = 0, na = 0, nb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    dot += static_cast<double>(a[i]) * b[i];
+    na += static_cast<double>(a[i]) * a[i];
+    nb += static_cast<double>(b[i]) * b[i];
+  }
+  return na > 0 && nb > 0 ? dot / std::sqrt(na * nb) : 0.0;
+}
+
+// ln(value / nearest end of [lo, hi]); 0 inside.
+double LogOutside(double value, double lo, double hi) {
+  if (value < lo) return std::log(value / lo);
+  if (value > hi) return std::log(value / hi);
+  return 0.0;
+}
+
+}  // namespace
+
+std::string RetrievalQuery::Text() const {
+  std::string out = Spaced(category);
+  if (!text.empty()) out += (out.empty() ? "" : ": ") + text;
+  if (!room_type.empty()) out += " (" + Spaced(room_type) + ")";
+  return out;
+}
+
+std::string RetrievalOptions::Check() const {
+  if (k < 1) return "k must be >= 1, got " + std::to_string(k);
+  if (!(similarity_weight >= 0 && size_weight >= 0 && category_weight >= 0 && room_weight >= 0))
+    return "weights must be >= 0";
+  if (!(size_tolerance > 1)) return "size_tolerance must be > 1";
+  return "";
+}
+
+std::string AssetText(const AssetRecord& a) {
+  std::string out = a.name + ". " + Spaced(a.category) + ".";
+  if (!a.source.tags.empty()) {
+    out += " ";
+    for (std::size_t i = 0; i < a.source.tags.size(); ++i) out += (i ? ", " : "") + a.source.tags[i];
+    out += ".";
+  }
+  if (!a.source.sh3d_category.empty()) out += " " + a.source.sh3d_category + ".";
+  return out;
+}
+
+double SizeFit(const Vec3& size, const std::optional<Vec3>& wanted, const std::string& category, double tolerance) {
+  const double sigma = std::log(tolerance);
+  const double got[3] = {size.x, size.y, size.z};
+  double sum = 0;
+  if (wanted) {
+    const double want[3] = {wanted->x, wanted->y, wanted->z};
+    for (int i = 0; i < 3; ++i)
+      if (want[i] > 0 && got[i] > 0) sum += std::pow(std::log(got[i] / want[i]), 2);
+  } else if (const CategoryInfo* c = FindCategory(category)) {
+    const double lo[3] = {c->size_min.x, c->size_min.y, c->size_min.z};
+    const double hi[3] = {c->size_max.x, c->size_max.y, c->size_max.z};
+    for (int i = 0; i < 3; ++i)
+      if (got[i] > 0 && lo[i] > 0) sum += std::pow(LogOutside(got[i], lo[i], hi[i]), 2);
+  } else {
+    return 1.0;
+  }
+  return std::exp(-sum / (2 * sigma * sigma));
+}
+
+Result<AssetRetriever> AssetRetriever::Build(std::vector<AssetRecord> candidates, std::shared_ptr<const Embedder> embedder) {
+  std::vector<std::string> texts;
+  texts.reserve(candidates.size());
+  for (const AssetRecord& a : candidates) texts.push_back(AssetText(a));
+  Result<std::vector<Embedding>> vectors = embedder->Embed(texts);
+  if (!vectors.ok()) return Error{vectors.error()};
+  AssetRetriever r;
+  r.candidates_ = std::make_shared<const std::vector<AssetRecord>>(std::move(candidates));
+  r.vectors_ = std::make_shared<const std::vector<Embedding>>(std::move(*vectors));
+  r.embedder_ = std::move(embedder);
+  return r;
+}
+
+Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, const RetrievalOptions& options) const {
+  if (std::string problem = options.Check(); !problem.empty()) return Error{"retrieval options: " + problem};
+  RetrievalQuery query = query_in;
+  if (query.category.empty())
+    if (const CategoryInfo* c = CategoryInPhrase(query.text)) query.category = std::string(c->name);
+  RetrievalResult result;
+  result.category = query.category;
+
+  Result<std::vector<Embedding>> q = embedder_->Embed({query.Text()});
+  if (!q.ok()) return Error{q.error()};
+  const Embedding& qv = (*q)[0];
+
+  bool category_seen = false;
+  for (std::size_t i = 0; i < candidates_->size(); ++i) {
+    const AssetRecord& a = (*candidates_)[i];
+    if (query.needs_surface && a.support_surfaces.empty()) continue;
+    if (query.needs_cavity && a.cavities.empty()) continue;
+    if (query.placement && a.placement != *query.placement) continue;
+    bool same_category = !query.category.empty() && a.category == query.category;
+    category_seen = category_seen || same_category;
+    RankedAsset r;
+    r.asset = &a;
+    r.similarity = Cosine(qv, (*vectors_)[i]);
+    r.size_fit = SizeFit(a.size, query.size, query.category.empty() ? a.category : query.category, options.size_tolerance);
+    bool other_room = !query.room_type.empty() && !a.room_types.empty() &&
+                      std::find(a.room_types.begin(), a.room_types.end(), query.room_type) == a.room_types.end();
+    r.score = options.similarity_weight * r.similarity + options.size_weight * r.size_fit +
+              (same_category ? options.category_weight : 0.0) - (other_room ? options.room_weight : 0.0);
+    result.ranked.push_back(r);
+  }
+  // Best first; ties by id so the order never depends on the candidates' order.
+  std::sort(result.ranked.begin(), result.ranked.end(), [](const RankedAsset& x, const RankedAsset& y) {
+    return x.score != y.score ? x.score > y.score : x.asset->id < y.asset->id;
+  });
+  if (result.ranked.size() > static_cast<std::size_t>(options.k)) result.ranked.resize(options.k);
+  if (!query.category.empty() && !category_seen) {
+    result.category_missing = true;
+    if (const CategoryInfo* c = FindCategory(query.category)) result.fallback_generator = std::string(c->generator);
+  }
+  return result;
+}
+
+}  // namespace villa

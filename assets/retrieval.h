@@ -1,0 +1,83 @@
+#pragma once
+// Retrieval: which asset to use for an object of a room's scene graph. Candidates (library records and
+// procedural offers alike) are ranked by the cosine similarity of text embeddings (the query's text
+// against each asset's name, category, tags), plus how well the asset's size fits the wanted size (or
+// the category's usual sizes), plus a bonus for the exact category; hard requirements (a surface, a
+// cavity, a placement) filter first. When the library has nothing of the wanted category, the result
+// names the category's procedural generator to fall back to.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assets/asset.h"
+#include "assets/embedder.h"
+#include "util/result.h"
+
+namespace villa {
+
+struct RetrievalQuery {
+  std::string category;        // vocabulary name ("sofa"); empty: read from `text` (CategoryInPhrase)
+  std::string text;            // free words ("dark leather couch"), may be empty
+  std::string room_type;       // layout category ("living-room"); assets made for other rooms lose a little
+  std::optional<Vec3> size;    // wanted size, m (w, d, h in the asset frame)
+  bool needs_surface = false;  // must offer a support surface (something goes on top)
+  bool needs_cavity = false;   // must offer a cavity (something goes inside)
+  std::optional<Placement> placement;  // must be placed this way
+
+  // The text that is embedded for the query: category words, free words, room words.
+  std::string Text() const;
+};
+
+struct RetrievalOptions {
+  int k = 5;                       // answers wanted, >= 1
+  double similarity_weight = 1.0;  // weight of the cosine similarity in [-1, 1], >= 0
+  double size_weight = 0.35;       // weight of the size fit in [0, 1], >= 0
+  double category_weight = 0.25;   // bonus when the asset's category is the query's, >= 0
+  double room_weight = 0.1;        // penalty when the asset names room types and not the query's, >= 0
+  // Size fit: exp(-sum over axes of ln(asset/wanted)^2 / (2 ln(tolerance)^2)); a side off by the
+  // tolerance factor alone scores 0.61. > 1. 1.25 is the largest scale the solver may apply (SCENE.md).
+  double size_tolerance = 1.25;
+
+  std::string Check() const;  // empty when usable
+};
+
+struct RankedAsset {
+  const AssetRecord* asset = nullptr;  // into the retriever's candidates
+  double score = 0.0;
+  double similarity = 0.0;
+  double size_fit = 0.0;
+};
+
+struct RetrievalResult {
+  std::string category;               // the query's category (given or read from its text), may be empty
+  std::vector<RankedAsset> ranked;    // best first, at most k
+  // No candidate of the query's category passed the filters: use this generator (category.h), or
+  // nothing when the category has none.
+  bool category_missing = false;
+  std::string fallback_generator;
+};
+
+// The text embedded for an asset: "Couch. sofa. Blend Swap, Sofa. Living room".
+std::string AssetText(const AssetRecord& asset);
+
+// Size fit in [0, 1] of `size` against a wanted size, or against the category's usual range when no size
+// is wanted (1 inside it); 1 when neither is known.
+double SizeFit(const Vec3& size, const std::optional<Vec3>& wanted, const std::string& category, double tolerance);
+
+class AssetRetriever {
+ public:
+  // Embeds every candidate once (a CachedEmbedder keeps them across runs). The candidates are copied.
+  static Result<AssetRetriever> Build(std::vector<AssetRecord> candidates, std::shared_ptr<const Embedder> embedder);
+
+  const std::vector<AssetRecord>& candidates() const { return *candidates_; }
+  // Ranks the candidates for one query (embeds its text). Safe from several threads.
+  Result<RetrievalResult> Rank(const RetrievalQuery& query, const RetrievalOptions& options = {}) const;
+
+ private:
+  std::shared_ptr<const std::vector<AssetRecord>> candidates_;
+  std::shared_ptr<const std::vector<Embedding>> vectors_;
+  std::shared_ptr<const Embedder> embedder_;
+};
+
+}  // namespace villa
