@@ -177,11 +177,16 @@ std::vector<Level> MeshLevels(const TriangleMesh& mesh, const RayCaster& rays, V
     if (twice_area <= 0 || std::abs(n.z) / twice_area <= o.min_normal_z) continue;
     Vec3 centroid = (a + b + c) * (1.0 / 3);
     if (centroid.z < o.min_z) continue;
-    if (auto hit = rays.Cast(centroid + Vec3{0, 0, kLift}, kUp, 1e6)) {
-      if (hit->t + kLift < o.min_clearance) continue;
-      // The first face above looks up (outward normal along the ray): the ray runs inside a solid.
-      if (orientation * hit->normal.z > 0.5) continue;
+    // Four probes: the centroid and the points halfway to each corner; a face counts when at least two
+    // have room above (a large shelf face stays a surface where a divider stands on part of it).
+    int clear = 0;
+    for (const Vec3& p : {centroid, (centroid + a) * 0.5, (centroid + b) * 0.5, (centroid + c) * 0.5}) {
+      auto hit = rays.Cast(p + Vec3{0, 0, kLift}, kUp, 1e6);
+      // Room above: nothing, or the first face met looks down at it (a face that looks up, along the
+      // ray, is the far side of a solid the probe started inside).
+      if (!hit || (hit->t + kLift >= o.min_clearance && orientation * hit->normal.z <= 0.5)) ++clear;
     }
+    if (clear < 2) continue;
     candidates.push_back({centroid.z, static_cast<int>(t), twice_area / 2});
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& p, const Candidate& q) { return p.z < q.z; });
