@@ -68,6 +68,9 @@ const CategoryInfo* HeadCategory(const std::vector<Word>& words) {
 
 const CategoryInfo* CategoryInPhrase(std::string_view phrase) {
   std::vector<Word> words = Words(std::string(phrase));
+  // Leading articles name nothing ("a stack of books").
+  static const std::set<std::string> kArticles = {"a", "an", "the", "some"};
+  while (!words.empty() && kArticles.count(words.front().lower)) words.erase(words.begin());
   if (const CategoryInfo* c = CategoryForWord(Join(words, 0, words.size()))) return c;
   std::vector<Word> segment = FirstSegment(words);
   if (const CategoryInfo* c = HeadCategory(segment)) return c;

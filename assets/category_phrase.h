@@ -11,7 +11,8 @@ namespace villa {
 
 // The phrase is read up to its first comma, joining word ("with", "and", "on", "for", "in", "of") or
 // number ("Sofa 2 seats", "TV 16:9"); trailing capitalised words that name nothing ("Frame Chambord",
-// "Convertible sofa BZ") are dropped one by one. The whole phrase is tried first ("chest of drawers").
+// "Convertible sofa BZ") are dropped one by one. The whole phrase, less leading articles, is tried first
+// ("chest of drawers", "a stack of books").
 // nullptr when no category is named.
 const CategoryInfo* CategoryInPhrase(std::string_view phrase);
 

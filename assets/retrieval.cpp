@@ -43,7 +43,7 @@ std::string RetrievalQuery::Text() const {
 
 std::string RetrievalOptions::Check() const {
   if (k < 1) return "k must be >= 1, got " + std::to_string(k);
-  if (!(similarity_weight >= 0 && size_weight >= 0 && category_weight >= 0 && room_weight >= 0))
+  if (!(similarity_weight >= 0 && size_weight >= 0 && range_weight >= 0 && category_weight >= 0 && room_weight >= 0))
     return "weights must be >= 0";
   if (!(size_tolerance > 1)) return "size_tolerance must be > 1";
   return "";
@@ -118,7 +118,7 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
     r.size_fit = SizeFit(a.size, query.size, query.category.empty() ? a.category : query.category, options.size_tolerance);
     bool other_room = !query.room_type.empty() && !a.room_types.empty() &&
                       std::find(a.room_types.begin(), a.room_types.end(), query.room_type) == a.room_types.end();
-    r.score = options.similarity_weight * r.similarity + options.size_weight * r.size_fit +
+    r.score = options.similarity_weight * r.similarity + (query.size ? options.size_weight : options.range_weight) * r.size_fit +
               (same_category ? options.category_weight : 0.0) - (other_room ? options.room_weight : 0.0);
     result.ranked.push_back(r);
   }

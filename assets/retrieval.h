@@ -1,8 +1,8 @@
 #pragma once
 // Retrieval: which asset to use for an object of a room's scene graph. Candidates (library records and
 // procedural offers alike) are ranked by the cosine similarity of text embeddings (the query's text
-// against each asset's name, category, tags), plus how well the asset's size fits the wanted size (or
-// the category's usual sizes), plus a bonus for the exact category; hard requirements (a surface, a
+// against each asset's name, category, tags), plus how well the asset's size fits the wanted size (or,
+// more weakly, the category's usual sizes), plus a bonus for the exact category; hard requirements (a surface, a
 // cavity, a placement) filter first. When the library has nothing of the wanted category, the result
 // names the category's procedural generator to fall back to.
 #include <memory>
@@ -32,7 +32,8 @@ struct RetrievalQuery {
 struct RetrievalOptions {
   int k = 5;                       // answers wanted, >= 1
   double similarity_weight = 1.0;  // weight of the cosine similarity in [-1, 1], >= 0
-  double size_weight = 0.35;       // weight of the size fit in [0, 1], >= 0
+  double size_weight = 0.35;       // weight of the size fit in [0, 1] against the query's size, >= 0
+  double range_weight = 0.15;      // the same against the category's usual sizes (no size asked), >= 0
   double category_weight = 0.25;   // bonus when the asset's category is the query's, >= 0
   double room_weight = 0.1;        // penalty when the asset names room types and not the query's, >= 0
   // Size fit: exp(-sum over axes of ln(asset/wanted)^2 / (2 ln(tolerance)^2)); a side off by the
