@@ -121,24 +121,32 @@ double CellFor(Vec3 size) { return std::max(0.01, std::max(size.x, size.y) / 300
 struct Level {
   double z = 0.0;
   Ring polygon;
-  std::vector<Point> samples;  // cell centres spread over the piece
+  std::vector<Vec3> samples;   // cell centres spread over the piece, at the height of the geometry there
   std::string from;
   double area = 0.0;  // m2 covered
 };
 
-std::vector<Point> Samples(const Footprint& grid, const std::vector<std::pair<int, int>>& cells) {
-  std::vector<Point> out;
+// `height(i, j)`: where the geometry is in that cell (a drop surface's cushions rise above its height).
+template <class Height>
+std::vector<Vec3> Samples(const Footprint& grid, const std::vector<std::pair<int, int>>& cells, Height&& height) {
+  std::vector<Vec3> out;
   std::size_t stride = std::max<std::size_t>(1, cells.size() / 16);
-  for (std::size_t k = stride / 2; k < cells.size(); k += stride) out.push_back(grid.Centre(cells[k].first, cells[k].second));
+  for (std::size_t k = stride / 2; k < cells.size(); k += stride) {
+    auto [i, j] = cells[k];
+    Point p = grid.Centre(i, j);
+    out.push_back({p.x, p.y, height(i, j)});
+  }
   return out;
 }
 
-void AddPieces(const Footprint& grid, double z, const std::string& from, const AffordanceOptions& o, std::vector<Level>* out) {
+template <class Height>
+void AddPieces(const Footprint& grid, double z, const std::string& from, const AffordanceOptions& o, Height&& height,
+               std::vector<Level>* out) {
   double cell_area = grid.cell() * grid.cell();
   for (const auto& cells : grid.Pieces()) {
     double area = cells.size() * cell_area;
     if (area < o.min_part_area) continue;
-    Level level{z, grid.Hull(cells), Samples(grid, cells), from, area};
+    Level level{z, grid.Hull(cells), Samples(grid, cells, height), from, area};
     if (level.polygon.size() < 3) continue;
     Box3 box;
     for (const Point& p : level.polygon) box.Add(Vec3{p.x, p.y, 0});
@@ -151,8 +159,8 @@ void AddPieces(const Footprint& grid, double z, const std::string& from, const A
 // height above it when fewer than half the samples hit anything (a top surface, `*top` set).
 double ClearHeight(const RayCaster& rays, const Level& level, const AffordanceOptions& o, bool* top) {
   std::vector<double> hits;
-  for (const Point& p : level.samples)
-    if (auto hit = rays.Cast({p.x, p.y, level.z + kLift}, kUp, 1e6)) hits.push_back(hit->t + kLift);
+  for (const Vec3& p : level.samples)
+    if (auto hit = rays.Cast(p + Vec3{0, 0, kLift}, kUp, 1e6)) hits.push_back(p.z - level.z + hit->t + kLift);
   *top = hits.size() * 2 < level.samples.size();
   if (*top) return std::max(o.storey_clear_height - level.z, o.min_clearance);
   std::sort(hits.begin(), hits.end());
@@ -208,7 +216,7 @@ std::vector<Level> MeshLevels(const TriangleMesh& mesh, const RayCaster& rays, V
     }
     double z = total > 0 ? weighted / total : candidates[begin].z;
     std::vector<Level> pieces;
-    AddPieces(grid, z, "mesh", o, &pieces);
+    AddPieces(grid, z, "mesh", o, [z](int, int) { return z; }, &pieces);
     double covered = 0;
     for (const Level& l : pieces) covered += l.area;
     if (covered >= o.min_share * footprint)
@@ -222,6 +230,7 @@ std::vector<Level> MeshLevels(const TriangleMesh& mesh, const RayCaster& rays, V
 // within the tolerance of that height.
 std::vector<Level> DropLevels(const RayCaster& rays, Vec3 size, double drop, double min_share, const AffordanceOptions& o) {
   Footprint grid(size, std::max(CellFor(size), std::max(size.x, size.y) / 100.0));
+  std::vector<double> heights(static_cast<std::size_t>(grid.nx()) * grid.ny(), drop);
   double start = std::min(drop + o.min_clearance, size.z + o.min_clearance);
   for (int j = 0; j < grid.ny(); ++j)
     for (int i = 0; i < grid.nx(); ++i) {
@@ -229,10 +238,14 @@ std::vector<Level> DropLevels(const RayCaster& rays, Vec3 size, double drop, dou
       if (std::abs(p.x) > size.x / 2 || std::abs(p.y) > size.y / 2) continue;
       auto hit = rays.Cast({p.x, p.y, start}, kDown, start + 1.0);
       if (!hit || std::abs(hit->normal.z) < 0.7) continue;
-      if (std::abs((start - hit->t) - drop) <= o.drop_tolerance) grid.Set(i, j);
+      double z = start - hit->t;
+      if (std::abs(z - drop) > o.drop_tolerance) continue;
+      grid.Set(i, j);
+      heights[static_cast<std::size_t>(j) * grid.nx() + i] = std::max(z, drop);
     }
   std::vector<Level> pieces;
-  AddPieces(grid, drop, "drop_on_top", o, &pieces);
+  AddPieces(grid, drop, "drop_on_top", o, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * grid.nx() + i]; },
+            &pieces);
   double covered = 0;
   for (const Level& l : pieces) covered += l.area;
   if (covered < min_share * size.x * size.y) return {};

@@ -14,15 +14,25 @@ std::string Spaced(std::string text) {
   return text;
 }
 
-double Cosine(const Embedding& a, const Embedding& b) {
-  if (a.size() != b.size()) return 0.0;
-  double dot = 0, na = 0, nb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    dot += static_cast<double>(a[i]) * b[i];
-    na += static_cast<double>(a[i]) * a[i];
-    nb += static_cast<double>(b[i]) * b[i];
-  }
-  return na > 0 && nb > 0 ? dot / std::sqrt(na * nb) : 0.0;
+double Norm(const Embedding& a) {
+  double n = 0;
+  for (float v : a) n += static_cast<double>(v) * v;
+  return std::sqrt(n);
+}
+
+// Cosine of two vectors whose norms are known (0 when either is zero or their lengths differ).
+double Cosine(const Embedding& a, double norm_a, const Embedding& b, double norm_b) {
+  if (a.size() != b.size() || norm_a == 0 || norm_b == 0) return 0.0;
+  // Eight running sums, added in a fixed order: the compiler may vectorise them, and the result is the
+  // same on every machine (no reassociation is left to -ffast-math).
+  float sum[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  std::size_t i = 0;
+  for (; i + 8 <= a.size(); i += 8)
+    for (int k = 0; k < 8; ++k) sum[k] += a[i + k] * b[i + k];
+  for (; i < a.size(); ++i) sum[0] += a[i] * b[i];
+  double dot = 0;
+  for (float s : sum) dot += s;
+  return dot / (norm_a * norm_b);
 }
 
 // ln(value / nearest end of [lo, hi]); 0 inside.
@@ -87,6 +97,9 @@ Result<AssetRetriever> AssetRetriever::Build(std::vector<AssetRecord> candidates
   if (!vectors.ok()) return Error{vectors.error()};
   AssetRetriever r;
   r.candidates_ = std::make_shared<const std::vector<AssetRecord>>(std::move(candidates));
+  std::vector<double> norms;
+  for (const Embedding& v : *vectors) norms.push_back(Norm(v));
+  r.norms_ = std::make_shared<const std::vector<double>>(std::move(norms));
   r.vectors_ = std::make_shared<const std::vector<Embedding>>(std::move(*vectors));
   r.embedder_ = std::move(embedder);
   return r;
@@ -103,6 +116,7 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
   Result<std::vector<Embedding>> q = embedder_->Embed({query.Text()});
   if (!q.ok()) return Error{q.error()};
   const Embedding& qv = (*q)[0];
+  const double qn = Norm(qv);
 
   bool category_seen = false;
   for (std::size_t i = 0; i < candidates_->size(); ++i) {
@@ -114,7 +128,7 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
     category_seen = category_seen || same_category;
     RankedAsset r;
     r.asset = &a;
-    r.similarity = Cosine(qv, (*vectors_)[i]);
+    r.similarity = Cosine(qv, qn, (*vectors_)[i], (*norms_)[i]);
     r.size_fit = SizeFit(a.size, query.size, query.category.empty() ? a.category : query.category, options.size_tolerance);
     bool other_room = !query.room_type.empty() && !a.room_types.empty() &&
                       std::find(a.room_types.begin(), a.room_types.end(), query.room_type) == a.room_types.end();

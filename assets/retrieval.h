@@ -78,6 +78,7 @@ class AssetRetriever {
  private:
   std::shared_ptr<const std::vector<AssetRecord>> candidates_;
   std::shared_ptr<const std::vector<Embedding>> vectors_;
+  std::shared_ptr<const std::vector<double>> norms_;
   std::shared_ptr<const Embedder> embedder_;
 };
 
