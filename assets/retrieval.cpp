@@ -113,29 +113,35 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
   RetrievalResult result;
   result.category = query.category;
 
-  Result<std::vector<Embedding>> q = embedder_->Embed({query.Text()});
-  if (!q.ok()) return Error{q.error()};
-  const Embedding& qv = (*q)[0];
+  // The query's text and the offered assets' texts in one call to the embedder.
+  auto offered = std::make_shared<std::vector<AssetRecord>>(offer_ ? offer_(query) : std::vector<AssetRecord>{});
+  std::vector<std::string> texts{query.Text()};
+  for (const AssetRecord& a : *offered) texts.push_back(AssetText(a));
+  Result<std::vector<Embedding>> embedded = embedder_->Embed(texts);
+  if (!embedded.ok()) return Error{embedded.error()};
+  const Embedding& qv = (*embedded)[0];
   const double qn = Norm(qv);
+  result.offered = offered;
 
   bool category_seen = false;
-  for (std::size_t i = 0; i < candidates_->size(); ++i) {
-    const AssetRecord& a = (*candidates_)[i];
-    if (query.needs_surface && a.support_surfaces.empty()) continue;
-    if (query.needs_cavity && a.cavities.empty()) continue;
-    if (query.placement && a.placement != *query.placement) continue;
+  auto consider = [&](const AssetRecord& a, const Embedding& v, double norm, bool from_library) {
+    if (query.needs_surface && a.support_surfaces.empty()) return;
+    if (query.needs_cavity && a.cavities.empty()) return;
+    if (query.placement && a.placement != *query.placement) return;
     bool same_category = !query.category.empty() && a.category == query.category;
-    category_seen = category_seen || same_category;
+    if (from_library) category_seen = category_seen || same_category;
     RankedAsset r;
     r.asset = &a;
-    r.similarity = Cosine(qv, qn, (*vectors_)[i], (*norms_)[i]);
+    r.similarity = Cosine(qv, qn, v, norm);
     r.size_fit = SizeFit(a.size, query.size, query.category.empty() ? a.category : query.category, options.size_tolerance);
     bool other_room = !query.room_type.empty() && !a.room_types.empty() &&
                       std::find(a.room_types.begin(), a.room_types.end(), query.room_type) == a.room_types.end();
     r.score = options.similarity_weight * r.similarity + (query.size ? options.size_weight : options.range_weight) * r.size_fit +
               (same_category ? options.category_weight : 0.0) - (other_room ? options.room_weight : 0.0);
     result.ranked.push_back(r);
-  }
+  };
+  for (std::size_t i = 0; i < candidates_->size(); ++i) consider((*candidates_)[i], (*vectors_)[i], (*norms_)[i], true);
+  for (std::size_t i = 0; i < offered->size(); ++i) consider((*offered)[i], (*embedded)[i + 1], Norm((*embedded)[i + 1]), false);
   // Best first; ties by id so the order never depends on the candidates' order.
   std::sort(result.ranked.begin(), result.ranked.end(), [](const RankedAsset& x, const RankedAsset& y) {
     return x.score != y.score ? x.score > y.score : x.asset->id < y.asset->id;

@@ -5,6 +5,7 @@
 // more weakly, the category's usual sizes), plus a bonus for the exact category; hard requirements (a surface, a
 // cavity, a placement) filter first. When the library has nothing of the wanted category, the result
 // names the category's procedural generator to fall back to.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,7 +45,8 @@ struct RetrievalOptions {
 };
 
 struct RankedAsset {
-  const AssetRecord* asset = nullptr;  // into the retriever's candidates
+  // Into the retriever's candidates, or into `RetrievalResult::offered` for an offered asset.
+  const AssetRecord* asset = nullptr;
   double score = 0.0;
   double similarity = 0.0;
   double size_fit = 0.0;
@@ -53,11 +55,17 @@ struct RankedAsset {
 struct RetrievalResult {
   std::string category;               // the query's category (given or read from its text), may be empty
   std::vector<RankedAsset> ranked;    // best first, at most k
-  // No candidate of the query's category passed the filters: use this generator (category.h), or
-  // nothing when the category has none.
+  // No library candidate of the query's category passed the filters: use this generator (category.h),
+  // or nothing when the category has none. (Offered assets may still rank: they are that fallback.)
   bool category_missing = false;
   std::string fallback_generator;
+  // Assets made for this query by the retriever's offer (procedural ones), ranked with the rest.
+  std::shared_ptr<const std::vector<AssetRecord>> offered;
 };
+
+// Assets made on demand for one query: a procedural generator's asset for the query's category and size
+// (assets/procedural.h), so that procedural assets compete in the same ranking as the library's.
+using CandidateOffer = std::function<std::vector<AssetRecord>(const RetrievalQuery& query)>;
 
 // The text embedded for an asset: "Couch. sofa. Blend Swap, Sofa. Living room".
 std::string AssetText(const AssetRecord& asset);
@@ -72,6 +80,8 @@ class AssetRetriever {
   static Result<AssetRetriever> Build(std::vector<AssetRecord> candidates, std::shared_ptr<const Embedder> embedder);
 
   const std::vector<AssetRecord>& candidates() const { return *candidates_; }
+  // Adds the offer's assets to every ranking (embedded per query; put the embedder behind a cache).
+  void SetOffer(CandidateOffer offer) { offer_ = std::move(offer); }
   // Ranks the candidates for one query (embeds its text). Safe from several threads.
   Result<RetrievalResult> Rank(const RetrievalQuery& query, const RetrievalOptions& options = {}) const;
 
@@ -80,6 +90,7 @@ class AssetRetriever {
   std::shared_ptr<const std::vector<Embedding>> vectors_;
   std::shared_ptr<const std::vector<double>> norms_;
   std::shared_ptr<const Embedder> embedder_;
+  CandidateOffer offer_;
 };
 
 }  // namespace villa

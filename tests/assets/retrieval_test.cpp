@@ -185,6 +185,38 @@ TEST_CASE("A category the library lacks names its procedural generator", "[asset
   CHECK(retriever.Rank(q)->category_missing);
 }
 
+TEST_CASE("Offered assets compete in the same ranking and fill a category the library lacks", "[assets][retrieval]") {
+  AssetRetriever retriever = Retriever();
+  int offers = 0;
+  // A test double of the procedural generators: one asset of the query's category, at the query's size.
+  retriever.SetOffer([&](const RetrievalQuery& q) {
+    ++offers;
+    std::vector<AssetRecord> out;
+    if (q.category.empty()) return out;
+    AssetRecord r = Rec("unused", "Procedural " + q.category, q.category, q.size.value_or(Vec3{0.3, 0.2, 0.25}));
+    r.id = "proc:" + q.category + "?seed=1";
+    r.source.kind = "procedural";
+    out.push_back(r);
+    return out;
+  });
+  RetrievalQuery q;
+  q.text = "a stack of books";
+  auto books = retriever.Rank(q);
+  REQUIRE(books.ok());
+  REQUIRE_FALSE(books->ranked.empty());
+  CHECK(books->ranked[0].asset->id == "proc:books?seed=1");
+  CHECK(books->ranked[0].asset == &books->offered->at(0));  // the result keeps the offered record alive
+  CHECK(books->category_missing);                            // the library itself has none
+  CHECK(books->fallback_generator == "books");
+  // Where the library has the category, its asset still competes and may win on its name.
+  q.text = "bedside table";
+  auto nightstand = retriever.Rank(q);
+  CHECK(nightstand->ranked[0].asset->id == "sh3d:Test#bedsideTable");
+  CHECK(nightstand->ranked[1].asset->id == "proc:nightstand?seed=1");
+  CHECK_FALSE(nightstand->category_missing);
+  CHECK(offers == 2);
+}
+
 TEST_CASE("The lexical embedding is deterministic and meets synonyms through the vocabulary", "[assets][retrieval]") {
   LexicalEmbedder e;
   CHECK(e.Name() == "lexical-v1/1024");
