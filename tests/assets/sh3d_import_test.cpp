@@ -169,7 +169,7 @@ TEST_CASE("A bookcase's shelf levels are its support surfaces and each compartme
   CHECK_FALSE(r.mesh.watertight);
 }
 
-TEST_CASE("Placement follows the category and SH3D's elevation; small things need a parent", "[assets][sh3d]") {
+TEST_CASE("Placement follows the category and SH3D's elevation, and small things need a parent", "[assets][sh3d]") {
   Sh3dPieceImport mug = ImportFixturePiece("Test#mug");
   REQUIRE(mug.outcome == Sh3dPieceImport::Outcome::kImported);
   CHECK(mug.record->category == "cup");
@@ -196,7 +196,7 @@ TEST_CASE("modelRotation turns the model before the y-up to z-up map", "[assets]
   CHECK(table.mesh.Merged().SignedVolume() == Approx(0.4 * 0.6 * 0.5));
 }
 
-TEST_CASE("Doors, windows and staircases are skipped; a bad model is reported with its entry and line", "[assets][sh3d]") {
+TEST_CASE("Doors, windows and staircases are skipped, and a bad model is reported with its entry and line", "[assets][sh3d]") {
   Sh3dPieceImport door = ImportFixturePiece("Test#door");
   CHECK(door.outcome == Sh3dPieceImport::Outcome::kSkipped);
   CHECK(door.reason == "door or window: the building makes these");
@@ -280,7 +280,7 @@ TEST_CASE("Importing a folder writes the library, the report, and does it again 
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("A failed import leaves the old library; a re-import keeps what it did not make", "[assets][sh3d]") {
+TEST_CASE("A failed import leaves the old library, and a re-import keeps what it did not make", "[assets][sh3d]") {
   auto dir = FreshDir("import_keep");
   WriteFixtureLibrary(dir / "from");
   REQUIRE(ImportSh3dLibraries(dir / "from", dir / "lib", {}).ok());
