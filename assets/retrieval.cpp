@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "assets/category.h"
 #include "assets/category_phrase.h"
@@ -20,20 +21,32 @@ double Norm(const Embedding& a) {
   return std::sqrt(n);
 }
 
-// Cosine of two vectors whose norms are known (0 when either is zero or their lengths differ).
-double Cosine(const Embedding& a, double norm_a, const Embedding& b, double norm_b) {
-  if (a.size() != b.size() || norm_a == 0 || norm_b == 0) return 0.0;
-  // Eight running sums, added in a fixed order: the compiler may vectorise them, and the result is the
-  // same on every machine (no reassociation is left to -ffast-math).
-  float sum[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-  std::size_t i = 0;
-  for (; i + 8 <= a.size(); i += 8)
-    for (int k = 0; k < 8; ++k) sum[k] += a[i + k] * b[i + k];
-  for (; i < a.size(); ++i) sum[0] += a[i] * b[i];
-  double dot = 0;
-  for (float s : sum) dot += s;
-  return dot / (norm_a * norm_b);
-}
+}  // namespace
+
+// A candidate's vector by its nonzero entries: the lexical embedding has a few dozen of 1,024, and a
+// ranking then reads kilobytes instead of megabytes; dense embeddings lose nothing but memory.
+struct AssetRetriever::SparseVector {
+  std::vector<std::uint32_t> index;
+  std::vector<float> value;
+  std::size_t dimensions = 0;
+  double norm = 0.0;
+  explicit SparseVector(const Embedding& v) : dimensions(v.size()), norm(Norm(v)) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (v[i] != 0.0f) {
+        index.push_back(static_cast<std::uint32_t>(i));
+        value.push_back(v[i]);
+      }
+  }
+  // Cosine with a dense query of known norm (0 when either is zero or their lengths differ).
+  double Cosine(const Embedding& query, double query_norm) const {
+    if (query.size() != dimensions || norm == 0 || query_norm == 0) return 0.0;
+    double dot = 0;
+    for (std::size_t k = 0; k < index.size(); ++k) dot += static_cast<double>(value[k]) * query[index[k]];
+    return dot / (norm * query_norm);
+  }
+};
+
+namespace {
 
 // ln(value / nearest end of [lo, hi]); 0 inside.
 double LogOutside(double value, double lo, double hi) {
@@ -71,6 +84,10 @@ std::string AssetText(const AssetRecord& a) {
 }
 
 double SizeFit(const Vec3& size, const std::optional<Vec3>& wanted, const std::string& category, double tolerance) {
+  return SizeFitAgainst(size, wanted, FindCategory(category), tolerance);
+}
+
+double SizeFitAgainst(const Vec3& size, const std::optional<Vec3>& wanted, const CategoryInfo* c, double tolerance) {
   const double sigma = std::log(tolerance);
   const double got[3] = {size.x, size.y, size.z};
   double sum = 0;
@@ -78,7 +95,7 @@ double SizeFit(const Vec3& size, const std::optional<Vec3>& wanted, const std::s
     const double want[3] = {wanted->x, wanted->y, wanted->z};
     for (int i = 0; i < 3; ++i)
       if (want[i] > 0 && got[i] > 0) sum += std::pow(std::log(got[i] / want[i]), 2);
-  } else if (const CategoryInfo* c = FindCategory(category)) {
+  } else if (c) {
     const double lo[3] = {c->size_min.x, c->size_min.y, c->size_min.z};
     const double hi[3] = {c->size_max.x, c->size_max.y, c->size_max.z};
     for (int i = 0; i < 3; ++i)
@@ -97,10 +114,10 @@ Result<AssetRetriever> AssetRetriever::Build(std::vector<AssetRecord> candidates
   if (!vectors.ok()) return Error{vectors.error()};
   AssetRetriever r;
   r.candidates_ = std::make_shared<const std::vector<AssetRecord>>(std::move(candidates));
-  std::vector<double> norms;
-  for (const Embedding& v : *vectors) norms.push_back(Norm(v));
-  r.norms_ = std::make_shared<const std::vector<double>>(std::move(norms));
-  r.vectors_ = std::make_shared<const std::vector<Embedding>>(std::move(*vectors));
+  std::vector<SparseVector> sparse;
+  sparse.reserve(vectors->size());
+  for (const Embedding& v : *vectors) sparse.emplace_back(v);
+  r.vectors_ = std::make_shared<const std::vector<SparseVector>>(std::move(sparse));
   r.embedder_ = std::move(embedder);
   return r;
 }
@@ -124,7 +141,8 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
   result.offered = offered;
 
   bool category_seen = false;
-  auto consider = [&](const AssetRecord& a, const Embedding& v, double norm, bool from_library) {
+  const CategoryInfo* query_category = FindCategory(query.category);
+  auto consider = [&](const AssetRecord& a, const SparseVector& v, bool from_library) {
     if (query.needs_surface && a.support_surfaces.empty()) return;
     if (query.needs_cavity && a.cavities.empty()) return;
     if (query.placement && a.placement != *query.placement) return;
@@ -132,21 +150,25 @@ Result<RetrievalResult> AssetRetriever::Rank(const RetrievalQuery& query_in, con
     if (from_library) category_seen = category_seen || same_category;
     RankedAsset r;
     r.asset = &a;
-    r.similarity = Cosine(qv, qn, v, norm);
-    r.size_fit = SizeFit(a.size, query.size, query.category.empty() ? a.category : query.category, options.size_tolerance);
+    r.similarity = v.Cosine(qv, qn);
+    // Usual sizes of the query's category, or of the asset's own when the query names none.
+    const CategoryInfo* usual = query.size ? nullptr : query.category.empty() ? FindCategory(a.category) : query_category;
+    r.size_fit = SizeFitAgainst(a.size, query.size, usual, options.size_tolerance);
     bool other_room = !query.room_type.empty() && !a.room_types.empty() &&
                       std::find(a.room_types.begin(), a.room_types.end(), query.room_type) == a.room_types.end();
     r.score = options.similarity_weight * r.similarity + (query.size ? options.size_weight : options.range_weight) * r.size_fit +
               (same_category ? options.category_weight : 0.0) - (other_room ? options.room_weight : 0.0);
     result.ranked.push_back(r);
   };
-  for (std::size_t i = 0; i < candidates_->size(); ++i) consider((*candidates_)[i], (*vectors_)[i], (*norms_)[i], true);
-  for (std::size_t i = 0; i < offered->size(); ++i) consider((*offered)[i], (*embedded)[i + 1], Norm((*embedded)[i + 1]), false);
+  for (std::size_t i = 0; i < candidates_->size(); ++i) consider((*candidates_)[i], (*vectors_)[i], true);
+  for (std::size_t i = 0; i < offered->size(); ++i) consider((*offered)[i], SparseVector((*embedded)[i + 1]), false);
   // Best first; ties by id so the order never depends on the candidates' order.
-  std::sort(result.ranked.begin(), result.ranked.end(), [](const RankedAsset& x, const RankedAsset& y) {
-    return x.score != y.score ? x.score > y.score : x.asset->id < y.asset->id;
-  });
-  if (result.ranked.size() > static_cast<std::size_t>(options.k)) result.ranked.resize(options.k);
+  std::size_t keep = std::min(result.ranked.size(), static_cast<std::size_t>(options.k));
+  std::partial_sort(result.ranked.begin(), result.ranked.begin() + keep, result.ranked.end(),
+                    [](const RankedAsset& x, const RankedAsset& y) {
+                      return x.score != y.score ? x.score > y.score : x.asset->id < y.asset->id;
+                    });
+  result.ranked.resize(keep);
   if (!query.category.empty() && !category_seen) {
     result.category_missing = true;
     if (const CategoryInfo* c = FindCategory(query.category)) result.fallback_generator = std::string(c->generator);

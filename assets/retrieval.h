@@ -73,6 +73,8 @@ std::string AssetText(const AssetRecord& asset);
 // Size fit in [0, 1] of `size` against a wanted size, or against the category's usual range when no size
 // is wanted (1 inside it); 1 when neither is known.
 double SizeFit(const Vec3& size, const std::optional<Vec3>& wanted, const std::string& category, double tolerance);
+struct CategoryInfo;
+double SizeFitAgainst(const Vec3& size, const std::optional<Vec3>& wanted, const CategoryInfo* category, double tolerance);
 
 class AssetRetriever {
  public:
@@ -86,9 +88,9 @@ class AssetRetriever {
   Result<RetrievalResult> Rank(const RetrievalQuery& query, const RetrievalOptions& options = {}) const;
 
  private:
+  struct SparseVector;
   std::shared_ptr<const std::vector<AssetRecord>> candidates_;
-  std::shared_ptr<const std::vector<Embedding>> vectors_;
-  std::shared_ptr<const std::vector<double>> norms_;
+  std::shared_ptr<const std::vector<SparseVector>> vectors_;
   std::shared_ptr<const Embedder> embedder_;
   CandidateOffer offer_;
 };
