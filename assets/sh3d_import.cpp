@@ -320,13 +320,10 @@ std::string Sh3dImportSummary::BriefReport() const {
   return s.str();
 }
 
-Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::path& library,
-                                              const Sh3dImportOptions& options_in,
-                                              const std::function<void(int done, int total)>& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  if (std::string problem = options_in.Check(); !problem.empty()) return Error{"import options: " + problem};
-  Sh3dImportOptions options = options_in;
+namespace {
 
+// The .sh3f files of `from` (a folder, in name order, or one file).
+Result<std::vector<fs::path>> ArchiveFiles(const fs::path& from) {
   std::error_code ec;
   std::vector<fs::path> files;
   if (fs::is_directory(from, ec)) {
@@ -339,17 +336,16 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
   } else {
     return Error{from.string() + ": no such file or folder"};
   }
-  if (options.package.empty()) {
-    bool debian = fs::equivalent(fs::path(from), DefaultSh3dFurnitureDir(), ec) ||
-                  fs::equivalent(fs::path(from).parent_path(), DefaultSh3dFurnitureDir(), ec);
-    if (debian) options.package = DebianPackageVersion();
-  }
+  return files;
+}
 
-  struct Archive {
-    std::string name;
-    ZipArchive zip;
-    Sh3dCatalog catalog;
-  };
+struct Archive {
+  std::string name;  // file name ("BlendSwap-CC-0.sh3f")
+  ZipArchive zip;
+  Sh3dCatalog catalog;
+};
+
+Result<std::vector<Archive>> OpenArchives(const std::vector<fs::path>& files) {
   std::vector<Archive> archives;
   for (const fs::path& file : files) {
     Result<ZipArchive> zip = ZipArchive::Open(file);
@@ -360,42 +356,40 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
     Result<JavaProperties> properties = ParseJavaProperties(*text, where);
     if (!properties.ok()) return Error{properties.error()};
     Sh3dCatalog catalog = ReadSh3dCatalog(*properties, file.filename().string(), where);
+    if (catalog.pieces.empty() && catalog.problems.empty()) return Error{where + ": no furniture in the catalog"};
     archives.push_back({file.filename().string(), std::move(*zip), std::move(catalog)});
   }
+  return archives;
+}
 
-  struct Task {
-    int archive;
-    int piece;
-  };
-  std::vector<Task> tasks;
-  for (std::size_t a = 0; a < archives.size(); ++a) {
-    if (archives[a].catalog.pieces.empty() && archives[a].catalog.problems.empty())
-      return Error{archives[a].name + ": " + kCatalogEntry + ": no furniture in the catalog"};
-    for (std::size_t p = 0; p < archives[a].catalog.pieces.size(); ++p) tasks.push_back({static_cast<int>(a), static_cast<int>(p)});
-  }
+// One piece's outcome, its mesh already written to the staging folder.
+struct PieceDone {
+  Sh3dPieceImport::Outcome outcome = Sh3dPieceImport::Outcome::kFailed;
+  std::string reason;
+  std::optional<AssetRecord> record;
+  int source_triangles = 0;
+  bool decimated = false;
+};
 
-  Result<LibraryStaging> staging = LibraryStaging::Begin(library);
-  if (!staging.ok()) return Error{staging.error()};
-
-  struct Done {
-    Sh3dPieceImport::Outcome outcome;
-    std::string reason;
-    std::optional<AssetRecord> record;
-    int source_triangles = 0;
-    bool decimated = false;
-  };
-  std::vector<Done> done(tasks.size());
+// Every piece of every archive, on `options.threads` workers taking the next piece as they finish; the
+// results in catalog order whatever the thread count.
+Result<std::vector<PieceDone>> ImportPieces(const std::vector<Archive>& archives, const LibraryStaging& staging,
+                                            const Sh3dImportOptions& options,
+                                            const std::function<void(int done, int total)>& progress) {
+  std::vector<std::pair<const Archive*, const Sh3dPiece*>> tasks;
+  for (const Archive& a : archives)
+    for (const Sh3dPiece& piece : a.catalog.pieces) tasks.push_back({&a, &piece});
+  std::vector<PieceDone> done(tasks.size());
   std::atomic<std::size_t> next{0};
   std::atomic<int> finished{0};
   std::mutex error_mutex;
   std::string write_error;
   auto work = [&] {
     for (std::size_t k = next++; k < tasks.size(); k = next++) {
-      const Archive& a = archives[tasks[k].archive];
-      const Sh3dPiece& piece = a.catalog.pieces[tasks[k].piece];
-      Sh3dPieceImport result = ImportSh3dPiece(a.zip, a.name, a.catalog, piece, options);
+      const Archive& a = *tasks[k].first;
+      Sh3dPieceImport result = ImportSh3dPiece(a.zip, a.name, a.catalog, *tasks[k].second, options);
       if (result.outcome == Sh3dPieceImport::Outcome::kImported) {
-        if (Status s = staging->WriteMesh(result.record->mesh.file, result.mesh); !s.ok()) {
+        if (Status s = staging.WriteMesh(result.record->mesh.file, result.mesh); !s.ok()) {
           std::lock_guard<std::mutex> lock(error_mutex);
           if (write_error.empty()) write_error = s.error();
         }
@@ -411,16 +405,18 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
   work();
   for (std::thread& t : pool) t.join();
   if (!write_error.empty()) return Error{write_error};
+  return done;
+}
 
-  // The summary, the records in catalog order, and the report.
-  Sh3dImportSummary summary;
-  summary.library = staging->dir();
-  summary.archives = static_cast<int>(archives.size());
+// Counts outcomes into `summary`, collects the records in catalog order into `records`, and returns the
+// import report (villa-import-report/1): options, archives, totals, one entry per model.
+nlohmann::ordered_json ImportReport(const fs::path& from, const Sh3dImportOptions& options, const std::vector<Archive>& archives,
+                                   const std::vector<PieceDone>& done, Sh3dImportSummary* summary,
+                                   std::vector<AssetRecord>* records) {
   nlohmann::ordered_json report;
   report["format"] = "villa-import-report/1";
   report["from"] = fs::absolute(from).lexically_normal().string();
   report["options"] = {{"max_triangles", options.max_triangles}, {"over_budget", options.decimate ? "decimate" : "skip"}};
-  std::vector<AssetRecord> records;
   nlohmann::ordered_json models = nlohmann::ordered_json::array();
   nlohmann::ordered_json archive_list = nlohmann::ordered_json::array();
   std::size_t k = 0;
@@ -428,15 +424,15 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
     archive_list.push_back({{"file", a.name}, {"catalog", a.catalog.library_id}, {"license", a.catalog.license},
                             {"pieces", a.catalog.pieces.size() + a.catalog.problems.size()}});
     for (const std::string& problem : a.catalog.problems) {
-      ++summary.models_read;
-      ++summary.skipped;
-      ++summary.failed;
-      ++summary.skip_reasons["unreadable catalog entry"];
+      ++summary->models_read;
+      ++summary->skipped;
+      ++summary->failed;
+      ++summary->skip_reasons["unreadable catalog entry"];
       models.push_back({{"archive", a.name}, {"outcome", "failed"}, {"reason", "unreadable catalog entry: " + problem}});
     }
     for (const Sh3dPiece& piece : a.catalog.pieces) {
-      Done& d = done[k++];
-      ++summary.models_read;
+      const PieceDone& d = done[k++];
+      ++summary->models_read;
       nlohmann::ordered_json m;
       m["archive"] = a.name;
       m["entry"] = piece.model;
@@ -444,9 +440,9 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
       m["source_triangles"] = d.source_triangles;
       if (d.outcome == Sh3dPieceImport::Outcome::kImported) {
         const AssetRecord& r = *d.record;
-        ++summary.imported;
-        summary.watertight += r.mesh.watertight ? 1 : 0;
-        summary.decimated += d.decimated ? 1 : 0;
+        ++summary->imported;
+        summary->watertight += r.mesh.watertight ? 1 : 0;
+        summary->decimated += d.decimated ? 1 : 0;
         m["id"] = r.id;
         m["outcome"] = "imported";
         m["category"] = r.category;
@@ -455,11 +451,11 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
         m["support_surfaces"] = r.support_surfaces.size();
         m["cavities"] = r.cavities.size();
         if (!d.reason.empty()) m["note"] = d.reason;
-        records.push_back(r);
+        records->push_back(r);
       } else {
-        ++summary.skipped;
-        if (d.outcome == Sh3dPieceImport::Outcome::kFailed) ++summary.failed;
-        ++summary.skip_reasons[ReasonKind(d.reason)];
+        ++summary->skipped;
+        if (d.outcome == Sh3dPieceImport::Outcome::kFailed) ++summary->failed;
+        ++summary->skip_reasons[ReasonKind(d.reason)];
         m["outcome"] = d.outcome == Sh3dPieceImport::Outcome::kFailed ? "failed" : "skipped";
         m["reason"] = d.reason;
       }
@@ -468,13 +464,42 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
   }
   report["archives"] = archive_list;
   nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
-  for (const auto& [reason, n] : summary.skip_reasons) reasons[reason] = n;
-  report["summary"] = {{"models_read", summary.models_read}, {"imported", summary.imported},
-                       {"skipped", summary.skipped},         {"failed", summary.failed},
-                       {"decimated", summary.decimated},     {"watertight", summary.watertight},
+  for (const auto& [reason, n] : summary->skip_reasons) reasons[reason] = n;
+  report["summary"] = {{"models_read", summary->models_read}, {"imported", summary->imported},
+                       {"skipped", summary->skipped},         {"failed", summary->failed},
+                       {"decimated", summary->decimated},     {"watertight", summary->watertight},
                        {"skip_reasons", reasons}};
   report["models"] = models;
+  return report;
+}
 
+}  // namespace
+
+Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::path& library,
+                                              const Sh3dImportOptions& options_in,
+                                              const std::function<void(int done, int total)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  if (std::string problem = options_in.Check(); !problem.empty()) return Error{"import options: " + problem};
+  Sh3dImportOptions options = options_in;
+  Result<std::vector<fs::path>> files = ArchiveFiles(from);
+  if (!files.ok()) return Error{files.error()};
+  if (options.package.empty()) {
+    std::error_code ec;
+    bool debian = fs::equivalent(from, DefaultSh3dFurnitureDir(), ec) || fs::equivalent(from.parent_path(), DefaultSh3dFurnitureDir(), ec);
+    if (debian) options.package = DebianPackageVersion();
+  }
+  Result<std::vector<Archive>> archives = OpenArchives(*files);
+  if (!archives.ok()) return Error{archives.error()};
+  Result<LibraryStaging> staging = LibraryStaging::Begin(library);
+  if (!staging.ok()) return Error{staging.error()};
+  Result<std::vector<PieceDone>> done = ImportPieces(*archives, *staging, options, progress);
+  if (!done.ok()) return Error{done.error()};
+
+  Sh3dImportSummary summary;
+  summary.library = staging->dir();
+  summary.archives = static_cast<int>(archives->size());
+  std::vector<AssetRecord> records;
+  nlohmann::ordered_json report = ImportReport(from, options, *archives, *done, &summary, &records);
   std::map<std::string, std::string> mesh_owner;
   for (const AssetRecord& r : records) {
     auto [it, fresh] = mesh_owner.emplace(r.mesh.file, r.id);
