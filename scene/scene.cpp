@@ -77,14 +77,14 @@ E ReadEnum(ObjectReader& r, std::string_view key, const std::array<std::string_v
 
 double NonNegative(ObjectReader& r, std::string_view key) {
   double v = r.Number(key);
-  if (v < 0.0) FailAt(r.PathOf(key), Shown(Json(v)) + ": must be >= 0");
+  if (v < 0.0) FailAt(r.PathOf(key), Shown(r.Required(key)) + ": must be >= 0");
   return v;
 }
 
 Vec3 ReadSize(ObjectReader& r) {
   auto v = r.Numbers("size", 3);
   for (size_t i = 0; i < 3; ++i)
-    if (v[i] <= 0.0) FailAt(ElementPath(r.PathOf("size"), i), Shown(Json(v[i])) + ": a size is > 0");
+    if (v[i] <= 0.0) FailAt(ElementPath(r.PathOf("size"), i), Shown(r.Required("size")[i]) + ": a size is > 0");
   return {v[0], v[1], v[2]};
 }
 
@@ -108,7 +108,7 @@ BuildRecord ReadBuild(const Json& value, const std::string& path) {
                             {"exterior_wall_thickness", &b.exterior_wall_thickness},
                             {"interior_wall_thickness", &b.interior_wall_thickness}}) {
     *field = r.Number(key);
-    if (*field <= 0.0 || *field > 1.0) FailAt(r.PathOf(key), Shown(Json(*field)) + ": must be in (0, 1] m");
+    if (*field <= 0.0 || *field > 1.0) FailAt(r.PathOf(key), Shown(r.Required(key)) + ": must be in (0, 1] m");
   }
   r.Finish();
   return b;
@@ -135,7 +135,7 @@ EdgeParams ReadParams(const Json& value, const std::string& path, SemanticRelati
       FailAt(r.PathOf(key), std::string(SemanticRelationName(relation)) + " takes no " + std::string(key));
     double v = NonNegative(r, key);
     if (key == "max_deg") {
-      if (v > 180.0) FailAt(r.PathOf(key), Shown(Json(v)) + ": must be in [0, 180] degrees");
+      if (v > 180.0) FailAt(r.PathOf(key), Shown(r.Required(key)) + ": must be in [0, 180] degrees");
       p.max_deg = v;
     } else if (key == "min_gap") {
       p.min_gap = v;
@@ -147,7 +147,7 @@ EdgeParams ReadParams(const Json& value, const std::string& path, SemanticRelati
   }
   r.Finish();
   if (p.min_gap && p.max_gap && *p.min_gap > *p.max_gap)
-    FailAt(path, "min_gap " + Shown(Json(*p.min_gap)) + " is above max_gap " + Shown(Json(*p.max_gap)));
+    FailAt(path, "min_gap " + Shown(r.Required("min_gap")) + " is above max_gap " + Shown(r.Required("max_gap")));
   return p;
 }
 
@@ -181,7 +181,7 @@ Pose ReadPose(const Json& value, const std::string& path) {
   p.y = r.Number("y");
   p.z = r.Number("z");
   double yaw = r.Number("yaw");
-  if (!(yaw > -180.0 && yaw <= 180.0)) FailAt(r.PathOf("yaw"), Shown(Json(yaw)) + ": yaw is in (-180, 180] degrees");
+  if (!(yaw > -180.0 && yaw <= 180.0)) FailAt(r.PathOf("yaw"), Shown(r.Required("yaw")) + ": yaw is in (-180, 180] degrees");
   p.yaw = WrapYaw(yaw / kDegPerRad);
   r.Finish();
   return p;
@@ -201,7 +201,7 @@ SceneObject ReadObject(const std::string& id, const Json& value, const std::stri
   if (r.Has("scale")) {
     auto s = r.Numbers("scale", 3);
     for (size_t i = 0; i < 3; ++i) {
-      if (s[i] <= 0.0) FailAt(ElementPath(r.PathOf("scale"), i), Shown(Json(s[i])) + ": a scale is > 0");
+      if (s[i] <= 0.0) FailAt(ElementPath(r.PathOf("scale"), i), Shown(r.Required("scale")[i]) + ": a scale is > 0");
       o.scale[i] = s[i];
     }
   }
