@@ -5,11 +5,14 @@
 #include <map>
 #include <optional>
 
-// Without rescaling to integers (the default from Boost 1.77 on): exact doubles in, exact doubles out.
-#define BOOST_GEOMETRY_NO_ROBUSTNESS
+// Boost 1.74's rescaling policy trips GCC 12's -Wmaybe-uninitialized at -O3 (a false positive inside
+// Boost); the rescaling itself is what makes the overlay robust here, so it stays on and the warning off.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
+#pragma GCC diagnostic pop
 
 #include "mesh/geometry2d.h"
 #include "scene/door_swing.h"
@@ -452,10 +455,15 @@ std::vector<EdgePiece> WallPieces(const Ring& polygon, const std::vector<Segment
 }
 
 std::vector<Ring> FreeFloor(const Ring& polygon, const std::vector<EdgePiece>& pieces) {
-  BMulti room;
-  room.push_back(ToBoost(polygon));
+  // One band at a time: the union of all bands is a ring around the free floor (a polygon with a hole),
+  // which Boost.Geometry does not always subtract correctly; band by band it does.
   BMulti free;
-  bg::difference(room, UnionOf(WallBands(polygon, pieces)), free);
+  free.push_back(ToBoost(polygon));
+  for (const Ring& band : WallBands(polygon, pieces)) {
+    BMulti next;
+    bg::difference(free, ToBoost(band), next);
+    free = std::move(next);
+  }
   return FromBoost(free, nullptr);
 }
 
