@@ -120,7 +120,7 @@ TEST_CASE("scene files round-trip: read, write, read gives the same model and th
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("written numbers have at most 4 decimals and yaw lies in (-180, 180]", "[scene][json]") {
+TEST_CASE("written numbers have at most 4 decimals and yaw lies in -180 exclusive to 180 inclusive", "[scene][json]") {
   SceneFile scene;
   scene.layout = {"layout.json", kHash};
   scene.rooms.push_back({"bedroom_0/0", std::nullopt, {}, std::nullopt, std::nullopt});
