@@ -443,7 +443,11 @@ Json SceneToJson(const SceneFile& scene) {
   return j;
 }
 
-std::string SceneToText(const SceneFile& scene) { return SceneToJson(scene).dump(2) + "\n"; }
+// Text that is not UTF-8 (a request typed in another encoding) is written with U+FFFD in its place rather
+// than failing the whole file.
+std::string SceneToText(const SceneFile& scene) {
+  return SceneToJson(scene).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
 
 Result<SceneFile> SceneFromJson(const Json& json, const std::string& source) {
   try {

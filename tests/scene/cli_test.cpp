@@ -125,6 +125,14 @@ TEST_CASE("villa scene plan: usage errors exit 2, bad layouts exit 1, nothing is
   CHECK(unreadable.out.find(garbage.string()) != std::string::npos);
   CHECK_FALSE(fs::exists(other));
 
+  // A request that is not UTF-8 is planned and written (the bad bytes replaced), not a crash.
+  Run latin1 = Villa("scene plan " + kExample + " --room living-room_0/0 -q --text " + Quote("two armchairs \xe9t\xe9") +
+                     " -o " + other.string());
+  CHECK(latin1.status == 0);
+  auto written = ReadScene(other);
+  REQUIRE(written.ok());
+  CHECK(written->rooms[0].plan->text.find("\xef\xbf\xbd") != std::string::npos);
+
   Run help = Villa("scene plan --help");
   CHECK(help.status == 0);
   CHECK(help.out.find("--text") != std::string::npos);
