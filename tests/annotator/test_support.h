@@ -13,20 +13,21 @@
 
 namespace villa::annotator::test {
 
-inline std::filesystem::path FixtureLayouts() {
-  return std::filesystem::path(VILLA_FIXTURE_DIR) / "annotator" / "layouts.jsonl";
+inline std::filesystem::path FixtureLayouts(const std::string& name = "layouts.jsonl") {
+  return std::filesystem::path(VILLA_FIXTURE_DIR) / "annotator" / name;
 }
 
-// A fresh folder holding a copy of the fixture dataset; removed when the object goes.
+// A fresh folder holding a copy of a fixture dataset (tests/fixtures/annotator/NAME as layouts.jsonl);
+// removed when the object goes.
 class TempDataset {
  public:
-  TempDataset() {
+  explicit TempDataset(const std::string& fixture = "layouts.jsonl") {
     static std::atomic<int> counter{0};
     dir_ = std::filesystem::temp_directory_path() /
            ("villa-annotator-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    std::filesystem::copy_file(FixtureLayouts(), LayoutsPath(dir_));
+    std::filesystem::copy_file(FixtureLayouts(fixture), LayoutsPath(dir_));
   }
   ~TempDataset() {
     std::error_code ec;
