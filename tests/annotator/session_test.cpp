@@ -72,13 +72,15 @@ TEST_CASE("actions are journaled and replayed after a restart", "[session][journ
   CHECK(s->state(1).status == AnnotationStatus::kRejected);
   CHECK(s->state(1).reason == "staircase badly placed");
   CHECK(s->state(3).coarse == "A one-storey house.");
-  CHECK(s->state(3).edited);
+  CHECK(s->state(3).edited(DescriptionField::kCoarse));
+  CHECK(s->state(3).edited(DescriptionField::kFine));
   CHECK(s->NextPending(0) == 2);
   // The undo history came back with the journal: the last action (the edit) undoes first.
   int item = -1;
   REQUIRE(s->Undo(&item, &msg).ok());
   CHECK(item == 3);
-  CHECK(!s->state(3).edited);
+  CHECK(!s->state(3).edited(DescriptionField::kCoarse));
+  CHECK(!s->state(3).edited(DescriptionField::kFine));
 }
 
 TEST_CASE("a relabel redrafts descriptions unless a person wrote them", "[session]") {
@@ -211,9 +213,15 @@ TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verif
     std::vector<std::string> keys;
     for (auto it = r.begin(); it != r.end(); ++it) keys.push_back(it.key());
     if (r["status"] == "rejected")
-      CHECK(keys == std::vector<std::string>{"id", "status", "reason", "descriptions", "layout"});
+      CHECK(keys == std::vector<std::string>{"id", "status", "reason", "descriptions", "annotation", "layout"});
     else
-      CHECK(keys == std::vector<std::string>{"id", "status", "descriptions", "layout"});
+      CHECK(keys == std::vector<std::string>{"id", "status", "descriptions", "annotation", "layout"});
+    // Nobody looked at an auto layout: decided by --auto, no annotator, no time, drafted texts.
+    CHECK(r["annotation"]["decided_by"] == "auto");
+    CHECK(r["annotation"]["annotators"].empty());
+    CHECK(r["annotation"]["seconds"] == 0);
+    CHECK(r["annotation"]["origin"]["coarse"] == "drafted");
+    CHECK(r["annotation"]["origin"]["fine"] == "drafted");
     CHECK(r["status"] != "verified");
     CHECK(r["descriptions"]["coarse"].get<std::string>().size() > 20);
     CHECK(r["descriptions"]["fine"].get<std::string>().size() > 20);

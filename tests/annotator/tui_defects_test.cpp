@@ -62,33 +62,32 @@ int JournalLines(const test::TempDataset& ds) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
 }
 
-// The plan's west wall on screen: the leftmost drawn column runs from a top-left corner to a bottom-left
-// corner, a wall, window, door or entrance glyph on every row between. Returns the window rows.
+// The plan's west wall on screen: the outline's top-left corner, its bottom-left corner below it, and a
+// wall, window, door or entrance glyph on every row between. Returns how many of those are windows.
 int CheckWestWall(const std::vector<std::string>& lines, int separator) {
-  int left = 1 << 20, top = -1, bottom = -1;
+  int left = -1, top = -1, bottom = -1;
   for (int y = 1; y < static_cast<int>(lines.size()) - 2; ++y) {
     auto cells = Cells(lines[y]);
     for (int x = 0; x < std::min<int>(separator, static_cast<int>(cells.size())); ++x) {
       if (cells[x] == " ") continue;
-      left = std::min(left, x);
-      if (top < 0) top = y;
-      bottom = y;
+      if (cells[x] == "┌" && top < 0) {
+        top = y;
+        left = x;
+      }
+      if (cells[x] == "└" && x == left) bottom = y;
       break;
     }
   }
+  INFO("top-left corner at row " << top << ", column " << left << "; bottom-left at row " << bottom);
   REQUIRE(top > 0);
+  REQUIRE(bottom > top);
   int windows = 0;
-  for (int y = top; y <= bottom; ++y) {
+  for (int y = top + 1; y < bottom; ++y) {
     auto cells = Cells(lines[y]);
     INFO("row " << y << ": " << lines[y]);
     REQUIRE(left < static_cast<int>(cells.size()));
     const std::string& c = cells[left];
-    if (y == top)
-      CHECK(c == "┌");
-    else if (y == bottom)
-      CHECK(c == "└");
-    else
-      CHECK((c == "│" || c == "├" || c == "║" || c == "▒" || c == "▓"));
+    CHECK((c == "│" || c == "├" || c == "║" || c == "▒" || c == "▓"));
     if (c == "║") ++windows;
   }
   return windows;

@@ -130,7 +130,10 @@ TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
     CHECK(screen.find("pending 4") != std::string::npos);
     term.Keys("?");
     REQUIRE_SCREEN(term, "villa annotate: keys");
+    // Esc and a key within the escape delay read as Alt-key, as in every terminal program: wait for
+    // the help to close, as a person sees it close, before the next key.
     term.Keys("Escape");
+    REQUIRE(term.WaitGone("villa annotate: keys"));
     term.Keys("q");
     REQUIRE(term.WaitForExit());
   }
@@ -140,12 +143,15 @@ TEST_CASE("both descriptions edited in $EDITOR", "[tui]") {
   // tmux is a declared dependency (scripts/install-deps.sh): without it the test fails, never skips.
   REQUIRE(HaveTmux());
   test::TempDataset ds;
-  // An "editor" that rewrites the file: the coarse text, the marker line kept, a new fine text.
+  // An "editor" that rewrites the file: a new coarse text and a new fine text under the marker lines
+  // (kept), the fine one over two lines of one paragraph.
   std::filesystem::path editor = ds.dir() / "editor.sh";
   test::Spit(editor,
              "#!/bin/sh\n"
-             "marker=$(grep '^# ---- fine' \"$1\")\n"
-             "printf '# a comment\\nA small house.\\n%s\\nOne floor, with a kitchen\\nopen to the dining room.\\n' \"$marker\" > \"$1\"\n");
+             "coarse=$(grep '^# ---- coarse' \"$1\")\n"
+             "fine=$(grep '^# ---- fine' \"$1\")\n"
+             "printf '# a comment\\n%s\\nA small house.\\n%s\\nOne floor, with a kitchen\\nopen to the dining room.\\n' "
+             "\"$coarse\" \"$fine\" > \"$1\"\n");
   std::filesystem::permissions(editor, std::filesystem::perms::owner_all);
   {
     Terminal term(ds.dir(), 80, 24, "VISUAL= EDITOR=" + Quote(editor.string()));
@@ -159,5 +165,6 @@ TEST_CASE("both descriptions edited in $EDITOR", "[tui]") {
   REQUIRE(s.ok());
   CHECK((*s)->state(0).coarse == "A small house.");
   CHECK((*s)->state(0).fine == "One floor, with a kitchen open to the dining room.");
-  CHECK((*s)->state(0).edited);
+  CHECK((*s)->state(0).edited(DescriptionField::kCoarse));
+  CHECK((*s)->state(0).edited(DescriptionField::kFine));
 }
