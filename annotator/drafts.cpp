@@ -62,13 +62,23 @@ Status DraftJournal::Open(const std::filesystem::path& path, bool writable) {
     OpenDraft d{key.first, f, text->get<std::string>(), j.value("time", ""), j.value("annotator", "")};
     open_[key] = {++order_, std::move(d)};
   }
+  path_ = path;
   if (!writable) return {};
   std::error_code ec;
   if (open_.empty() && std::filesystem::exists(path, ec)) {
     std::filesystem::remove(path, ec);
     if (ec) return Error{path.string() + ": cannot empty the draft journal: " + ec.message()};
   }
-  return writer_.Open(path);
+  // Opened for appending when the first draft is kept: a session that types nothing leaves no file.
+  if (!open_.empty()) return writer_.Open(path);
+  return {};
+}
+
+Status DraftJournal::Append(const JournalJson& line) {
+  if (!writable_) return Error{"session opened read-only"};
+  if (writer_.path().empty())
+    if (Status s = writer_.Open(path_); !s) return s;
+  return writer_.Append(line);
 }
 
 std::optional<OpenDraft> DraftJournal::Find(const std::string& id, DescriptionField field) const {
@@ -88,11 +98,10 @@ std::vector<OpenDraft> DraftJournal::All() const {
 
 Status DraftJournal::Keep(const std::string& id, DescriptionField field, const std::string& text,
                           const std::string& annotator) {
-  if (!writable_) return Error{"session opened read-only"};
   JournalJson line = DraftLine(id, field);
   line["annotator"] = annotator;
   line["text"] = text;
-  if (Status s = writer_.Append(line); !s) return s;
+  if (Status s = Append(line); !s) return s;
   open_[{id, static_cast<int>(field)}] = {++order_, OpenDraft{id, field, text, line["time"], annotator}};
   return {};
 }
@@ -100,10 +109,9 @@ Status DraftJournal::Keep(const std::string& id, DescriptionField field, const s
 Status DraftJournal::Close(const std::string& id, DescriptionField field, const std::string& how) {
   Key key{id, static_cast<int>(field)};
   if (!open_.count(key)) return {};
-  if (!writable_) return Error{"session opened read-only"};
   JournalJson line = DraftLine(id, field);
   line["closed"] = how;
-  if (Status s = writer_.Append(line); !s) return s;
+  if (Status s = Append(line); !s) return s;
   open_.erase(key);
   return {};
 }

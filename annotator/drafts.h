@@ -48,7 +48,10 @@ class DraftJournal {
   Status Close(const std::string& id, DescriptionField field, const std::string& how);
 
  private:
+  Status Append(const JournalJson& line);
+
   using Key = std::pair<std::string, int>;
+  std::filesystem::path path_;
   std::map<Key, std::pair<long, OpenDraft>> open_;  // by (id, field): (order kept, draft)
   long order_ = 0;
   std::vector<std::string> warnings_;

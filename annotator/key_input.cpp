@@ -129,7 +129,10 @@ void KeyDecoder::Feed(unsigned char byte) {
       }
       return;
     case State::kCsi:
-      if (byte >= 0x20 && byte <= 0x3f) {
+      if (byte == '$' && sequence_.size() > 2 &&
+          sequence_.find_first_not_of("0123456789", 2) == std::string::npos) {
+        FinishCsi(byte);  // rxvt: ESC [ 2 $ is Shift-Insert; '$' ends the sequence there
+      } else if (byte >= 0x20 && byte <= 0x3f) {
         if (sequence_.size() < kMaxSequence + 8) sequence_ += static_cast<char>(byte);
       } else if (byte >= 0x40 && byte <= 0x7e) {
         FinishCsi(byte);
@@ -191,6 +194,11 @@ void KeyDecoder::FinishCsi(unsigned char final_byte) {
   }
   std::vector<int> p = Parameters(params);
   int modifiers = p.size() > 1 ? p[1] : 1;
+  // rxvt ends modified editing keys with $ (Shift), ^ (Ctrl) or @ (Ctrl-Shift) instead of ~.
+  if (final_byte == '$' || final_byte == '^' || final_byte == '@') {
+    modifiers = final_byte == '$' ? 2 : final_byte == '^' ? 5 : 6;
+    final_byte = '~';
+  }
   switch (final_byte) {
     case 'A': EmitKey(Key::kUp, modifiers); return;
     case 'B': EmitKey(Key::kDown, modifiers); return;

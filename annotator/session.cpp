@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <unordered_map>
 
 #include "annotator/describe.h"
 #include "annotator/mentions.h"
@@ -573,17 +572,18 @@ TextOrigin Session::OriginOfEdit(int item, const AnnotationState& current, Descr
     Redescribe(item, fresh);
     drafted = fresh.text(field);
   }
-  // Kept from the draft: the share of the new text's words (with repeats) found in the draft.
-  std::unordered_map<std::string, int> pool;
-  for (const std::string& w : Words(drafted)) ++pool[w];
-  auto words = Words(text);
-  int kept = 0;
-  for (const std::string& w : words)
-    if (auto it = pool.find(w); it != pool.end() && it->second > 0) {
-      --it->second;
-      ++kept;
-    }
-  return !words.empty() && kept * 2 >= static_cast<int>(words.size()) ? TextOrigin::kEdited : TextOrigin::kWritten;
+  // How much of the draft the new text keeps, as difflib's ratio over words: twice the longest common
+  // subsequence over both lengths. At least one half: an edit of the draft; below: the person's own.
+  auto a = Words(drafted);
+  auto b = Words(text);
+  if (a.empty() || b.empty()) return TextOrigin::kWritten;
+  std::vector<int> row(b.size() + 1, 0), next(b.size() + 1, 0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j) next[j + 1] = a[i] == b[j] ? row[j] + 1 : std::max(row[j + 1], next[j]);
+    std::swap(row, next);
+  }
+  double ratio = 2.0 * row[b.size()] / static_cast<double>(a.size() + b.size());
+  return ratio >= 0.5 ? TextOrigin::kEdited : TextOrigin::kWritten;
 }
 
 Status Session::SetDescription(int item, DescriptionField field, const std::string& text, std::string* message) {

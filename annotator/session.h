@@ -36,8 +36,8 @@ inline constexpr int kJournalVersion = 2;
 enum class AnnotationStatus { kPending, kVerified, kRejected, kAuto };
 std::string_view StatusName(AnnotationStatus status);  // "pending", "verified", "rejected", "auto"
 
-// Where a description's text came from: the drafter, a person editing a draft (most of its words are
-// the draft's), or a person writing their own (fewer than half of its words are in the draft).
+// Where a description's text came from: the drafter, a person editing a draft (the words of the two,
+// compared as difflib does, are at least half the same), or a person writing their own text.
 enum class TextOrigin { kDrafted, kEdited, kWritten };
 std::string_view OriginName(TextOrigin origin);  // "drafted", "edited", "written"
 

@@ -71,7 +71,7 @@ class Terminal {
   // Key names as tmux spells them ("Enter", "Escape", "C-u", "M-b", "End").
   void Keys(const std::string& keys) const { Tmux("send-keys -t t " + keys); }
   // Text typed literally, character by character.
-  void Type(const std::string& text) const { Tmux("send-keys -t t -l " + Quote(text)); }
+  void Type(const std::string& text) const { Tmux("send-keys -t t -l -- " + Quote(text)); }
   // Raw bytes, in hex ("ff", "1b 5b 34 7e").
   void Bytes(const std::string& hex) const { Tmux("send-keys -t t -H " + hex); }
   // A paste as a terminal delivers it: bracketed when the program asked for bracketed paste, with
@@ -112,6 +112,11 @@ class Terminal {
     if (!WaitFor("Enter: save")) return false;
     Keys("C-u");
     return true;
+  }
+  // q, and the tool is gone within 10 s.
+  bool Quit() const {
+    Keys("q");
+    return WaitForExit();
   }
   bool WaitForExit() const {
     for (int i = 0; i < 200; ++i) {

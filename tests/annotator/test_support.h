@@ -8,7 +8,10 @@
 #include <string>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+
 #include "annotator/dataset.h"
+#include "annotator/session.h"
 #include "layout/layout_io.h"
 
 namespace villa::annotator::test {
@@ -59,6 +62,18 @@ inline Layout FixtureLayout(const std::string& id) {
   for (const auto& r : dataset->records)
     if (r.id == id) return r.layout;
   return {};
+}
+
+// The session of `dir`, as `annotator` (default: the login name); the test stops if it does not open.
+inline std::unique_ptr<Session> OpenSession(const std::filesystem::path& dir, bool writable,
+                                            const std::string& annotator = "") {
+  SessionOptions o;
+  o.writable = writable;
+  o.annotator = annotator;
+  auto s = Session::Open(dir, o);
+  INFO((s ? std::string() : s.error()));
+  REQUIRE(s.ok());
+  return std::move(s).value();
 }
 
 }  // namespace villa::annotator::test

@@ -24,13 +24,6 @@ using test::Terminal;
 
 namespace {
 
-std::unique_ptr<Session> Reopened(const std::filesystem::path& dir) {
-  auto s = Session::Open(dir, false);
-  INFO((s ? std::string() : s.error()));
-  REQUIRE(s.ok());
-  return std::move(s).value();
-}
-
 // Code points of a UTF-8 line: every glyph the tool draws in the plan is one terminal column.
 std::vector<std::string> Cells(const std::string& line) {
   std::vector<std::string> out;
@@ -158,10 +151,9 @@ TEST_CASE("defect 1: a byte that is not UTF-8 never wedges the tool", "[tui][inp
     term.Type("c");
     term.Keys("Enter");
     REQUIRE_SCREEN(term, "(edited)");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
-  CHECK(Reopened(ds.dir())->state(0).coarse == "abc");
+  CHECK(test::OpenSession(ds.dir(), false)->state(0).coarse == "abc");
 
   // A session in the C locale (no UTF-8 on screen) typing accented text.
   {
@@ -171,10 +163,9 @@ TEST_CASE("defect 1: a byte that is not UTF-8 never wedges the tool", "[tui][inp
     term.Type("salle à manger");
     term.Keys("Enter");
     REQUIRE_SCREEN(term, "(edited)");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
-  CHECK(Reopened(ds.dir())->state(0).coarse == "salle à manger");
+  CHECK(test::OpenSession(ds.dir(), false)->state(0).coarse == "salle à manger");
 }
 
 TEST_CASE("defect 2: Alt-keys and unknown escape sequences never discard text or run as commands", "[tui][input]") {
@@ -199,10 +190,9 @@ TEST_CASE("defect 2: Alt-keys and unknown escape sequences never discard text or
     term.Bytes("1b 5b 39 39 7e");
     term.Keys("4");
     REQUIRE_SCREEN(term, ">4 bedroom_0/0");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
-  auto s = Reopened(ds.dir());
+  auto s = test::OpenSession(ds.dir(), false);
   CHECK(s->state(0).coarse == "Two big floors.");
   CHECK(s->state(0).status == AnnotationStatus::kPending);
   CHECK(s->state(0).layout.FindRoom("living-room_0/0") >= 0);
@@ -225,10 +215,9 @@ TEST_CASE("defect 3: a multi-line paste is text, never commands", "[tui][input]"
     term.Paste("bn");
     REQUIRE_SCREEN(term, "paste ignored");
     CHECK(term.Lines()[0].find("villa-000000") != std::string::npos);
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
-  auto s = Reopened(ds.dir());
+  auto s = test::OpenSession(ds.dir(), false);
   CHECK(s->state(0).coarse == "A house.\nbn");
   CHECK(s->state(0).layout.FindRoom("living-room_0/0") >= 0);
   CHECK(test::Slurp(ds.journal()).find("\"label ") == std::string::npos);
@@ -237,7 +226,7 @@ TEST_CASE("defect 3: a multi-line paste is text, never commands", "[tui][input]"
 TEST_CASE("defect 4: one edited flag per description, and accept warns about rooms an edit names", "[tui]") {
   REQUIRE(HaveTmux());
   test::TempDataset ds;
-  std::string drafted_fine = Reopened(ds.dir())->state(0).fine;
+  std::string drafted_fine = test::OpenSession(ds.dir(), false)->state(0).fine;
   REQUIRE(drafted_fine.find("bedroom") != std::string::npos);
   {
     Terminal term(ds.dir());
@@ -253,13 +242,12 @@ TEST_CASE("defect 4: one edited flag per description, and accept warns about roo
     REQUIRE_SCREEN(term, "label bedroom_0/0 -> office_0/0");
     term.Keys("a");
     REQUIRE_SCREEN(term, "no longer has");
-    CHECK(Reopened(ds.dir())->state(0).status == AnnotationStatus::kPending);
+    CHECK(test::OpenSession(ds.dir(), false)->state(0).status == AnnotationStatus::kPending);
     term.Keys("a");  // accepted anyway, knowingly
     REQUIRE_SCREEN(term, "verified 1");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
-  auto s = Reopened(ds.dir());
+  auto s = test::OpenSession(ds.dir(), false);
   CHECK(s->state(0).status == AnnotationStatus::kVerified);
   CHECK(s->state(0).coarse == "A one-storey house with a bedroom and a kitchen.");
   // The fine text nobody edited was redrafted for the office.
@@ -273,7 +261,7 @@ TEST_CASE("defect 5: at exactly 80x24 the plan keeps its west wall, windows and 
   REQUIRE(HaveTmux());
   // A 19 m wide, two-storey L: at 80 columns its plan fills the width exactly.
   test::TempDataset ds("wide.jsonl");
-  Layout layout = Reopened(ds.dir())->state(0).layout;
+  Layout layout = test::OpenSession(ds.dir(), false)->state(0).layout;
   Terminal term(ds.dir(), 80, 24);
   REQUIRE_SCREEN(term, "villa-wide-19m");
   for (int level : {0, 1}) {
@@ -291,8 +279,7 @@ TEST_CASE("defect 5: at exactly 80x24 the plan keeps its west wall, windows and 
     CHECK(CheckWestWall(lines, separator) >= 1);
     CheckRoomList(lines, separator, layout, level);
   }
-  term.Keys("q");
-  REQUIRE(term.WaitForExit());
+  REQUIRE(term.Quit());
 }
 
 TEST_CASE("defect 6: the small ones", "[tui]") {
@@ -323,8 +310,7 @@ TEST_CASE("defect 6: the small ones", "[tui]") {
     term.Keys("u");
     REQUIRE_SCREEN(term, "undone: accept villa-000000");
     REQUIRE_SCREEN(term, "verified 0");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   SECTION("the editor's exit code, not a raw wait status") {
     Terminal term(ds.dir(), 80, 24, "VISUAL= EDITOR=" + Quote(failing.string()));
@@ -332,18 +318,16 @@ TEST_CASE("defect 6: the small ones", "[tui]") {
     term.Keys("v");
     REQUIRE_SCREEN(term, "exited with code 1");
     CHECK(term.Screen().find("status 256") == std::string::npos);
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   SECTION("a line starting with # survives $EDITOR") {
     Terminal term(ds.dir(), 80, 24, "VISUAL= EDITOR=" + Quote(hashes.string()));
     REQUIRE_SCREEN(term, "villa-000000");
-    std::string coarse = Reopened(ds.dir())->state(0).coarse;
+    std::string coarse = test::OpenSession(ds.dir(), false)->state(0).coarse;
     term.Keys("v");
     REQUIRE_SCREEN(term, "edit descriptions of villa-000000");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
-    auto s = Reopened(ds.dir());
+    REQUIRE(term.Quit());
+    auto s = test::OpenSession(ds.dir(), false);
     CHECK(s->state(0).fine == "One floor.\n#1 priority: a big kitchen.");
     CHECK(s->state(0).coarse == coarse);
   }
@@ -373,9 +357,8 @@ TEST_CASE("defect 6: the small ones", "[tui]") {
     term.Type("d");
     term.Keys("Enter");
     REQUIRE_SCREEN(term, "(edited)");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
-    CHECK(Reopened(ds.dir())->state(0).coarse == "abcd");
+    REQUIRE(term.Quit());
+    CHECK(test::OpenSession(ds.dir(), false)->state(0).coarse == "abcd");
   }
   SECTION("violation lines are wrapped, not cut") {
     Terminal term(ds.dir());
@@ -394,7 +377,7 @@ TEST_CASE("defect 6: the small ones", "[tui]") {
       if (static_cast<int>(cells.size()) > separator) panel += " " + Join(cells, separator + 1, cells.size());
     }
     panel = Squeeze(panel);
-    ValidationReport report = ValidateLayout(Reopened(ds.dir())->state(3).layout);
+    ValidationReport report = ValidateLayout(test::OpenSession(ds.dir(), false)->state(3).layout);
     REQUIRE(report.violations.size() == 2);
     for (const Violation& v : report.violations) {
       INFO(panel);

@@ -52,8 +52,7 @@ TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all"
     term.Type("A one-storey rectangular house with a kitchen.");
     term.Keys("Enter");
     REQUIRE_SCREEN(term, "(edited)");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   auto s = Session::Open(ds.dir(), false);
   REQUIRE(s.ok());
@@ -76,8 +75,7 @@ TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all"
   REQUIRE_SCREEN(term, "villa-000000");
   REQUIRE_SCREEN(term, "[verified]");
   REQUIRE_SCREEN(term, "office_0/0");
-  term.Keys("q");
-  REQUIRE(term.WaitForExit());
+  REQUIRE(term.Quit());
 }
 
 TEST_CASE("kill -9 mid-session loses nothing that was shown as done", "[tui]") {
@@ -107,8 +105,7 @@ TEST_CASE("kill -9 mid-session loses nothing that was shown as done", "[tui]") {
   REQUIRE_SCREEN(term, "meeting-room_0/0");
   term.Keys("u");
   REQUIRE_SCREEN(term, "undone: redraft");
-  term.Keys("q");
-  REQUIRE(term.WaitForExit());
+  REQUIRE(term.Quit());
 }
 
 TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
@@ -134,8 +131,7 @@ TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
     // the help to close, as a person sees it close, before the next key.
     term.Keys("Escape");
     REQUIRE(term.WaitGone("villa annotate: keys"));
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
 }
 
@@ -158,8 +154,7 @@ TEST_CASE("both descriptions edited in $EDITOR", "[tui]") {
     REQUIRE_SCREEN(term, "villa-000000");
     term.Keys("v");
     REQUIRE_SCREEN(term, "edit descriptions of villa-000000");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   auto s = Session::Open(ds.dir(), false);
   REQUIRE(s.ok());
