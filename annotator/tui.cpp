@@ -703,15 +703,15 @@ bool App::Confirm(const std::string& title, const std::vector<std::string>& line
 }
 
 void App::Help() {
+  // Lines of at most 76 columns: the help fits an 80-column terminal.
   std::vector<std::string> lines = {
-      "Tab / arrows / 1-9   select a room on this level",
-      "[ ] PgUp PgDn        level down / up",
+      "Tab, arrows, 1-9  select a room        [ ] PgUp PgDn  level down / up",
       "Category of the selected room:",
   };
   std::string cats;
   for (const auto& k : kCategoryKeys) {
     std::string entry = std::string(1, static_cast<char>(k.key)) + " " + std::string(CategoryName(k.category));
-    if (TextWidth(cats) + TextWidth(entry) + 2 > 64) {
+    if (TextWidth(cats) + TextWidth(entry) + 2 > 72) {
       lines.push_back("  " + cats);
       cats.clear();
     }
@@ -719,24 +719,24 @@ void App::Help() {
   }
   lines.push_back("  " + cats);
   for (const char* s : {
-           "a      accept as verified, then the next layout to do (warns first when an edited",
-           "       description names rooms the layout no longer has)",
-           "x      reject (preset reasons or free text)      O  reopen (back to pending)",
+           "a      accept, then on to the next layout to do (asks first when an",
+           "       edited description names rooms the layout no longer has)",
+           "x      reject (preset reasons or free text)    O  reopen (to pending)",
            "f      mechanical fixes for the rule violations",
-           "e / E  edit the coarse / fine description here   v  both in $VISUAL / $EDITOR",
-           "       (Alt-Enter or Ctrl-J: new line; Alt-B/F, Ctrl-arrows: words; Ctrl-W: delete word)",
-           "r      redraft the descriptions                  u / U  undo / redo (Ctrl-R redoes)",
-           "space  next layout to do (pending or auto)       n / p  next / previous layout",
-           "g      go to a layout (id, its last digits, #position)",
-           "F      filter: to do, pending, auto, rejected, verified, decided, disagreements",
+           "e / E  edit the coarse / fine description    v  both in $EDITOR",
+           "       Alt-Enter, Ctrl-J: new line   Alt-B/F, Ctrl-arrows: a word",
+           "       Ctrl-W, Alt-D: delete a word   Ctrl-U: clear   Esc: cancel",
+           "r      redraft the descriptions        u / U, Ctrl-R  undo / redo",
+           "space  next layout to do (pending or auto)    n / p  next / previous",
+           "g      go to a layout: its id, its last digits, or #position",
+           "F      filter: to do, pending, auto, rejected, verified, decided, ...",
            "h      who did what on this layout, and how long it took",
            "q      quit (everything is already saved); Ctrl-C too"}) {
     lines.push_back(s);
   }
-  lines.push_back(unicode_ ? "Plan: door ▒  open: gap  window ═ ║  panoramic █  entrance ▓  stairs ≡  N↑ north"
-                           : "Plan: door #  open: gap  window = H  panoramic %  entrance E  stairs _  N^ north");
-  lines.push_back("Each action is in annotations.journal.jsonl before it shows.");
-  Ask("villa annotate: keys (any key: back)", lines, 90);
+  lines.push_back(unicode_ ? "Plan: door ▒  open: gap  window ═ ║  panoramic █  entrance ▓  stairs ≡  N↑"
+                           : "Plan: door #  open: gap  window = H  panoramic %  entrance E  stairs _  N^");
+  Ask("villa annotate: keys (any key: back; every action is journalled first)", lines, 78);
 }
 
 std::optional<std::string> App::EditText(const std::string& title, const std::string& saved,
