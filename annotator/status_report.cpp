@@ -43,8 +43,9 @@ std::string StatusReport(const Session& session) {
     for (const std::string& who : session.effort(i).annotators) ++people[who].layouts;
     for (const Rating& r : session.Ratings(i)) ++(r.accepted ? people[r.annotator].verified : people[r.annotator].rejected);
     for (const HistoryEntry& h : session.history(i)) {
-      if (h.annotator.empty() || h.annotator == kAutoAnnotator) {
-        unattributed += h.kind != "batch";
+      if (h.kind == "batch") continue;  // --auto, a split's starting state: nobody's labelling
+      if (h.annotator.empty()) {
+        ++unattributed;
         continue;
       }
       people[h.annotator].seconds += h.seconds;

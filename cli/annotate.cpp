@@ -72,9 +72,17 @@ int Annotate(const AnnotateArgs& args) {
     return RunAnnotatorTui(session, tui);
   }
   std::error_code ec;
-  if (!args.export_path.empty() && std::filesystem::exists(args.export_path, ec) && !args.force) {
-    std::cerr << "villa annotate: " << args.export_path << ": exists (use --force to overwrite)\n";
-    return villa::cli::kExitFailure;
+  if (!args.export_path.empty() && std::filesystem::exists(args.export_path, ec)) {
+    // The export is written beside its target and renamed over it: a device, a pipe or a folder would
+    // be replaced by a plain file (--export /dev/null --force once did exactly that), so only files.
+    if (!std::filesystem::is_regular_file(args.export_path, ec)) {
+      std::cerr << "villa annotate: " << args.export_path << ": exists and is not a plain file (export writes a file)\n";
+      return villa::cli::kExitFailure;
+    }
+    if (!args.force) {
+      std::cerr << "villa annotate: " << args.export_path << ": exists (use --force to overwrite)\n";
+      return villa::cli::kExitFailure;
+    }
   }
   if (!args.merge.empty()) {
     std::vector<std::filesystem::path> packages(args.merge.begin(), args.merge.end());

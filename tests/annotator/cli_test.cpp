@@ -1,4 +1,5 @@
 // `villa annotate` in batch: --status, --auto, --export through the real binary; exit codes and messages.
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -82,6 +83,15 @@ TEST_CASE("villa annotate reports bad input with the file and line, never a cras
   Output not_json = Villa("annotate " + Q(ds.dir()) + " --status");
   CHECK(not_json.status == 1);
   CHECK(not_json.text.find("annotations.journal.jsonl:2: corrupt journal line") != std::string::npos);
+
+  // An export never replaces what is not a plain file (a pipe here; /dev/null alike).
+  std::filesystem::remove(ds.journal());
+  std::filesystem::path fifo = ds.dir() / "pipe";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  Output to_pipe = Villa("annotate " + Q(ds.dir()) + " --export " + Q(fifo) + " --force");
+  CHECK(to_pipe.status == 1);
+  CHECK(to_pipe.text.find("pipe: exists and is not a plain file") != std::string::npos);
+  CHECK(std::filesystem::is_fifo(fifo));
 
   // Not a terminal: the interactive mode says what to use instead.
   std::filesystem::remove(ds.journal());
