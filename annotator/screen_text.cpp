@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 #include "annotator/relabel.h"
 #include "annotator/utf8.h"
@@ -112,19 +113,26 @@ std::vector<RoomListLine> RoomListLines(const Layout& layout, int level, int sel
 std::string HeaderText(const std::string& id, const std::string& position, const std::string& shape,
                        const std::string& status, const std::string& level, const std::string& extra, int width) {
   std::string right = level + " ";
-  for (int drop = 0; drop <= 3; ++drop) {
+  // What to show, fullest first: the extra goes first, then the shape, then the position.
+  struct Parts {
+    bool position, shape, extra;
+  };
+  const Parts tries[] = {{true, true, true}, {true, true, false}, {true, false, false}, {false, false, false}};
+  for (std::size_t t = 0; t < std::size(tries); ++t) {
+    const Parts& p = tries[t];
     std::string left = " " + id;
-    if (drop < 2) left += "  " + position;
-    if (drop < 1) left += "  " + shape;
+    if (p.position) left += "  " + position;
+    if (p.shape) left += "  " + shape;
     left += "  [" + status + "]";
-    std::string middle = drop == 0 && !extra.empty() ? "  " + extra : "";
+    std::string middle = p.extra && !extra.empty() ? "  " + extra : "";
     int used = TextWidth(left) + TextWidth(middle) + TextWidth(right);
-    if (drop == 3 && used + 1 > width) {
+    bool last = t + 1 == std::size(tries);
+    if (last && used + 1 > width) {
       // Even the id does not fit beside the level: the id gives way, the level stays.
       left = ClipToWidth(left, std::max(0, width - TextWidth(right) - 1));
       used = TextWidth(left) + TextWidth(right);
     }
-    if (used + 1 <= width || drop == 3) {
+    if (used + 1 <= width || last) {
       std::string gap(static_cast<std::size_t>(std::max(1, width - used)), ' ');
       return ClipToWidth(left + middle + gap + right, width);
     }

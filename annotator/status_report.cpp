@@ -96,7 +96,9 @@ std::string StatusReport(const Session& session) {
     }
   }
   int next = session.NextToDo(0);
-  if (next >= 0) out << "next to do: " << session.record(next).id << "\n";
+  if (next >= 0)
+    out << "next to do: " << session.record(next).id << " (" << session.CountMatching(Filter::kToDo)
+        << " to do: pending, or auto and not yet looked at by a person)\n";
   return out.str();
 }
 

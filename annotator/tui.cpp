@@ -1081,10 +1081,11 @@ void App::HistoryDialog() {
   if (from > 0) lines.push_back("... " + std::to_string(from) + " earlier lines");
   for (std::size_t i = from; i < history.size(); ++i) {
     const HistoryEntry& h = history[i];
-    std::string when = h.time.size() >= 16 ? h.time.substr(0, 10) + " " + h.time.substr(11, 5) : h.time;
-    lines.push_back(when + "  " + (h.annotator.empty() ? "?" : h.annotator) + "  " + h.action +
-                    (h.seconds > 0 ? "  (" + Seconds(h.seconds) + ")" : "") +
-                    (h.package.empty() ? "" : "  [" + h.package.substr(h.package.find('/') + 1) + "]"));
+    std::string when = h.time.size() >= 16 ? h.time.substr(5, 5) + " " + h.time.substr(11, 5) : h.time;
+    std::string action = h.annotator == kAutoAnnotator && h.action == "auto" ? "--auto: drafted labels, fixes, descriptions" : h.action;
+    std::string where = h.package.empty() ? "" : "[" + h.package.substr(h.package.find('/') + 1) + "] ";
+    lines.push_back(when + "  " + (h.annotator.empty() ? "?" : h.annotator) + "  " + where + action +
+                    (h.seconds > 0 ? "  (" + Seconds(h.seconds) + ")" : ""));
   }
   if (history.empty()) lines.push_back("nobody has touched this layout yet");
   Ask("who did what on " + s_.record(item_).id + " (any key: back)", lines, 96);
@@ -1271,6 +1272,11 @@ int App::Run() {
     const OpenDraft& d = drafts.back();
     Note("recovered unsaved text of the " + std::string(FieldName(d.field)) + " description of " + d.id + " (" + d.time +
          "): " + (d.field == DescriptionField::kCoarse ? "e" : "E") + " goes on with it");
+  } else if (options_.review) {
+    int n = s_.CountMatching(filter_);
+    Note("review: " + std::to_string(n) + (filter_ == Filter::kDisagreements ? " layout(s) two people decided differently"
+                                                                            : " layout(s) decided by a person") +
+         "; h: who did what, F: another filter");
   } else if (s_.Step(-1, +1, Filter::kAll, true) < 0) {
     Note("nothing left to do: every layout is verified or rejected");
   }
