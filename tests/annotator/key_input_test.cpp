@@ -43,7 +43,7 @@ TEST_CASE("plain keys: characters, Enter, Tab, Backspace, control characters", "
   CHECK(IsChar(e[8], '\n'));  // Ctrl-J
 }
 
-TEST_CASE("UTF-8 is decoded; a byte that is not UTF-8 is dropped and never holds back the next key", "[keys]") {
+TEST_CASE("UTF-8 is decoded, and a byte that is not UTF-8 is dropped and never holds back the next key", "[keys]") {
   auto e = Decode("\xc3\xa9\xe6\x97\xa5\xf0\x9f\x8f\xa0");
   REQUIRE(e.size() == 3);
   CHECK(IsChar(e[0], 0xE9));

@@ -83,7 +83,7 @@ TEST_CASE("the editor's buffer: words, line breaks, deletion", "[text]") {
   CHECK(u.Text() == "a bc\n");
 }
 
-TEST_CASE("wrapping: at spaces, at every line break, by display width; the cursor's cell", "[text]") {
+TEST_CASE("wrapping: at spaces, at every line break, by display width, and the cursor's cell", "[text]") {
   Utf8Locale locale;
   TextEdit t("aaaa bbbb cc\ndd");
   auto rows = t.Wrap(6);

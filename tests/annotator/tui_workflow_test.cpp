@@ -145,7 +145,7 @@ TEST_CASE("multi-line text and word editing in the editor", "[tui][workflow][edi
   CHECK(test::OpenSession(ds.dir(), false)->state(0).coarse == "Line one\nLine two\n- Three big storeys");
 }
 
-TEST_CASE("overturning another person's rejection asks first; review shows who did what", "[tui][workflow]") {
+TEST_CASE("overturning another person's rejection asks first, and review shows who did what", "[tui][workflow]") {
   REQUIRE(HaveTmux());
   test::TempDataset ds;
   {
