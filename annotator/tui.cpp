@@ -214,6 +214,7 @@ struct Line {
   std::string text;
   short pair = kPairText;
   attr_t attr = A_NORMAL;
+  bool starts_item = false;  // the first line of a wrapped item (a violation): counted when cut off
 };
 
 // ---------------------------------------------------------------- the app
@@ -521,14 +522,24 @@ void App::DrawPanel(int top, int left, int width, int height) {
                   kPairTitle, A_BOLD});
   auto list_lines = RoomListLines(l, level_, room_, width, unicode_);
 
+  // Who decided, and why a rejection: shown before the rules, so never cut off by them.
   std::vector<Line> who;
   const AnnotationState& st = state();
-  if (!st.decided_by.empty() && st.decided_by != kAutoAnnotator &&
-      (st.status == AnnotationStatus::kVerified || st.status == AnnotationStatus::kRejected)) {
-    std::string text = std::string(StatusName(st.status)) + " by " + st.decided_by;
+  bool decided = st.status == AnnotationStatus::kVerified || st.status == AnnotationStatus::kRejected;
+  if (decided && (!st.decided_by.empty() || !st.reason.empty())) {
+    std::string text = std::string(StatusName(st.status));
+    std::string reason = st.reason;
+    if (st.decided_by == kAutoAnnotator) {
+      text += " by --auto";
+      if (reason.rfind("auto: ", 0) == 0) reason = reason.substr(6);
+    } else if (!st.decided_by.empty()) {
+      text += " by " + st.decided_by;
+    }
     int seconds = s_.effort(item_).seconds;
     if (seconds > 0) text += " (" + Seconds(seconds) + " on it in all)";
-    who.push_back({Shown(text), st.status == AnnotationStatus::kVerified ? kPairGood : kPairBad});
+    if (st.status == AnnotationStatus::kRejected && !reason.empty()) text += ": " + reason;
+    for (const std::string& w : WrapText(Shown(text), width))
+      who.push_back({w, st.status == AnnotationStatus::kVerified ? kPairGood : kPairBad});
   }
   auto ratings = s_.Ratings(item_);
   if (ratings.size() >= 2 || options_.review) {
@@ -538,22 +549,23 @@ void App::DrawPanel(int top, int left, int width, int height) {
     if (s_.Disagreement(item_)) who.push_back({"  they disagree", kPairBad, A_BOLD});
   }
 
-  std::vector<Line> rules;
+  // The rules block as whole items: the verdict, then each violation (wrapped).
+  std::vector<std::vector<Line>> rules;
   const ValidationReport& report = Report();
   if (report.valid()) {
-    rules.push_back({unicode_ ? "✓ passes all ten rules" : "OK passes all ten rules", kPairGood, A_BOLD});
+    rules.push_back({{unicode_ ? "✓ passes all ten rules" : "OK passes all ten rules", kPairGood, A_BOLD}});
   } else {
-    rules.push_back({std::to_string(report.violations.size()) + " rule violation" + (report.violations.size() == 1 ? "" : "s") +
-                         (fixes_.empty() ? "" : "   f: " + std::to_string(fixes_.size()) + " fix" + (fixes_.size() == 1 ? "" : "es")),
-                     kPairBad, A_BOLD});
+    rules.push_back({{std::to_string(report.violations.size()) + " rule violation" + (report.violations.size() == 1 ? "" : "s") +
+                          (fixes_.empty() ? "" : "   f: " + std::to_string(fixes_.size()) + " fix" + (fixes_.size() == 1 ? "" : "es")),
+                      kPairBad, A_BOLD}});
     for (const Violation& v : report.violations) {
       auto wrapped = WrapText(Shown(std::to_string(v.rule) + ": " + v.message), width - 3);
+      std::vector<Line> item;
       for (std::size_t i = 0; i < wrapped.size(); ++i)
-        rules.push_back({(i == 0 ? (unicode_ ? " ✗ " : " x ") : "   ") + wrapped[i], kPairBad});
+        item.push_back({(i == 0 ? (unicode_ ? " ✗ " : " x ") : "   ") + wrapped[i], kPairBad, A_NORMAL, true});
+      rules.push_back(std::move(item));
     }
   }
-  if (st.status == AnnotationStatus::kRejected && !st.reason.empty())
-    for (const std::string& w : WrapText(Shown("rejected: " + st.reason), width)) rules.push_back({w, kPairBad});
 
   // Room for each block: the list and who did what in full, the rules as far as they leave at least
   // four rows to the descriptions, then the descriptions.
@@ -575,16 +587,22 @@ void App::DrawPanel(int top, int left, int width, int height) {
     ++y;
   }
   for (const Line& ln : who) line(ln);
-  int rule_rows = std::min<int>(static_cast<int>(rules.size()), std::max(1, bottom - y - 4));
-  for (int i = 0; i < rule_rows; ++i) {
-    if (i == rule_rows - 1 && rule_rows < static_cast<int>(rules.size())) {
-      int hidden = 0;
-      for (int k = i; k < static_cast<int>(rules.size()); ++k) hidden += rules[k].text.rfind(" ", 0) == 0 && rules[k].text.rfind("   ", 0) != 0;
-      line({"  ... " + std::to_string(std::max(1, hidden)) + " more (? for the keys)", kPairBad});
-      break;
-    }
-    line(rules[i]);
+  // Whole items only, as many as leave four rows to the descriptions; then how many violations are left.
+  int rule_room = std::max(1, bottom - y - 4);
+  int used = 0;
+  std::size_t shown = 0;
+  for (; shown < rules.size(); ++shown) {
+    int need = static_cast<int>(rules[shown].size());
+    int reserve = shown + 1 < rules.size() ? 1 : 0;  // the "... more" line
+    if (shown > 0 && used + need + reserve > rule_room) break;
+    for (const Line& ln : rules[shown]) line(ln);
+    used += need;
   }
+  int hidden = 0;
+  for (std::size_t k = shown; k < rules.size(); ++k) hidden += !rules[k].empty() && rules[k][0].starts_item;
+  if (hidden > 0)
+    line({"  ... " + std::to_string(hidden) + " more violation" + (hidden == 1 ? "" : "s") + (fixes_.empty() ? "" : " (f: fixes)"),
+          kPairBad});
 
   // Descriptions share what is left.
   int left_rows = bottom - y;
