@@ -239,6 +239,9 @@ class App {
   void DrawPanel(int top, int left, int width, int height);
   void DrawStatus(int h, int w);
   void Modal(const std::string& title, const std::vector<std::string>& lines, int width);
+  // A dialog's background, with the rows it stands on blanked a column either side, so that no
+  // stray character of the screen below shows at its edges.
+  void ClearBox(int top, int left, int width, int height);
   // A modal question; returns the key that answered it.
   KeyEvent Ask(const std::string& title, const std::vector<std::string>& lines, int width = 76);
   bool Confirm(const std::string& title, const std::vector<std::string>& lines);
@@ -693,13 +696,22 @@ void App::Paint() {
   DrawStatus(h, w);
 }
 
+void App::ClearBox(int top, int left, int width, int height) {
+  int w = getmaxx(stdscr);
+  int from = std::max(0, left - 1), to = std::min(w, left + width + 1);
+  for (int y = 0; y < height; ++y) {
+    Put(top + y, from, std::string(static_cast<std::size_t>(to - from), ' '));
+    Put(top + y, left, std::string(static_cast<std::size_t>(width), ' '), kPairStatus);
+  }
+}
+
 void App::Modal(const std::string& title, const std::vector<std::string>& lines, int width) {
   int h, w;
   getmaxyx(stdscr, h, w);
   width = std::min(width, w - 2);
   int height = std::min(static_cast<int>(lines.size()) + 2, h - 2);
   int top = (h - height) / 2, left = (w - width) / 2;
-  for (int y = 0; y < height; ++y) Put(top + y, left, std::string(width, ' '), kPairStatus);
+  ClearBox(top, left, width, height);
   Put(top, left + 1, ClipToWidth(Shown(" " + title + " "), width - 2), kPairStatus, A_BOLD);
   for (int i = 0; i < height - 2; ++i) Put(top + 1 + i, left + 1, PadToWidth(Shown(lines[i]), width - 2), kPairStatus);
   refresh();
@@ -794,7 +806,7 @@ std::optional<std::string> App::EditText(const std::string& title, const std::st
     int height = std::clamp(static_cast<int>(rows.size()) + 4, 5, h - 2);
     int top = (h - height) / 2, left = (w - width) / 2;
     Paint();
-    for (int y = 0; y < height; ++y) Put(top + y, left, std::string(width, ' '), kPairStatus);
+    ClearBox(top, left, width, height);
     Put(top, left + 1, ClipToWidth(Shown(" " + title + " "), width - 2), kPairStatus, A_BOLD);
     int visible = height - 4;
     TextEdit::Cell cell = t.CursorCell(rows);
