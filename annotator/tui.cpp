@@ -23,7 +23,6 @@
 #include "annotator/fixes.h"
 #include "annotator/floorplan_canvas.h"
 #include "annotator/key_input.h"
-#include "annotator/plan_geometry.h"
 #include "annotator/screen_text.h"
 #include "annotator/text_edit.h"
 #include "annotator/utf8.h"
@@ -436,12 +435,21 @@ void App::DrawPlans(int top, int left, int width, int height) {
   int floors = std::max(1, l.LevelCount());
   // All floors side by side when each still gets a legible plan: 30 columns or more, and a metre at
   // least one row (two columns), so a 4 m room is 8 cells wide.
-  Bounds b = LayoutBounds(l);
+  // The building's extent (m), all floors: the canvas scales every floor alike.
+  double min_x = 1e300, max_x = -1e300, min_y = 1e300, max_y = -1e300;
+  for (const Room& r : l.rooms)
+    for (const Point& p : r.polygon) {
+      min_x = std::min(min_x, p.x);
+      max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y);
+      max_y = std::max(max_y, p.y);
+    }
+  double extent_x = max_x - min_x, extent_y = max_y - min_y;
   int canvas_h = height - 1;  // the caption row above the plans
   int gap = 3;
   auto scale = [&](int w) {
-    if (b.width() <= 0 || b.height() <= 0) return 0.0;
-    return std::min((canvas_h - 1) / b.height(), (w - 1) / (2.0 * b.width()));
+    if (!(extent_x > 0) || !(extent_y > 0)) return 0.0;
+    return std::min((canvas_h - 1) / extent_y, (w - 1) / (2.0 * extent_x));
   };
   int per = floors > 1 ? (width - gap * (floors - 1)) / floors : width;
   bool side = floors > 1 && per >= 30 && scale(per) >= 1.0;
