@@ -501,7 +501,7 @@ GeneratorDef Gadget() {
                          "knife-stand", "stationery", "tools"},
           .build = [](Gen& g) {
             const double w = g.w, d = g.d, h = g.h;
-            const int body = g.out.Part(g.Is("tools") ? g.rng.Pick(g.palette.accent) : g.rng.Pick(g.palette.metal));
+            const int body = g.out.Part(g.Is("tools") ? g.rng.Pick(g.palette.accent) : Appliance(g.style));
             const int dark = g.out.Part(ScreenBlack());
             if (g.Is("microwave")) {
               g.out.Box(body, {-w / 2, -d / 2 + 0.01, 0}, {w / 2, d / 2, h});

@@ -6,51 +6,19 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <numeric>
-#include <optional>
 #include <random>
 #include <sstream>
 
 #include "assets/asset.h"
 #include "assets/category.h"
 #include "assets/procedural.h"
+#include "ray_cast.h"
 
 namespace villa {
 namespace {
 
-// ------------------------------------------------------------------ rays (Moller-Trumbore, brute force)
-
-struct Ray {
-  Vec3 origin;
-  Vec3 dir;  // unit
-};
-
-// Distances along the ray to every triangle it crosses (t > 0), unsorted.
-std::vector<double> Hits(const TriangleMesh& mesh, const Ray& ray) {
-  std::vector<double> out;
-  for (const auto& t : mesh.triangles) {
-    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
-    const Vec3 e1 = b - a, e2 = c - a, p = Cross(ray.dir, e2);
-    const double det = Dot(e1, p);
-    if (std::abs(det) < 1e-15) continue;
-    const double inv = 1.0 / det;
-    const Vec3 s = ray.origin - a;
-    const double u = Dot(s, p) * inv;
-    if (u < -1e-9 || u > 1 + 1e-9) continue;
-    const Vec3 q = Cross(s, e1);
-    const double v = Dot(ray.dir, q) * inv;
-    if (v < -1e-9 || u + v > 1 + 1e-9) continue;
-    const double dist = Dot(e2, q) * inv;
-    if (dist > 1e-12) out.push_back(dist);
-  }
-  return out;
-}
-
-std::optional<double> FirstHit(const TriangleMesh& mesh, const Ray& ray) {
-  auto hits = Hits(mesh, ray);
-  if (hits.empty()) return std::nullopt;
-  return *std::min_element(hits.begin(), hits.end());
-}
+using test::FirstHit;
+using test::Ray;
 
 // ------------------------------------------------------------------ helpers
 
