@@ -229,6 +229,55 @@ std::string CanonicalId(const Entry& entry, const ParamValues& values) {
   return id;
 }
 
+}  // namespace
+
+std::vector<int> PieceRoots(const TriangleMesh& mesh) {
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = find(static_cast<int>(v));
+  return parent;
+}
+
+namespace {
+
+// What CheckSolid says of every piece, by vertex index (pieces share none) and in one sort rather than a
+// map per piece: each directed edge used once and its reverse once (closed, consistently oriented), and
+// each piece's signed volume > 0 (outward).
+bool EveryPieceClosed(const TriangleMesh& mesh) {
+  // An edge a->b as (min, max, a > b): closed and consistent means every undirected edge comes exactly
+  // twice, once in each direction, i.e. sorted keys pair up as k, k + 1 with no third.
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::uint64_t>(t[k]), b = static_cast<std::uint64_t>(t[(k + 1) % 3]);
+      keys.push_back(std::min(a, b) << 33 | std::max(a, b) << 1 | (a > b ? 1u : 0u));
+    }
+  std::sort(keys.begin(), keys.end());
+  for (size_t i = 0; i < keys.size(); i += 2)
+    if (i + 1 == keys.size() || keys[i + 1] != (keys[i] | 1u) || (keys[i] & 1u) ||
+        (i + 2 < keys.size() && keys[i + 2] >> 1 == keys[i] >> 1))
+      return false;
+  const std::vector<int> root = PieceRoots(mesh);
+  std::vector<double> volume(mesh.vertices.size(), 0.0);
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& t : mesh.triangles) {
+    volume[root[t[0]]] += Dot(mesh.vertices[t[0]], Cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
+    used[root[t[0]]] = true;
+  }
+  for (size_t v = 0; v < volume.size(); ++v)
+    if (used[v] && !(volume[v] > 0.0)) return false;
+  return true;
+}
+
 std::string Title(std::string_view category) {
   std::string s(category);
   std::replace(s.begin(), s.end(), '-', ' ');
@@ -310,28 +359,18 @@ Result<ProceduralAsset> MakeProceduralAsset(std::string_view id) {
   r.interaction_zone = category.zone;
   r.mesh.file = "";
   r.mesh.triangles = asset.mesh.TriangleCount();
-  r.mesh.watertight = true;
-  for (const AssetMeshPart& part : asset.mesh.parts)
-    for (const TriangleMesh& piece : MeshPieces(part.mesh)) r.mesh.watertight &= CheckSolid(piece).ok();
+  r.mesh.watertight = std::all_of(asset.mesh.parts.begin(), asset.mesh.parts.end(),
+                                  [](const AssetMeshPart& p) { return procedural::EveryPieceClosed(p.mesh); });
   r.mesh.manifold_edges = r.mesh.watertight ? 1.0 : 0.0;
   return asset;
 }
 
 std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh) {
-  std::vector<int> parent(mesh.vertices.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const auto& t : mesh.triangles) {
-    parent[find(t[1])] = find(t[0]);
-    parent[find(t[2])] = find(t[0]);
-  }
+  const std::vector<int> root = procedural::PieceRoots(mesh);
   std::map<int, TriangleMesh> pieces;                // by root, so pieces come in a fixed order
   std::vector<int> local(mesh.vertices.size(), -1);  // a vertex's index in its piece
   for (const auto& t : mesh.triangles) {
-    TriangleMesh& piece = pieces[find(t[0])];
+    TriangleMesh& piece = pieces[root[t[0]]];
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       if (local[t[k]] < 0) {
@@ -343,7 +382,7 @@ std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh) {
     piece.triangles.push_back(tri);
   }
   std::vector<TriangleMesh> out;
-  for (auto& [root, piece] : pieces) out.push_back(std::move(piece));
+  for (auto& [r, piece] : pieces) out.push_back(std::move(piece));
   return out;
 }
 

@@ -247,7 +247,7 @@ GeneratorDef Dispenser() {
 
 GeneratorDef Jar() {
   return {.name = "jar",
-          .description = "cosmetics jar or tube with a lid",
+          .description = "cosmetics jar with a lid",
           .categories = {"cosmetics"},
           .build = [](Gen& g) {
             g.out.Cylinder(g.out.Part(g.rng.Pick(g.palette.accent)), 0, 0, g.w / 2, g.d / 2, 0, 0.75 * g.h);
