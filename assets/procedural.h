@@ -13,6 +13,7 @@
 // mesh's exact bounding box, which is the requested w x d x h. Every piece of a mesh is a closed solid with
 // outward normals; pieces of one object may touch or overlap (check them one at a time: the pieces of a part
 // share no vertex index). Coordinates are multiples of 0.1 mm, so the record's 4-decimal JSON is exact.
+// Every function here is safe to call from several threads at once (no shared mutable state).
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -70,7 +71,7 @@ std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh);
 
 // The canonical id for an object of `category` about `size` (m, w x d x h; each side clamped into the
 // category's usual range and rounded to mm), in `style`, varied by `seed`. Errors: unknown category, a
-// category no generator makes, unknown style.
+// category no generator makes, unknown style, a size that is not finite.
 Result<std::string> ProceduralAssetId(std::string_view category, Vec3 size, std::string_view style, std::uint32_t seed);
 
 }  // namespace villa

@@ -400,6 +400,8 @@ Result<std::string> ProceduralAssetId(std::string_view category_name, Vec3 size,
   const auto& styles = ProceduralStyles();
   if (std::find(styles.begin(), styles.end(), style) == styles.end())
     return Error{"style \"" + procedural::Cut(style) + "\" is not one of " + procedural::Join(styles)};
+  if (!std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z))
+    return Error{"size of a " + std::string(category_name) + " must be finite numbers (m)"};
   procedural::ParamValues values;
   if (entry->def.categories.size() > 1) values.words["category"] = std::string(category_name);
   auto fit = [](double v, double lo, double hi) {

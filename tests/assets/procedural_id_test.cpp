@@ -145,6 +145,9 @@ TEST_CASE("ProceduralAssetId clamps the size into the category's range and write
   auto unknown = ProceduralAssetId("spaceship", {1, 1, 1}, "modern", 0);
   REQUIRE_FALSE(unknown.ok());
   CHECK(unknown.error() == "unknown category \"spaceship\"");
+  auto nan = ProceduralAssetId("sofa", {std::nan(""), 1, 1}, "modern", 0);
+  REQUIRE_FALSE(nan.ok());
+  CHECK(nan.error() == "size of a sofa must be finite numbers (m)");
   auto style = ProceduralAssetId("sofa", {2, 1, 1}, "baroque", 0);
   REQUIRE_FALSE(style.ok());
   CHECK(style.error() == "style \"baroque\" is not one of modern, classic, rustic, scandinavian");
@@ -156,7 +159,7 @@ std::set<std::string> MaterialNames(const ProceduralAsset& a) {
   return out;
 }
 
-TEST_CASE("Seeds and styles vary an asset; one id always gives the same one", "[assets][procedural]") {
+TEST_CASE("Seeds and styles vary an asset, and one id always gives the same one", "[assets][procedural]") {
   const ProceduralAsset one = Make("proc:books?seed=1"), two = Make("proc:books?seed=2");
   CHECK(one.mesh.Merged().vertices != two.mesh.Merged().vertices);
   CHECK(Make("proc:books?seed=1").mesh.Merged().vertices == one.mesh.Merged().vertices);
