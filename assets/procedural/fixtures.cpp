@@ -313,17 +313,18 @@ GeneratorDef Laptop() {
           }};
 }
 
-// A lamp shade: a thin frustum open at both ends, bottom radius 1 and top radius `top` (relative).
-void Shade(Gen& g, int part, double z0, double z1, double top) {
-  g.out.VerticalLathe(part, {{0.95, z0}, {1.0, z0}, {top, z1}, {top - 0.05, z1}}, 0, 0, g.w / 2, g.d / 2, 24);
+// A lamp shade about (0, cy): a thin frustum open at both ends, bottom radii (rx, ry), the top `top` times
+// smaller.
+void Shade(Gen& g, int part, double cy, double rx, double ry, double z0, double z1, double top) {
+  g.out.VerticalLathe(part, {{0.95, z0}, {1.0, z0}, {top, z1}, {top - 0.05, z1}}, 0, cy, rx, ry, 24);
 }
 
 GeneratorDef Lamp() {
   return {.name = "lamp",
           .description =
-              "floor lamp (base, pole, shade), table lamp (turned body, shade) or ceiling pendant (canopy at the top, "
-              "cord, dome)",
-          .categories = {"floor-lamp", "table-lamp", "ceiling-lamp"},
+              "floor lamp (base, pole, shade), table lamp (turned body, shade), wall lamp (back plate at +y, arm, "
+              "shade) or ceiling pendant (canopy at the top, cord, dome)",
+          .categories = {"floor-lamp", "table-lamp", "wall-lamp", "ceiling-lamp"},
           .build = [](Gen& g) {
             const int metal = g.out.Part(g.rng.Pick(g.palette.metal));
             const int shade =
@@ -336,9 +337,19 @@ GeneratorDef Lamp() {
               g.out.Cylinder(metal, 0, 0, canopy, canopy, g.h - 0.03, g.h, 16);
               return;
             }
+            if (g.Is("wall-lamp")) {
+              const double plate = std::min(0.015, 0.2 * g.d), ry = std::min(g.w / 2, 0.4 * g.d), cy = -g.d / 2 + ry;
+              const double sh = 0.5 * g.h, arm_z = g.h - 0.6 * sh;
+              g.out.Box(metal, {-std::min(0.04, 0.4 * g.w), g.d / 2 - plate, 0},
+                        {std::min(0.04, 0.4 * g.w), g.d / 2, 0.75 * g.h});
+              Shade(g, shade, cy, g.w / 2, ry, g.h - sh, g.h, 0.7);
+              if (g.d / 2 - plate - cy > 0.005)
+                g.out.Tube(metal, {0, g.d / 2 - plate, arm_z}, {0, cy, arm_z}, std::min(0.006, 0.1 * g.h));
+              return;
+            }
             const bool floor = g.Is("floor-lamp");
             const double sh = floor ? std::min(0.35, 0.3 * g.h) : 0.45 * g.h;
-            Shade(g, shade, g.h - sh, g.h, 0.7);
+            Shade(g, shade, 0, g.w / 2, g.d / 2, g.h - sh, g.h, 0.7);
             if (floor) {
               g.out.Cylinder(metal, 0, 0, 0.6 * g.w / 2, 0.6 * g.d / 2, 0, 0.03, 24);
               g.out.Cylinder(metal, 0, 0, 0.012, 0.012, 0.03, g.h - 0.4 * sh, 8);

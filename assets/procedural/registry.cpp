@@ -55,6 +55,9 @@ std::vector<Entry> MakeEntries() {
     for (GeneratorDef& d : group()) defs.push_back(std::move(d));
   std::vector<Entry> entries;
   for (GeneratorDef& def : defs) {
+    // A category a generator can make but this build's vocabulary lacks is left out (the vocabulary and the
+    // generators grow on different branches); the tests check every category of the vocabulary is made.
+    std::erase_if(def.categories, [](const std::string& c) { return FindCategory(c) == nullptr; });
     ProceduralGenerator g{def.name, def.description, def.categories, def.extra};
     if (def.categories.size() > 1) g.params.push_back(ChoiceParam("category", "what the asset is", def.categories));
     g.params.push_back(SizeParam("w", "width, along x", def.categories, &Vec3::x));
