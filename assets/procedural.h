@@ -21,6 +21,7 @@
 
 #include "assets/asset.h"
 #include "assets/asset_mesh.h"
+#include "assets/retrieval.h"
 #include "util/result.h"
 
 namespace villa {
@@ -73,5 +74,21 @@ std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh);
 // category's usual range and rounded to mm), in `style`, varied by `seed`. Errors: unknown category, a
 // category no generator makes, unknown style, a size that is not finite.
 Result<std::string> ProceduralAssetId(std::string_view category, Vec3 size, std::string_view style, std::uint32_t seed);
+
+// ---- adapters for the library and retrieval (assets/asset_library.h, assets/retrieval.h)
+
+// The mesh of a `proc:` id: AssetLibrary::SetProceduralMeshMaker(MakeProceduralMesh).
+Result<AssetMesh> MakeProceduralMesh(std::string_view id);
+
+// The style a phrase asks for ("a rustic oak table" -> "rustic"; "nordic", "scandi" -> scandinavian;
+// "traditional", "antique", "victorian" -> classic; "farmhouse", "country", "cottage" -> rustic;
+// "contemporary", "minimalist", "industrial" -> modern); `fallback` when it names none.
+std::string ProceduralStyleIn(std::string_view phrase, std::string_view fallback = "modern");
+
+// What procedural generators offer a retrieval query (AssetRetriever::SetOffer(ProceduralOffer)): the
+// asset of the query's category (or the category its text names) at the wanted size (or the middle of
+// the category's range), in the style its text names, the seed from the query's text (the same query gets
+// the same asset, different ones vary). Empty when no category is known.
+std::vector<AssetRecord> ProceduralOffer(const RetrievalQuery& query);
 
 }  // namespace villa

@@ -1,9 +1,12 @@
 // The generator table, ids (parse, defaults, canonical form) and the asset record of a procedural asset.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <sstream>
 
+#include "assets/category_phrase.h"
 #include "assets/procedural/generator.h"
 
 namespace villa {
@@ -418,6 +421,55 @@ Result<std::string> ProceduralAssetId(std::string_view category_name, Vec3 size,
   values.numbers["seed"] = seed;
   procedural::Complete(*entry, values);
   return procedural::CanonicalId(*entry, values);
+}
+
+Result<AssetMesh> MakeProceduralMesh(std::string_view id) {
+  auto asset = MakeProceduralAsset(id);
+  if (!asset) return Error{asset.error()};
+  return std::move(asset->mesh);
+}
+
+std::string ProceduralStyleIn(std::string_view phrase, std::string_view fallback) {
+  static const std::vector<std::pair<std::string, std::string>> words = {{"modern", "modern"},
+                                                                         {"contemporary", "modern"},
+                                                                         {"minimalist", "modern"},
+                                                                         {"minimal", "modern"},
+                                                                         {"industrial", "modern"},
+                                                                         {"classic", "classic"},
+                                                                         {"classical", "classic"},
+                                                                         {"traditional", "classic"},
+                                                                         {"antique", "classic"},
+                                                                         {"victorian", "classic"},
+                                                                         {"baroque", "classic"},
+                                                                         {"rustic", "rustic"},
+                                                                         {"farmhouse", "rustic"},
+                                                                         {"country", "rustic"},
+                                                                         {"cottage", "rustic"},
+                                                                         {"cabin", "rustic"},
+                                                                         {"scandinavian", "scandinavian"},
+                                                                         {"scandi", "scandinavian"},
+                                                                         {"nordic", "scandinavian"},
+                                                                         {"danish", "scandinavian"}};
+  // Whole words, case-insensitive; the first style word in the phrase wins.
+  std::string lower;
+  for (char c : phrase) lower += std::isalpha(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : ' ';
+  std::istringstream in(lower);
+  for (std::string word; in >> word;)
+    for (const auto& [w, style] : words)
+      if (word == w) return style;
+  return std::string(fallback);
+}
+
+std::vector<AssetRecord> ProceduralOffer(const RetrievalQuery& query) {
+  const CategoryInfo* category = query.category.empty() ? CategoryInPhrase(query.text) : FindCategory(query.category);
+  if (!category || category->generator.empty()) return {};
+  const Vec3 size = query.size.value_or((category->size_min + category->size_max) * 0.5);
+  const auto seed = static_cast<std::uint32_t>(procedural::HashText(query.Text()));
+  auto id = ProceduralAssetId(category->name, size, ProceduralStyleIn(query.text), seed);
+  if (!id) return {};
+  auto asset = MakeProceduralAsset(*id);
+  if (!asset) return {};
+  return {std::move(asset->record)};
 }
 
 }  // namespace villa

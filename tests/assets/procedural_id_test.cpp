@@ -6,7 +6,9 @@
 #include <set>
 
 #include "assets/asset.h"
+#include "assets/asset_library.h"
 #include "assets/category.h"
+#include "assets/embedder.h"
 #include "assets/procedural.h"
 #include "ray_cast.h"
 
@@ -266,6 +268,61 @@ TEST_CASE("Small things fit the compartments made for them", "[assets][procedura
     CHECK(AnyFits(Make("proc:chest" + s), Make("proc:toy" + s), 0));
     CHECK(AnyFits(Make("proc:cabinet" + s), Make("proc:folded-clothes" + s), 0));
   }
+}
+
+TEST_CASE("Adapters: the library builds proc: meshes, retrieval ranks procedural offers", "[assets][procedural]") {
+  auto mesh = MakeProceduralMesh("proc:bookcase?rows=3");
+  REQUIRE(mesh.ok());
+  CHECK(mesh->TriangleCount() == Make("proc:bookcase?rows=3").record.mesh.triangles);
+  auto bad = MakeProceduralMesh("proc:bookcase?rows=12");
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.error() == "proc:bookcase?rows=12: rows = 12 is out of range [1, 8]");
+
+  AssetLibrary library = AssetLibrary::FromRecords({});
+  library.SetProceduralMeshMaker(MakeProceduralMesh);
+  auto shared = library.Mesh("proc:plate?seed=2");
+  REQUIRE(shared.ok());
+  CHECK((*shared)->TriangleCount() == Make("proc:plate?seed=2").record.mesh.triangles);
+
+  CHECK(ProceduralStyleIn("a Rustic oak table") == "rustic");
+  CHECK(ProceduralStyleIn("nordic-style sofa") == "scandinavian");
+  CHECK(ProceduralStyleIn("an antique, ornate mirror") == "classic");
+  CHECK(ProceduralStyleIn("countryside") == "modern");  // whole words only
+  CHECK(ProceduralStyleIn("a table", "rustic") == "rustic");
+
+  RetrievalQuery query;
+  query.category = "bookcase";
+  query.text = "tall scandinavian shelves";
+  query.size = Vec3{0.9, 0.3, 1.8};
+  const std::vector<AssetRecord> offer = ProceduralOffer(query);
+  REQUIRE(offer.size() == 1);
+  CHECK(offer[0].category == "bookcase");
+  CHECK(offer[0].size == Vec3{0.9, 0.3, 1.8});
+  CHECK(offer[0].id.find("style=scandinavian") != std::string::npos);
+  CHECK(ProceduralOffer(query)[0].id == offer[0].id);
+  query.text = "tall shelves";
+  CHECK(ProceduralOffer(query)[0].id != offer[0].id);  // another query, another seed
+  RetrievalQuery by_text;
+  by_text.text = "a low coffee table";
+  REQUIRE(ProceduralOffer(by_text).size() == 1);
+  CHECK(ProceduralOffer(by_text)[0].category == "coffee-table");
+  CHECK(ProceduralOffer(RetrievalQuery{}).empty());
+  RetrievalQuery unknown;
+  unknown.category = "spaceship";
+  CHECK(ProceduralOffer(unknown).empty());
+
+  // With no library at all, the offer is what retrieval ranks first, cavity and all.
+  auto retriever = AssetRetriever::Build({}, std::make_shared<LexicalEmbedder>());
+  REQUIRE(retriever.ok());
+  retriever->SetOffer(ProceduralOffer);
+  RetrievalQuery books;
+  books.category = "bookcase";
+  books.needs_cavity = true;
+  auto ranked = retriever->Rank(books);
+  REQUIRE(ranked.ok());
+  REQUIRE_FALSE(ranked->ranked.empty());
+  CHECK(ranked->ranked[0].asset->id.rfind("proc:bookcase?", 0) == 0);
+  CHECK_FALSE(ranked->ranked[0].asset->cavities.empty());
 }
 
 }  // namespace
