@@ -9,16 +9,17 @@
 
 namespace villa {
 
-// SplitMix64's increment (2^64 / golden ratio) and its output function applied to `state + gamma`: the
-// value a SplitMix64 stream seeded with `x` gives first. A good 64-bit mixer on its own (every input bit
-// moves every output bit), so it also serves to hash integers and to derive seeds.
+// SplitMix64's increment (2^64 / golden ratio) and its output function (the mixer): every input bit
+// moves every output bit, so it also serves to hash integers and finish other hashes.
 inline constexpr std::uint64_t kSplitMix64Gamma = 0x9e3779b97f4a7c15ULL;
-constexpr std::uint64_t SplitMix64Hash(std::uint64_t x) {
-  std::uint64_t z = x + kSplitMix64Gamma;
+constexpr std::uint64_t SplitMix64Mix(std::uint64_t z) {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
+// The mixer applied to `x + gamma`: the value a SplitMix64 stream seeded with `x` gives first; hashes
+// integers and derives seeds.
+constexpr std::uint64_t SplitMix64Hash(std::uint64_t x) { return SplitMix64Mix(x + kSplitMix64Gamma); }
 
 // A SplitMix64 stream: the state advances by the gamma and each output is the mixed state. Cheap to copy
 // and to seed; the same seed gives the same numbers everywhere.
