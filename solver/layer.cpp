@@ -1,6 +1,7 @@
 #include "solver/layer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -79,6 +80,19 @@ std::vector<Ring> ConvexPieces(const Ring& ring) {
   return pieces;
 }
 
+// Height of an object with the objects stacked on its surfaces, in its own unscaled units.
+double StackTop(const RoomState& state, int i) {
+  const ProblemObject& o = state.objects[i];
+  double top = o.asset.size.z;
+  for (int c : state.children[i]) {
+    if (state.objects[c].relation != Relation::kOnTop || o.asset.support_surfaces.empty()) continue;
+    const int k = std::clamp(state.placements[c].surface, 0, static_cast<int>(o.asset.support_surfaces.size()) - 1);
+    const double child = StackTop(state, c) * state.objects[c].scale_max / state.placements[i].pose.scale;
+    top = std::max(top, o.asset.support_surfaces[k].z + child);
+  }
+  return top;
+}
+
 Body MakeBody(const RoomState& state, int i) {
   Body b;
   b.object = i;
@@ -95,6 +109,7 @@ Body MakeBody(const RoomState& state, int i) {
   b.hx = 0.5 * o.asset.size.x;
   b.hy = 0.5 * o.asset.size.y;
   b.height = o.asset.size.z;
+  b.top = StackTop(state, i);
   b.wall = pl.wall;
   if (b.wall >= 0 && b.wall < static_cast<int>(state.problem->walls.size())) {
     const WallEdge& w = state.problem->walls[b.wall];
@@ -247,6 +262,14 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     layer.bodies.push_back(local_body(static_cast<int>(i), Motion::kFixed));
   }
   Index(layer, state);
+  // The room's keep-outs in the parent's frame: a TV on its stand stays out of the window zone.
+  for (const KeepOut& k : state.problem->keep_outs) {
+    Ring local;
+    for (Point v : k.polygon) local.push_back(layer.frame.ToLocal(v));
+    for (Ring& piece : ConvexPieces(local)) {
+      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, true, true});
+    }
+  }
   return layer;
 }
 
@@ -269,10 +292,11 @@ void WriteBack(const Layer& layer, int body, RoomState& state) {
 
 bool ZoneExempt(const RoomState& state, int owner, int other) {
   const ProblemObject& o = state.objects[owner];
-  const std::string& id = state.objects[other].id;
-  if (o.zone && std::find(o.zone->exempt.begin(), o.zone->exempt.end(), id) != o.zone->exempt.end()) return true;
-  for (int a = state.parent[other]; a >= 0; a = state.parent[a]) {
+  // The exempt object and what stands on it or in it (the remote on the coffee table).
+  for (int a = other; a >= 0; a = state.parent[a]) {
     if (a == owner) return true;
+    const std::string& id = state.objects[a].id;
+    if (o.zone && std::find(o.zone->exempt.begin(), o.zone->exempt.end(), id) != o.zone->exempt.end()) return true;
   }
   return false;
 }
@@ -306,7 +330,7 @@ bool MissedPair(const Layer& layer, const RoomState& state, const std::vector<Po
   return false;
 }
 
-BodyShape BodyBox(const Body& body) { return {0.0, 0.0, body.hx, body.hy, 0.0, body.height}; }
+BodyShape BodyBox(const Body& body) { return {0.0, 0.0, body.hx, body.hy, 0.0, body.top}; }
 
 std::vector<BodyShape> ZoneShapes(const RoomState& state, int object) {
   const ProblemObject& o = state.objects[object];
@@ -361,8 +385,15 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     const double margin = room ? o.bounds_margin : o.child_gap;
     add(FootprintInPolygonResidual::Create(shape, layer.region, margin, o.weight_bounds), {b}, true);
     if (!layer.reflex.empty()) add(ReflexVertexResidual::Create(shape, layer.reflex, margin, o.weight_bounds), {b}, true);
+    if (room && body.wall >= 0 && (body.motion == Motion::kAlongWall || body.motion == Motion::kOnWall)) {
+      const WallEdge& w = state.problem->walls[body.wall];
+      add(WallSpanResidual::Create(shape, w.a, body.wall_dir, geo::Dist(w.a, w.b), o.bounds_margin, o.weight_bounds), {b}, true);
+    }
     for (const Prism& prism : layer.prisms) {
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
+      if (slack >= 0.0 && !geo::Inside({body.p[0], body.p[1]}, prism.polygon) &&
+          geo::DistToRing({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
+        continue;
       add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), o.object_gap, o.weight_keep_out),
           {b}, true);
     }
@@ -394,6 +425,9 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
           const Body& other = layer.bodies[b];
           if (b == a || !other.active || other.covering || !(movable(a) || movable(b)) || !wanted(a, b)) continue;
           if (ZoneExempt(state, owner.object, other.object)) continue;
+          if (slack >= 0.0 && std::hypot(owner.p[0] - other.p[0], owner.p[1] - other.p[1]) >
+                                  Radius(owner) + 2.0 * zone.hx + 2.0 * zone.hy + Radius(other) + slack)
+            continue;
           add(InteractionZoneResidual::Create(zone, BodyBox(other), o.weight_zone), {a, b}, false);
         }
       }
@@ -423,6 +457,7 @@ LayerCost Evaluate(const std::vector<Term>& terms) {
     double sum = 0.0;
     for (int k = 0; k < m && k < 64; ++k) sum += residuals[k] * residuals[k];
     (t.hard ? cost.hard : cost.soft) += sum;
+    if (!t.hard) cost.soft_linear += std::sqrt(sum);
   }
   return cost;
 }
@@ -437,6 +472,11 @@ PolishStats Polish(Layer& layer, const RoomState& state, const SolveOptions& o) 
   double slack = o.pair_slack;
   std::vector<Point> start_xy;
   for (const Body& b : layer.bodies) start_xy.push_back({b.p[0], b.p[1]});
+  // The start, to fall back on: a relation may pull a body through an obstacle into a pocket where the
+  // penetration's gradient points where the body cannot move (a painting slid behind a wardrobe).
+  std::vector<std::array<double, 5>> start_params;
+  for (const Body& b : layer.bodies) start_params.push_back({b.p[0], b.p[1], b.p[2], b.p[3], b.s[0]});
+  const LayerCost start_cost = Evaluate(MakeTerms(layer, state, o, -1, -1.0));
   for (int round = 0; round < 2; ++round) {
     std::vector<Term> terms = MakeTerms(layer, state, o, -1, slack);
     ceres::Problem::Options po;
@@ -474,9 +514,9 @@ PolishStats Polish(Layer& layer, const RoomState& state, const SolveOptions& o) 
     so.num_threads = 1;
     so.logging_type = ceres::SILENT;
     so.minimizer_progress_to_stdout = false;
-    so.function_tolerance = 1e-10;
-    so.gradient_tolerance = 1e-12;
-    so.parameter_tolerance = 1e-10;
+    so.function_tolerance = 1e-7;
+    so.gradient_tolerance = 1e-10;
+    so.parameter_tolerance = 1e-8;
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
     ++stats.solves;
@@ -485,6 +525,17 @@ PolishStats Polish(Layer& layer, const RoomState& state, const SolveOptions& o) 
     slack = -1.0;  // a pair left out at the start met during the solve: solve again with every pair
   }
   stats.cost = Evaluate(MakeTerms(layer, state, o, -1, -1.0));
+  // Tolerated: hard terms eaten into their margins by about a centimetre (a compromise with a relation);
+  // more means a body was pushed into something: keep the start.
+  const double tolerated = std::pow(o.weight_collision * 0.01, 2);
+  if (stats.cost.hard > start_cost.hard + tolerated) {
+    for (size_t k = 0; k < layer.bodies.size(); ++k) {
+      Body& b = layer.bodies[k];
+      std::copy(start_params[k].begin(), start_params[k].begin() + 4, b.p);
+      b.s[0] = start_params[k][4];
+    }
+    stats.cost = start_cost;
+  }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

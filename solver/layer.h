@@ -38,6 +38,9 @@ struct Body {
   bool covering = false;       // a floor covering (rug): no pair terms
   bool scalable = false;       // its scale range is not just 1
   double hx = 0.0, hy = 0.0, height = 0.0;  // asset half width, half depth, height (unscaled, m)
+  // Top of the body with what stands on its surfaces (a TV on its stand), unscaled m: the box other
+  // layers' terms see, so a stand whose TV would reach into a window zone keeps away from the window.
+  double top = 0.0;
   bool ZFree() const { return motion == Motion::kOnWall; }
 };
 
@@ -106,8 +109,9 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
                             double slack);
 
 struct LayerCost {
-  double hard = 0.0;  // sum of squared hard residuals
-  double soft = 0.0;
+  double hard = 0.0;         // sum of squared hard residuals
+  double soft = 0.0;         // sum of squared soft residuals
+  double soft_linear = 0.0;  // sum of the soft terms' residual norms (weighted m or rad: E_sem's units)
 };
 LayerCost Evaluate(const std::vector<Term>& terms);
 

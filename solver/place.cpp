@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <set>
 
@@ -61,9 +62,11 @@ OrientedBox LayerBox(const Body& b) {
 // opening (the nightstand beside the bed, the cabinet next to the door).
 std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame& wf, const WallEdge& wall, double hx,
                                    double hy, double gap, double object_gap) {
-  std::vector<double> ts = {hx + 0.02, wf.length - hx - 0.02, 0.5 * wf.length};
+  // The ends keep 2 cm to the wall's ends (the solver's wall-span margin is 1 cm).
+  const double end = hx + 0.02;
+  std::vector<double> ts = {end, wf.length - end, 0.5 * wf.length};
   const double step = std::max(0.1, wf.length / 40.0);
-  for (double t = hx; t <= wf.length - hx + 1e-9; t += step) ts.push_back(t);
+  for (double t = end; t <= wf.length - end + 1e-9; t += step) ts.push_back(t);
   for (size_t q = 0; q < layer.bodies.size(); ++q) {
     const Body& other = layer.bodies[q];
     if (static_cast<int>(q) == self || !other.active || other.covering) continue;
@@ -82,23 +85,57 @@ std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame
     ts.push_back(o.t0 - hx - 0.12);
     ts.push_back(o.t1 + hx + 0.12);
   }
-  std::erase_if(ts, [&](double t) { return t < -hx || t > wf.length + hx; });
+  // The whole width stays on the wall: past its end (beyond an inner corner) there is no wall behind.
+  std::erase_if(ts, [&](double t) { return t < end - 1e-9 || t > wf.length - end + 1e-9; });
   return ts;
 }
 
-// A body standing on the floor with its back `gap` from a wall, facing into the room.
+// A body standing on the floor with its back `gap` from a wall, facing into the room. `side_room`: the
+// wall length the objects meant to stand beside it need on each side (nightstands, side tables).
 void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_index, double gap, double object_gap,
-               double pref, std::vector<Candidate>& out) {
+               double side_room, std::vector<Candidate>& out) {
   const Body& b = layer.bodies[self];
   const WallEdge& wall = state.problem->walls[wall_index];
   const WallFrame wf = FrameOfWall(wall);
   const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
   for (double t : AlongWallStops(layer, self, wf, wall, hx, hy, gap, object_gap)) {
     const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, gap + hy));
-    // Big anchors prefer the middle of their wall a little (a bed centred on its wall).
-    const double centred = hx > 0.5 ? 0.02 * std::abs(t - 0.5 * wf.length) : 0.0;
-    out.push_back({c.x, c.y, b.p[2], wf.yaw_in, wall_index, pref + centred});
+    // Big anchors prefer the middle of their wall a little (a bed centred on its wall), and room beside
+    // them for what belongs there.
+    double pref = hx > 0.5 ? 0.02 * std::abs(t - 0.5 * wf.length) : 0.0;
+    pref += 0.3 * (std::max(0.0, side_room - (t - hx)) + std::max(0.0, side_room - (wf.length - t - hx)));
+    out.push_back({c.x, c.y, b.p[2], wf.yaw_in, wall_index, pref});
   }
+}
+
+// Wall length the objects that stand next to (or left or right of) this one need on each side.
+double SideRoom(const RoomState& state, int object) {
+  double need = 0.0;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.target != state.objects[object].id) continue;
+    if (e.relation != SemanticRelation::kNextTo && e.relation != SemanticRelation::kLeftOf &&
+        e.relation != SemanticRelation::kRightOf)
+      continue;
+    const int s = state.Find(e.source);
+    if (s >= 0 && state.parent[s] < 0) need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
+  }
+  return need;
+}
+
+// A small pull toward the tight end of distance relations (a nightstand flush with the bed rather than
+// half a metre off), in metres of the relation's own units.
+double Closeness(const Layer& layer, int self, const RoomState& state) {
+  double pref = 0.0;
+  const std::string& id = state.objects[layer.bodies[self].object].id;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.relation != SemanticRelation::kNextTo && e.relation != SemanticRelation::kNear) continue;
+    if (e.source != id && e.target != id) continue;
+    const int other = state.Find(e.source == id ? e.target : e.source);
+    if (other < 0 || layer.body_of[other] < 0 || !layer.bodies[layer.body_of[other]].active) continue;
+    const double gap = -PlanDepth(LayerBox(layer.bodies[self]), LayerBox(layer.bodies[layer.body_of[other]]));
+    pref += e.relation == SemanticRelation::kNextTo ? 0.05 * std::max(0.0, gap) : 0.02 * std::abs(gap - 0.8);
+  }
+  return pref;
 }
 
 // Hung on a wall: along the wall at eye level, at the usual heights, or above a related object.
@@ -124,7 +161,9 @@ void OnWallSlots(const Layer& layer, int self, const RoomState& state, const std
     const WallFrame wf = FrameOfWall(wall);
     std::vector<double> ts = AlongWallStops(layer, self, wf, wall, hx, hy, o.wall_gap, 0.05);
     for (int t : targets) {
-      ts.push_back(geo::Dot(geo::Sub(Point{layer.bodies[t].p[0], layer.bodies[t].p[1]}, wf.a), wf.d));
+      if (wf.length < 2.0 * (hx + 0.02)) break;
+      const double along = geo::Dot(geo::Sub(Point{layer.bodies[t].p[0], layer.bodies[t].p[1]}, wf.a), wf.d);
+      ts.push_back(std::clamp(along, hx + 0.02, wf.length - hx - 0.02));
     }
     for (double t : ts) {
       const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, o.wall_gap + hy));
@@ -148,7 +187,7 @@ void AroundTarget(const Layer& layer, int self, int target, const std::vector<Se
   int only_side = -1;  // 0 front, 1 back, 2 left, 3 right (target's frame)
   for (const SemanticEdge& e : edges) {
     switch (e.relation) {
-      case SemanticRelation::kNextTo: gaps.insert({0.05, 0.2}); break;
+      case SemanticRelation::kNextTo: gaps.insert({0.05, 0.2, 0.45}); break;
       case SemanticRelation::kNear: gaps.insert({0.55, 0.9, 1.3}); break;
       case SemanticRelation::kFar: gaps.insert({1.6, 2.4}); break;
       case SemanticRelation::kCentered: centred = true; break;
@@ -263,7 +302,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   if (b.motion == Motion::kAlongWall) {
     for (size_t w = 0; w < problem.walls.size(); ++w) {
       if (obj.wall >= 0 && obj.wall != static_cast<int>(w)) continue;
-      WallSlots(layer, self, state, static_cast<int>(w), obj.wall_gap, o.object_gap, 0.0, out);
+      WallSlots(layer, self, state, static_cast<int>(w), obj.wall_gap, o.object_gap, SideRoom(state, b.object), out);
     }
     return out;
   }
@@ -298,7 +337,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
     // Hubs (a dining table with its chairs, a rug) keep room around them; loners go by a wall.
     c.pref += hub ? -0.1 * std::min(clearance, 1.5) : 0.1 * std::min(clearance, 3.0);
     // With relations to honour, the grid is a fallback behind the slots around the targets.
-    if (around > 0) c.pref += 0.5;
+    if (around > 0) c.pref += 0.1;
     out.push_back(c);
   }
   return out;
@@ -345,56 +384,146 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self) {
 
 }  // namespace
 
-double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter,
-                 PlaceStats* stats) {
+namespace {
+
+struct Scored {
+  Candidate c;
+  double score = 0.0;
+  double hard = 0.0;
+};
+
+// Every candidate of the body scored against the active bodies (hard violations far behind), best first;
+// at most `keep` of them. The body's pose is left as it was.
+std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng,
+                                   double jitter, size_t keep, PlaceStats* stats) {
   Body& b = layer.bodies[self];
+  const bool was_active = b.active;
   b.active = true;
   const std::vector<Candidate> candidates =
       layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o) : ChildCandidates(layer, self);
-  std::vector<Term> terms = MakeTerms(layer, state, o, self, -1.0);
   const double saved[4] = {b.p[0], b.p[1], b.p[2], b.p[3]};
   const int saved_wall = b.wall;
   const Point saved_dir = b.wall_dir;
-  double best_score = 1e300, best_hard = 1e300;
-  Candidate best;
-  bool any = false;
-  const std::vector<double> classes =
-      layer.kind == Layer::Kind::kRoom ? RoomYawClasses(*state.problem) : std::vector<double>{0.0};
+  // A wall-bound body's terms depend on its wall (the span term): one set per wall the candidates use.
+  std::map<int, std::vector<Term>> terms_by_wall;
+  auto terms_for = [&](int wall) -> const std::vector<Term>& {
+    const int key = wall >= 0 ? wall : saved_wall;
+    auto it = terms_by_wall.find(key);
+    if (it != terms_by_wall.end()) return it->second;
+    b.wall = key;
+    b.wall_dir = key >= 0 ? geo::Unit(geo::Sub(state.problem->walls[key].b, state.problem->walls[key].a)) : saved_dir;
+    return terms_by_wall.emplace(key, MakeTerms(layer, state, o, self, -1.0)).first->second;
+  };
+  std::vector<Scored> ranked;
   for (const Candidate& c : candidates) {
     b.p[0] = c.x;
     b.p[1] = c.y;
     b.p[2] = c.z;
     b.p[3] = c.yaw;
-    const LayerCost cost = Evaluate(terms);
+    const LayerCost cost = Evaluate(terms_for(c.wall));
     const double noise = jitter > 0.0 ? jitter * rng.Unit() : 0.0;
-    const double score = cost.hard > 1e-10 ? 1e6 + cost.hard : cost.soft + c.pref + noise;
-    if (stats) ++stats->candidates;
-    if (score < best_score) {
-      best_score = score;
-      best_hard = cost.hard;
-      best = c;
-      any = true;
-    }
+    const double score =
+        cost.hard > 1e-10 ? 1e6 + cost.hard : cost.soft_linear + c.pref + Closeness(layer, self, state) + noise;
+    ranked.push_back({c, score, cost.hard});
   }
-  if (!any) {
-    std::copy(saved, saved + 4, b.p);
-    b.wall = saved_wall;
-    b.wall_dir = saved_dir;
+  if (stats) stats->candidates += static_cast<int>(candidates.size());
+  std::copy(saved, saved + 4, b.p);
+  b.wall = saved_wall;
+  b.wall_dir = saved_dir;
+  b.active = was_active;
+  // Stable: equal scores keep the generation order, so the result does not depend on the sort.
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
+  if (ranked.size() > keep) ranked.resize(keep);
+  return ranked;
+}
+
+void Put(Layer& layer, int self, const RoomState& state, const Candidate& c) {
+  Body& b = layer.bodies[self];
+  b.active = true;
+  b.p[0] = c.x;
+  b.p[1] = c.y;
+  b.p[2] = c.z;
+  b.p[3] = c.yaw;
+  if (c.wall >= 0) {
+    b.wall = c.wall;
+    const WallEdge& w = state.problem->walls[c.wall];
+    b.wall_dir = geo::Unit(geo::Sub(w.b, w.a));
+  }
+  b.yaw_class = SnapYaw(c.yaw, layer.kind == Layer::Kind::kRoom ? RoomYawClasses(*state.problem) : std::vector<double>{0.0});
+}
+
+// The bodies whose own relations point at `hub` (placed after it, around it), not yet placed.
+std::vector<int> Dependents(const Layer& layer, int hub, const RoomState& state, const std::vector<char>& placed) {
+  std::vector<int> out;
+  const std::string& id = state.objects[layer.bodies[hub].object].id;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.target != id) continue;
+    const int s = state.Find(e.source);
+    if (s < 0 || layer.body_of[s] < 0) continue;
+    const int k = layer.body_of[s];
+    if (layer.bodies[k].motion == Motion::kFixed || placed[k] || std::find(out.begin(), out.end(), k) != out.end()) continue;
+    out.push_back(k);
+  }
+  return out;
+}
+
+}  // namespace
+
+double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter,
+                 PlaceStats* stats) {
+  const std::vector<Scored> best = RankCandidates(layer, self, state, o, rng, jitter, 1, stats);
+  if (best.empty()) {
+    layer.bodies[self].active = true;
     if (stats) ++stats->infeasible;
     return 1e300;
   }
-  b.p[0] = best.x;
-  b.p[1] = best.y;
-  b.p[2] = best.z;
-  b.p[3] = best.yaw;
-  if (best.wall >= 0) {
-    b.wall = best.wall;
-    const WallEdge& w = state.problem->walls[best.wall];
-    b.wall_dir = geo::Unit(geo::Sub(w.b, w.a));
+  Put(layer, self, state, best[0].c);
+  if (best[0].hard > 1e-10 && stats) ++stats->infeasible;
+  return best[0].hard;
+}
+
+void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter, PlaceStats* stats) {
+  constexpr size_t kLookahead = 4;
+  const std::vector<int> order = PlacementOrder(layer, state);
+  std::vector<char> placed(layer.bodies.size(), 0);
+  for (int b : order) {
+    if (placed[b]) continue;
+    const std::vector<int> dependents = Dependents(layer, b, state, placed);
+    placed[b] = 1;
+    if (dependents.empty()) {
+      PlaceBody(layer, b, state, o, rng, jitter, stats);
+      continue;
+    }
+    // A hub and the objects placed around it: try its few best poses, place the group at each, keep the
+    // group that holds best (a bed needs room for both nightstands, a sofa for its side tables).
+    const std::vector<Scored> tries = RankCandidates(layer, b, state, o, rng, jitter, kLookahead, stats);
+    std::vector<int> group = {b};
+    for (int k : PlacementOrder(layer, state)) {
+      if (std::find(dependents.begin(), dependents.end(), k) != dependents.end()) group.push_back(k);
+    }
+    std::vector<Body> best_bodies;
+    double best_hard = 1e300, best_soft = 1e300;
+    for (const Scored& t : tries) {
+      Put(layer, b, state, t.c);
+      for (size_t g = 1; g < group.size(); ++g) PlaceBody(layer, group[g], state, o, rng, jitter, stats);
+      LayerCost cost;
+      for (int g : group) {
+        const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
+        cost.hard += part.hard;
+        cost.soft_linear += part.soft_linear;
+      }
+      const double soft = cost.soft_linear + t.c.pref;
+      if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
+        best_hard = cost.hard;
+        best_soft = soft;
+        best_bodies.clear();
+        for (int g : group) best_bodies.push_back(layer.bodies[g]);
+      }
+      for (size_t g = 1; g < group.size(); ++g) layer.bodies[group[g]].active = false;
+    }
+    for (size_t g = 0; g < group.size() && !best_bodies.empty(); ++g) layer.bodies[group[g]] = best_bodies[g];
+    for (int g : group) placed[g] = 1;
   }
-  b.yaw_class = SnapYaw(best.yaw, classes);
-  if (best_hard > 1e-10 && stats) ++stats->infeasible;
-  return best_hard;
 }
 
 std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state) {

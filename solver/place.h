@@ -23,6 +23,12 @@ struct PlaceStats {
 double PlaceBody(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
                  PlaceStats* stats);
 
+// Places every movable body of the layer in PlacementOrder. A body that others relate to (a hub: the
+// bed, the sofa, the table) is tried at its few best poses with its dependents placed around each, and the
+// group that holds best is kept.
+void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
+                PlaceStats* stats);
+
 // The order a layer's movable bodies are placed in: a relation's target before its source, then objects
 // against a wall, higher priority and bigger footprints first; floor coverings last.
 std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state);

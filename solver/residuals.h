@@ -109,6 +109,17 @@ T BoxPenetration(const PlacedBox<T>& a, const PlacedBox<T>& b, bool z_free, doub
   return depth;
 }
 
+// Whether two shapes of two bodies are surely apart by more than `margin` (their bounding circles,
+// around the bodies' reference points): the terms below are exactly zero there, so they skip the work.
+template <typename T>
+bool FarApart(const T* pa, const T* sa, const BodyShape& a, const T* pb, const T* sb, const BodyShape& b, double margin) {
+  const double ra = std::hypot(std::abs(a.cx) + a.hx, std::abs(a.cy) + a.hy) * Scalar(sa[0]);
+  const double rb = std::hypot(std::abs(b.cx) + b.hx, std::abs(b.cy) + b.hy) * Scalar(sb[0]);
+  const double dx = Scalar(pa[0]) - Scalar(pb[0]), dy = Scalar(pa[1]) - Scalar(pb[1]);
+  const double reach = ra + rb + margin;
+  return dx * dx + dy * dy > reach * reach;
+}
+
 // Two bodies' boxes must not overlap, with `margin` m of clearance (oriented-box proxy of E_col).
 struct PenetrationResidual {
   BodyShape a, b;
@@ -118,6 +129,10 @@ struct PenetrationResidual {
 
   template <typename T>
   bool operator()(const T* pa, const T* sa, const T* pb, const T* sb, T* r) const {
+    if (FarApart(pa, sa, a, pb, sb, b, margin)) {
+      r[0] = T(0.0);
+      return true;
+    }
     bool apart = false;
     const T depth = BoxPenetration(PlaceBox(pa, sa, a), PlaceBox(pb, sb, b), z_free, margin, &apart);
     r[0] = apart ? T(0.0) : T(weight) * Hinge(depth + T(margin));
@@ -136,6 +151,10 @@ struct InteractionZoneResidual {
 
   template <typename T>
   bool operator()(const T* p_owner, const T* s_owner, const T* p_other, const T* s_other, T* r) const {
+    if (FarApart(p_owner, s_owner, zone, p_other, s_other, other, 0.0)) {
+      r[0] = T(0.0);
+      return true;
+    }
     bool apart = false;
     const T depth = BoxPenetration(PlaceBox(p_owner, s_owner, zone), PlaceBox(p_other, s_other, other), false, 0.0, &apart);
     r[0] = apart ? T(0.0) : T(weight) * Hinge(depth);
@@ -437,6 +456,30 @@ struct CenteredResidual {
   static ceres::CostFunction* Create(const BodyShape& source, const BodyShape& target, double tolerance, double weight) {
     return new ceres::AutoDiffCostFunction<CenteredResidual, 1, 4, 1, 4, 1>(
         new CenteredResidual{source, target, tolerance, weight});
+  }
+};
+
+// A wall-bound body (against_wall, on_wall) keeps its whole width on its wall piece, `margin` m from
+// either end: past the end of a wall that stops at an inner corner there is nothing behind it.
+struct WallSpanResidual {
+  BodyShape body;
+  Point a;            // the wall's start
+  Point d;            // unit direction along the wall
+  double length = 0;  // m
+  double margin = 0.0;
+  double weight = 10.0;
+
+  template <typename T>
+  bool operator()(const T* p, const T* s, T* r) const {
+    const PlacedBox<T> b = PlaceBox(p, s, body);
+    const T t = (b.cx - a.x) * d.x + (b.cy - a.y) * d.y;
+    const T half = ProjectedRadius(b, T(d.x), T(d.y));
+    r[0] = T(weight) * Hinge(half + T(margin) - t);
+    r[1] = T(weight) * Hinge(t + half + T(margin) - T(length));
+    return true;
+  }
+  static ceres::CostFunction* Create(const BodyShape& body, Point a, Point d, double length, double margin, double weight) {
+    return new ceres::AutoDiffCostFunction<WallSpanResidual, 2, 4, 1>(new WallSpanResidual{body, a, d, length, margin, weight});
   }
 };
 

@@ -113,7 +113,7 @@ struct RoomSolver::Impl {
   LayerCost Construct(Layer& layer, Rng& rng, double jitter) {
     const auto t = Clock::now();
     PlaceStats stats;
-    for (int b : PlacementOrder(layer, state)) PlaceBody(layer, b, state, options, rng, jitter, &stats);
+    PlaceLayer(layer, state, options, rng, jitter, &stats);
     summary.candidates += stats.candidates;
     summary.seconds_place += Since(t);
     const PolishStats polish = Polish(layer, state, options);
@@ -201,7 +201,7 @@ struct RoomSolver::Impl {
     }
     Rng rng(options.seed ^ (0xB00Cull + static_cast<uint64_t>(parent) * 131 + group));
     const LayerCost after = Construct(fresh, rng, 0.0);
-    if (after.hard < before.hard - kFeasible || (after.hard <= kFeasible && before.hard <= kFeasible && after.soft < before.soft)) {
+    if (after.hard < before.hard - kFeasible || (after.hard <= kFeasible && before.hard <= kFeasible && after.soft_linear < before.soft_linear)) {
       WriteLayer(fresh);
     }
   }
@@ -214,6 +214,16 @@ struct RoomSolver::Impl {
     summary.seconds_exact += Since(t);
     energy = StateEnergy(state);
     summary.energy_trace.push_back(energy.total);
+    std::string line = "check " + std::to_string(summary.log.size()) + ": E " + Fixed(energy.total) + ", " +
+                       std::to_string(metrics.objects) + " objects";
+    for (const CollisionPair& pair : metrics.pairs) line += "; collision " + pair.a + " x " + pair.b;
+    for (const ObjectCheck& c : metrics.per_object) {
+      if (c.floating) line += "; floating " + c.id;
+      if (c.out_of_bounds) line += "; out of bounds " + c.id + " (" + Fixed(100.0 * c.in_bound_share, 1) + " % in)";
+      if (c.inside_edge && !c.contained) line += "; not contained " + c.id;
+    }
+    for (const auto& [a, b] : energy.overlaps) line += "; boxes overlap " + a + " x " + b;
+    summary.log.push_back(line);
     if (!have_best || Better(metrics, energy, best_metrics, best_energy)) {
       best = state;
       best_metrics = metrics;
@@ -298,7 +308,7 @@ struct RoomSolver::Impl {
       WriteBack(layer, 0, probe);
       const ObjectPlacement& found = probe.placements[i];
       const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
-      if (!best || slot.cost.soft < best->cost.soft - 1e-12) best = slot;
+      if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
     }
     state.placements[i] = saved;
     return best;
@@ -610,20 +620,27 @@ struct RoomSolver::Impl {
       }
     }
     if (!Culprits().empty()) return std::nullopt;  // hard trouble left and every remedy tried
-    // Physically valid: lower the semantic energy, worst object first, one try each.
+    // Physically valid: lower the semantic energy, one try per object, the most involved first. An unmet
+    // relation may be mended from either end (the painting cannot be centred over the bed beside a window,
+    // but the bed can move under the painting).
+    std::vector<double> involved = energy.object_semantic;
+    for (size_t k = 0; k < state.edges.size() && k < energy.edge_violation.size(); ++k) {
+      const int t = state.Find(state.edges[k].target);
+      if (t >= 0) involved[t] += energy.edge_violation[k];
+    }
     std::vector<int> order;
     for (size_t i = 0; i < state.objects.size(); ++i) {
-      if (energy.object_semantic[i] > 1e-6 && !semantic_tried.count(state.objects[i].id)) order.push_back(static_cast<int>(i));
+      if (involved[i] > 1e-6 && !semantic_tried.count(state.objects[i].id)) order.push_back(static_cast<int>(i));
     }
     std::sort(order.begin(), order.end(), [&](int a, int b) {
-      if (energy.object_semantic[a] != energy.object_semantic[b]) return energy.object_semantic[a] > energy.object_semantic[b];
+      if (involved[a] != involved[b]) return involved[a] > involved[b];
       return a < b;
     });
     for (int i : order) {
       semantic_tried.insert(state.objects[i].id);
       const LayerCost now = CostAt(i);
       auto slot = FindSlot(i);
-      if (!slot || slot->cost.soft >= now.soft - 1e-9) continue;
+      if (!slot || slot->cost.soft_linear >= now.soft_linear - 1e-9) continue;
       Action a;
       a.kind = ActionKind::kUpdatePose;
       a.id = state.objects[i].id;
@@ -657,6 +674,9 @@ struct RoomSolver::Impl {
     if (Converged(metrics, energy)) {
       summary.outcome = Outcome::kConverged;
       summary.reason = "E = " + Fixed(energy.total) + " <= " + Fixed(options.energy_threshold, 2) + ", exact check clean";
+      if (!summary.removed.empty()) {
+        summary.reason += ", after removing " + std::to_string(summary.removed.size()) + " object(s) that did not fit";
+      }
     } else if (metrics.Clean() && energy.collision == 0.0 && energy.support == 0.0) {
       summary.outcome = Outcome::kBudget;
       summary.reason = "physically valid, but E = " + Fixed(energy.total) + " (semantic " + Fixed(energy.semantic) +

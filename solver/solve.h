@@ -40,6 +40,9 @@ struct SolveSummary {
   std::vector<std::string> removed;   // ids removed by actions
   std::vector<ActionResult> actions;  // every action tried, in order
   std::vector<double> energy_trace;   // E after the first solve and after each agent iteration
+  // One line per check: E, the exact violations and who was involved ("check 2: E 0.31, collisions
+  // r/a x r/b; floating r/cup-0"), so a room that ends badly says what stood in the way.
+  std::vector<std::string> log;
 
   int ceres_solves = 0;
   int ceres_iterations = 0;

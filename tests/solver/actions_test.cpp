@@ -114,6 +114,16 @@ TEST_CASE("update_scale outside the range is refused, inside it applied", "[solv
   const ActionResult refused = s.solver->Apply(grow);
   CHECK(refused.status == ActionStatus::kRefused);
   CHECK(refused.message == "scale 1.500 is outside the object's range [1.000, 1.000]");
+  // The bowl may shrink to 0.8: it does, and stays on the coffee table.
+  Action shrink;
+  shrink.kind = ActionKind::kUpdateScale;
+  shrink.id = "r/bowl-0";
+  shrink.scale = 0.85;
+  const ActionResult applied = s.solver->Apply(shrink);
+  INFO(applied.message);
+  CHECK(applied.status == ActionStatus::kApplied);
+  CHECK(s.PoseOf("r/bowl-0").scale == 0.85);
+  CHECK(s.solver->Solution().summary.metrics.Clean());
 }
 
 TEST_CASE("remove_entity takes the children along; add_entity finds a free slot", "[solver]") {

@@ -2,6 +2,7 @@
 // Small realistic rooms for the solver's tests and bench, built in code: box furniture, a table with
 // legs, a bookcase with real panels and boards (its cavities and surfaces exactly those of the mesh),
 // rectangular, L-shaped and angled rooms with wall slabs around them.
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -35,5 +36,21 @@ RoomProblem Angled();   // a pentagon with a 45-degree wall
 // sofa, bookcase with books inside and a vase on top, armchair facing the coffee table, side table with a
 // lamp next to the sofa, plant, rug, painting on a wall, ceiling lamp.
 void FurnishLivingRoom(RoomProblem& room);
+
+// The ten room types of the layout (FORMAT.md categories).
+enum class RoomType { kLiving, kBedroom, kKitchen, kBathroom, kDining, kChildren, kOffice, kMeeting, kBalcony, kUtility };
+inline constexpr RoomType kRoomTypes[] = {RoomType::kLiving,   RoomType::kBedroom, RoomType::kKitchen, RoomType::kBathroom,
+                                          RoomType::kDining,   RoomType::kChildren, RoomType::kOffice, RoomType::kMeeting,
+                                          RoomType::kBalcony,  RoomType::kUtility};
+const char* RoomTypeName(RoomType type);  // "living-room", ...
+enum class RoomShape { kRectangle, kL, kAngled };
+const char* RoomShapeName(RoomShape shape);  // "rectangle", "L", "angled"
+
+// A room of that type and shape furnished as PRIORS.md describes (anchors against walls, relations,
+// small objects on surfaces and in cavities), with a door (sweep keep-out, wall opening) and a window
+// (opening, window zone); usual sizes for the type, an L or an angled corner cut from it. `scale` >= 1
+// grows the room's sides and repeats the furniture groups (for the object-count benchmark). The seed
+// varies counts and sizes a little.
+RoomProblem SyntheticRoom(RoomType type, RoomShape shape, uint64_t seed, double scale = 1.0);
 
 }  // namespace villa::solver::fixtures

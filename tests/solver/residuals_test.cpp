@@ -108,6 +108,14 @@ TEST_CASE("Reflex-vertex residual gradient matches differences", "[solver]") {
   CHECK(Norm2(Residuals(*cost, clear)) == 0.0);
 }
 
+TEST_CASE("Wall-span residual gradient matches differences and holds on the wall piece", "[solver]") {
+  CheckJacobians(WallSpanResidual::Create(kSofa, {0.0, 0.0}, {1.0, 0.0}, 3.0, 0.01, 10.0), {{0.7, 0.47, 0.0, 0.05}, {1.0}});
+  CheckJacobians(WallSpanResidual::Create(kSofa, {4.0, 1.0}, {0.0, 1.0}, 2.0, 0.01, 10.0), {{3.5, 2.5, 0.0, 1.6}, {1.1}});
+  std::unique_ptr<ceres::CostFunction> cost(WallSpanResidual::Create(kSofa, {0.0, 0.0}, {1.0, 0.0}, 3.0, 0.01, 10.0));
+  Blocks middle = {{1.5, 0.47, 0.0, 0.0}, {1.0}};
+  CHECK(Norm2(Residuals(*cost, middle)) == 0.0);
+}
+
 TEST_CASE("Containment residual gradient matches differences", "[solver]") {
   const BodyShape book{0.0, 0.0, 0.03, 0.11, 0.0, 0.24};
   CheckJacobians(ContainmentResidual::Create(book, -0.43, -0.16, 0.43, 0.14, 0.35, 0.005, 10.0), {{0.42, 0.05, 0.12, 0.2}, {1.2}});
