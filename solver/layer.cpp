@@ -302,7 +302,7 @@ bool ZoneExempt(const RoomState& state, int owner, int other) {
 }
 
 // Bounding-circle radius of a body's box (m).
-double Radius(const Body& b) { return std::hypot(b.hx, b.hy) * b.s[0]; }
+double Radius(const Body& b) { return std::sqrt(b.hx * b.hx + b.hy * b.hy) * b.s[0]; }
 
 // Whether two bodies may interact at all (both placed, one movable, neither a rug, not parent and child).
 bool PairEligible(const Layer& layer, const RoomState& state, int a, int b) {
@@ -448,10 +448,11 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
   return terms;
 }
 
-LayerCost Evaluate(const std::vector<Term>& terms) {
+LayerCost Evaluate(const std::vector<Term>& terms, double hard_limit) {
   LayerCost cost;
   double residuals[64];
   for (const Term& t : terms) {
+    if (cost.hard > hard_limit) break;
     const int m = t.cost->num_residuals();
     if (!t.cost->Evaluate(t.blocks.data(), residuals, nullptr)) continue;
     double sum = 0.0;

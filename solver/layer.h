@@ -113,7 +113,8 @@ struct LayerCost {
   double soft = 0.0;         // sum of squared soft residuals
   double soft_linear = 0.0;  // sum of the soft terms' residual norms (weighted m or rad: E_sem's units)
 };
-LayerCost Evaluate(const std::vector<Term>& terms);
+// `hard_limit`: stop as soon as the hard cost exceeds it (the caller only needs to know that it does).
+LayerCost Evaluate(const std::vector<Term>& terms, double hard_limit = 1e300);
 
 struct PolishStats {
   int solves = 0;

@@ -289,7 +289,11 @@ int IncomingEdges(const RoomState& state, int object) {
   return n;
 }
 
-std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomState& state, const SolveOptions& o) {
+// `around_count`: how many of the candidates, at the front, were generated around related bodies (0 when
+// the body has no relation to a placed one).
+std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomState& state, const SolveOptions& o,
+                                      size_t* around_count) {
+  *around_count = 0;
   std::vector<Candidate> out;
   const Body& b = layer.bodies[self];
   const ProblemObject& obj = state.objects[b.object];
@@ -326,6 +330,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   }
   for (const auto& [target, edges] : related) AroundTarget(layer, self, target, edges, classes, out);
   const size_t around = out.size();
+  *around_count = around;
   const bool hub = IncomingEdges(state, b.object) >= 2 || b.covering;
   std::vector<Candidate> grid;
   GridSlots(layer, self, FourTurns(classes), step, grid);
@@ -399,8 +404,9 @@ std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& stat
   Body& b = layer.bodies[self];
   const bool was_active = b.active;
   b.active = true;
-  const std::vector<Candidate> candidates =
-      layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o) : ChildCandidates(layer, self);
+  size_t around_count = 0;
+  const std::vector<Candidate> candidates = layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o, &around_count)
+                                                                             : ChildCandidates(layer, self);
   const double saved[4] = {b.p[0], b.p[1], b.p[2], b.p[3]};
   const int saved_wall = b.wall;
   const Point saved_dir = b.wall_dir;
@@ -415,16 +421,25 @@ std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& stat
     return terms_by_wall.emplace(key, MakeTerms(layer, state, o, self, -1.0)).first->second;
   };
   std::vector<Scored> ranked;
-  for (const Candidate& c : candidates) {
+  size_t feasible = 0;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& c = candidates[k];
+    // The slots a relation asks for come first: when one of them already meets every term, the
+    // fallbacks behind them (grid, walls) cannot beat it.
+    if (k == around_count && feasible > 0 && ranked.front().score < 0.05 && keep == 1) break;
     b.p[0] = c.x;
     b.p[1] = c.y;
     b.p[2] = c.z;
     b.p[3] = c.yaw;
-    const LayerCost cost = Evaluate(terms_for(c.wall));
+    // With `keep` feasible candidates in hand, an infeasible one cannot make the list: stop at its
+    // first hard violation.
+    const LayerCost cost = Evaluate(terms_for(c.wall), feasible >= keep ? 1e-10 : 1e300);
+    feasible += cost.hard <= 1e-10;
     const double noise = jitter > 0.0 ? jitter * rng.Unit() : 0.0;
     const double score =
         cost.hard > 1e-10 ? 1e6 + cost.hard : cost.soft_linear + c.pref + Closeness(layer, self, state) + noise;
     ranked.push_back({c, score, cost.hard});
+    if (ranked.size() > 1 && ranked.back().score < ranked.front().score) std::swap(ranked.front(), ranked.back());
   }
   if (stats) stats->candidates += static_cast<int>(candidates.size());
   std::copy(saved, saved + 4, b.p);

@@ -12,6 +12,7 @@
 // functions: exactly 0 when the condition holds, so a feasible arrangement costs 0 and the solver stops.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <ceres/autodiff_cost_function.h>
@@ -113,8 +114,9 @@ T BoxPenetration(const PlacedBox<T>& a, const PlacedBox<T>& b, bool z_free, doub
 // around the bodies' reference points): the terms below are exactly zero there, so they skip the work.
 template <typename T>
 bool FarApart(const T* pa, const T* sa, const BodyShape& a, const T* pb, const T* sb, const BodyShape& b, double margin) {
-  const double ra = std::hypot(std::abs(a.cx) + a.hx, std::abs(a.cy) + a.hy) * Scalar(sa[0]);
-  const double rb = std::hypot(std::abs(b.cx) + b.hx, std::abs(b.cy) + b.hy) * Scalar(sb[0]);
+  const double ax = std::abs(a.cx) + a.hx, ay = std::abs(a.cy) + a.hy, bx = std::abs(b.cx) + b.hx, by = std::abs(b.cy) + b.hy;
+  const double ra = std::sqrt(ax * ax + ay * ay) * Scalar(sa[0]);
+  const double rb = std::sqrt(bx * bx + by * by) * Scalar(sb[0]);
   const double dx = Scalar(pa[0]) - Scalar(pb[0]), dy = Scalar(pa[1]) - Scalar(pb[1]);
   const double reach = ra + rb + margin;
   return dx * dx + dy * dy > reach * reach;
@@ -176,6 +178,9 @@ struct KeepOutResidual {
   bool z_free = false;
   double margin = 0.02;
   double weight = 10.0;
+  // The polygon's outward edge normals and its extent along each, computed once by Create.
+  std::vector<Point> normals;
+  std::vector<std::pair<double, double>> extents;
 
   template <typename T>
   bool operator()(const T* p, const T* s, T* r) const {
@@ -186,7 +191,12 @@ struct KeepOutResidual {
       return true;
     }
     T depth = z_free ? z_overlap : T(1e9);
-    auto along = [&](const T& nx, const T& ny, const T& box_radius) {
+    for (size_t i = 0; i < normals.size(); ++i) {
+      const T nx = T(normals[i].x), ny = T(normals[i].y);
+      const T c = nx * b.cx + ny * b.cy, radius = ProjectedRadius(b, nx, ny);
+      depth = Min(depth, Min(c + radius - T(extents[i].first), T(extents[i].second) - (c - radius)));
+    }
+    auto along_box_axis = [&](const T& nx, const T& ny, const T& radius) {
       const T c = nx * b.cx + ny * b.cy;
       T lo = T(1e18), hi = T(-1e18);
       for (const Point& q : polygon) {
@@ -194,25 +204,30 @@ struct KeepOutResidual {
         lo = Min(lo, d);
         hi = Max(hi, d);
       }
-      depth = Min(depth, Min(c + box_radius - lo, hi - (c - box_radius)));
+      depth = Min(depth, Min(c + radius - lo, hi - (c - radius)));
     };
-    for (size_t i = 0; i < polygon.size(); ++i) {
-      const Point& q0 = polygon[i];
-      const Point& q1 = polygon[(i + 1) % polygon.size()];
-      const double len = std::hypot(q1.x - q0.x, q1.y - q0.y);
-      const T nx = T((q1.y - q0.y) / len);
-      const T ny = T(-(q1.x - q0.x) / len);
-      along(nx, ny, ProjectedRadius(b, nx, ny));
-    }
-    along(b.ux, b.uy, b.hx);
-    along(b.vx(), b.vy(), b.hy);
+    along_box_axis(b.ux, b.uy, b.hx);
+    along_box_axis(b.vx(), b.vy(), b.hy);
     r[0] = T(weight) * Hinge(depth + T(margin));
     return true;
   }
   static ceres::CostFunction* Create(const BodyShape& body, const Ring& convex, double z0, double z1, bool z_free,
                                      double margin, double weight) {
-    return new ceres::AutoDiffCostFunction<KeepOutResidual, 1, 4, 1>(
-        new KeepOutResidual{body, convex, z0, z1, z_free, margin, weight});
+    auto* f = new KeepOutResidual{body, convex, z0, z1, z_free, margin, weight, {}, {}};
+    for (size_t i = 0; i < convex.size(); ++i) {
+      const Point& q0 = convex[i];
+      const Point& q1 = convex[(i + 1) % convex.size()];
+      const double len = std::sqrt((q1.x - q0.x) * (q1.x - q0.x) + (q1.y - q0.y) * (q1.y - q0.y));
+      const Point n{(q1.y - q0.y) / len, -(q1.x - q0.x) / len};
+      double lo = 1e18, hi = -1e18;
+      for (const Point& q : convex) {
+        lo = std::min(lo, n.x * q.x + n.y * q.y);
+        hi = std::max(hi, n.x * q.x + n.y * q.y);
+      }
+      f->normals.push_back(n);
+      f->extents.push_back({lo, hi});
+    }
+    return new ceres::AutoDiffCostFunction<KeepOutResidual, 1, 4, 1>(f);
   }
 };
 
@@ -234,7 +249,8 @@ T SignedDistanceToRing(const Ring& ring, const T& px, const T& py) {
     const double ex = b.x - a.x, ey = b.y - a.y;
     const double l2 = ex * ex + ey * ey;
     const double t = l2 > 0.0 ? std::clamp(((x - a.x) * ex + (y - a.y) * ey) / l2, 0.0, 1.0) : 0.0;
-    const double d = std::hypot(x - (a.x + t * ex), y - (a.y + t * ey));
+    const double dx = x - (a.x + t * ex), dy = y - (a.y + t * ey);
+    const double d = dx * dx + dy * dy;  // squared: only compared
     if (d < best) {
       best = d;
       best_edge = static_cast<int>(j);
@@ -244,7 +260,7 @@ T SignedDistanceToRing(const Ring& ring, const T& px, const T& py) {
   const Point& a = ring[best_edge];
   const Point& b = ring[(best_edge + 1) % n];
   if (best_t > 0.0 && best_t < 1.0) {
-    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    const double len = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
     // Left of a CCW edge is inside: the cross product is the signed distance.
     return ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) / len;
   }
