@@ -226,6 +226,10 @@ TEST_CASE("Bad problems and options are refused with the field and the value", "
   room.objects[0].scale_min = 1.0;
   room.free_floor = {{0, 0}, {0, 3}, {4, 3}, {4, 0}};
   CHECK(SolveRoom(room, {}).error() == "room r: free_floor: must be counter-clockwise with a positive area");
+  room.free_floor = Rectangle(4, 3).free_floor;
+  room.objects[0].mesh = std::make_shared<AssetMesh>(AssetMesh{{{MeshMaterial{}, BoxMesh({-0.5, -0.5, 0}, {0.7, 0.5, 1})}}});
+  CHECK(SolveRoom(room, {}).error() ==
+        "room r: object \"r/box-0\": mesh reaches [-0.5, 0.7] along x, outside the asset box [-0.5, 0.5] of its size");
   room = Rectangle(4, 3);
   SolveOptions options;
   options.object_gap = 0.5;
