@@ -83,7 +83,7 @@ struct Session {
   }
 };
 
-TEST_CASE("update_pose into a collision is repaired; nowhere to go is refused", "[solver]") {
+TEST_CASE("update_pose into a collision is repaired, an unknown object refused", "[solver]") {
   Session s;
   const Pose sofa = s.PoseOf("r/sofa-0");
   Action onto;
@@ -126,7 +126,7 @@ TEST_CASE("update_scale outside the range is refused, inside it applied", "[solv
   CHECK(s.solver->Solution().summary.metrics.Clean());
 }
 
-TEST_CASE("remove_entity takes the children along; add_entity finds a free slot", "[solver]") {
+TEST_CASE("remove_entity takes the children along and add_entity finds a free slot", "[solver]") {
   Session s;
   Action remove;
   remove.kind = ActionKind::kRemoveEntity;

@@ -82,7 +82,7 @@ TEST_CASE("A floating cup fails FR and adds its gap to E_sup", "[solver]") {
   CHECK(m.per_object[1].in_bound_share < 0.99);
 }
 
-TEST_CASE("A book through a shelf side fails CSR; a book resting in the cavity passes", "[solver]") {
+TEST_CASE("A book through a shelf side fails CSR, a book resting in the cavity passes", "[solver]") {
   RoomProblem room = Rectangle(4, 3);
   room.objects = {BookcaseObject("bookcase-0", 0.9, 0.32, 1.8, 5), SmallObject("books-0", 0.05, 0.22, 0.24, "bookcase-0", Relation::kInside)};
   const double z = room.floor_z;

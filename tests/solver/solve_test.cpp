@@ -172,7 +172,7 @@ TEST_CASE("An anchor too wide for every wall is shrunk within its range rather t
   CHECK(free_scale->placements[0].pose.scale >= 0.9);
 }
 
-TEST_CASE("The same seed gives the same poses; the solve record is the same bytes", "[solver]") {
+TEST_CASE("The same seed gives the same poses and the same solve record bytes", "[solver]") {
   RoomProblem room = LShape();
   FurnishLivingRoom(room);
   SolveOptions options;
