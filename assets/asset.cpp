@@ -20,6 +20,14 @@ double Round4(double v) {
   return r == 0.0 ? 0.0 : r;
 }
 
+// to_asset keeps 8 decimals: a cm -> m factor such as 0.0091336 loses up to 0.5 % at 4 (docs/SCENE.md).
+// Entries below 1e-4 keep 4, so no number is ever written with an exponent.
+double RoundMatrixEntry(double v) {
+  if (std::abs(v) < 1e-4) return Round4(v);
+  double r = std::round(v * 1e8) / 1e8;
+  return r == 0.0 ? 0.0 : r;
+}
+
 std::string Cut(const std::string& text) { return text.size() > 80 ? text.substr(0, 77) + "..." : text; }
 
 // A strict reader over one JSON object: every access names its path; unknown keys are errors.
@@ -205,7 +213,7 @@ nlohmann::ordered_json AssetToJson(const AssetRecord& a) {
   ojson m = ojson::array();
   for (const auto& row : a.to_asset) {
     ojson r = ojson::array();
-    for (double v : row) r.push_back(Round4(v));
+    for (double v : row) r.push_back(RoundMatrixEntry(v));
     m.push_back(r);
   }
   j["to_asset"] = m;

@@ -10,8 +10,8 @@ packages=(
   libeigen3-dev libompl-dev libsuitesparse-dev libceres-dev
   libassimp-dev nlohmann-json3-dev libcurl4-openssl-dev
   catch2 libcli11-dev libncurses-dev libtbb-dev libfcl-dev libembree-dev
-  libpng-dev libstb-dev libcairo2-dev fonts-dejavu-core libcpp-httplib-dev
-  tmux
+  libpng-dev zlib1g-dev libstb-dev libcairo2-dev fonts-dejavu-core libcpp-httplib-dev
+  sweethome3d-furniture libssl-dev tmux
 )
 
 missing=()

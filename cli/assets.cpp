@@ -1,0 +1,293 @@
+// villa assets import|list|show|search: the asset library (assets/asset_library.h).
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <mutex>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "assets/asset_library.h"
+#include "assets/category.h"
+#include "assets/embedder.h"
+#include "assets/retrieval.h"
+#include "assets/sh3d_import.h"
+#include "cli/command.h"
+#include "util/progress.h"
+#include "util/text_table.h"
+
+namespace villa::cli {
+namespace {
+
+std::filesystem::path LibraryDir(const std::string& flag) { return flag.empty() ? DefaultLibraryDir() : std::filesystem::path(flag); }
+
+// Opens the library or says why not (exit 1).
+std::optional<AssetLibrary> OpenLibrary(const std::string& flag, const std::string& sub) {
+  Result<AssetLibrary> library = AssetLibrary::Open(LibraryDir(flag));
+  if (!library.ok()) {
+    std::cerr << "villa assets " << sub << ": " << library.error() << "\n";
+    SetExitCode(kExitFailure);
+    return std::nullopt;
+  }
+  return std::move(*library);
+}
+
+std::string Size(const Vec3& s) { return FormatFixed(s.x, 2) + " x " + FormatFixed(s.y, 2) + " x " + FormatFixed(s.z, 2); }
+// Width, depth, height spelled out (a table cell that starts with a letter stays left-aligned).
+std::string Sides(const Vec3& s) { return "w " + FormatFixed(s.x, 2) + ", d " + FormatFixed(s.y, 2) + ", h " + FormatFixed(s.z, 2) + " m"; }
+
+std::string Joined(const std::vector<std::string>& items, const std::string& separator = ", ") {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : separator) + s;
+  return out;
+}
+
+// ---- import
+
+struct ImportCommand {
+  std::string from;
+  std::string library;
+  bool skip_over_budget = false;
+  Sh3dImportOptions options;
+};
+
+void RunImport(ImportCommand& command) {
+  if (std::string problem = command.options.Check(); !problem.empty()) throw UsageError("assets import: " + problem);
+  command.options.decimate = !command.skip_over_budget;
+  std::filesystem::path from = command.from.empty() ? DefaultSh3dFurnitureDir() : std::filesystem::path(command.from);
+  if (!std::filesystem::exists(from)) {
+    throw UsageError("assets import: " + from.string() +
+                     ": no such folder (install Debian's sweethome3d-furniture, or pass --from DIR)");
+  }
+  std::unique_ptr<ProgressBar> bar;
+  std::mutex bar_mutex;
+  auto progress = [&](int, int total) {
+    std::lock_guard<std::mutex> lock(bar_mutex);
+    if (!bar) bar = std::make_unique<ProgressBar>("import", total);
+    bar->Advance();
+  };
+  Result<Sh3dImportSummary> summary = ImportSh3dLibraries(from, LibraryDir(command.library), command.options, progress);
+  if (bar) bar->Finish();
+  if (!summary.ok()) {
+    std::cerr << "villa assets import: " << summary.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  std::cout << summary->BriefReport();
+  SetExitCode(kExitOk);
+}
+
+// ---- list
+
+struct ListCommand {
+  std::string library;
+  std::string category;
+  std::string room_type;
+  bool json = false;
+};
+
+void RunList(const ListCommand& command) {
+  std::optional<AssetLibrary> library = OpenLibrary(command.library, "list");
+  if (!library) return;
+  TextTable table({"id", "name", "category", "placement", "size (m)", "S", "C", "license"});
+  int shown = 0;
+  for (const AssetRecord& r : library->records()) {
+    if (!command.category.empty() && r.category != command.category) continue;
+    if (!command.room_type.empty() && !r.room_types.empty() &&
+        std::find(r.room_types.begin(), r.room_types.end(), command.room_type) == r.room_types.end())
+      continue;
+    ++shown;
+    if (command.json) {
+      std::cout << AssetToJson(r).dump() << "\n";
+      continue;
+    }
+    table.AddRow({r.id, r.name, r.category, std::string(PlacementName(r.placement)), Size(r.size),
+                  std::to_string(r.support_surfaces.size()), std::to_string(r.cavities.size()), r.license});
+  }
+  if (!command.json) std::cout << table.Render() << shown << " of " << library->records().size() << " assets\n";
+  SetExitCode(kExitOk);
+}
+
+// ---- show
+
+struct ShowCommand {
+  std::string library;
+  std::string id;
+};
+
+void RunShow(const ShowCommand& command) {
+  std::optional<AssetLibrary> library = OpenLibrary(command.library, "show");
+  if (!library) return;
+  const AssetRecord* r = library->Find(command.id);
+  if (!r) {
+    std::cerr << "villa assets show: " << command.id << ": no such asset in " << library->dir().string() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  TextTable table({"field", "value"});
+  table.AddRow({"id", r->id});
+  table.AddRow({"name", r->name});
+  table.AddRow({"category", r->category + (FindCategory(r->category) ? "" : " (not in the vocabulary)")});
+  table.AddRow({"source", r->source.kind + " " + r->source.library + " " + r->source.entry});
+  if (!r->source.sh3d_category.empty()) table.AddRow({"sh3d category", r->source.sh3d_category});
+  if (!r->source.tags.empty()) table.AddRow({"tags", Joined(r->source.tags)});
+  table.AddRow({"license", r->license});
+  table.AddRow({"creator", r->creator});
+  if (std::string credit = r->Credit(); !credit.empty()) table.AddRow({"credit", credit});
+  table.AddRow({"room types", r->room_types.empty() ? "any" : Joined(r->room_types)});
+  table.AddRow({"size", Sides(r->size)});
+  table.AddRow({"placement", std::string(PlacementName(r->placement))});
+  table.AddRow({"affordances", Joined(AffordanceNames(r->affordances))});
+  for (std::size_t i = 0; i < r->support_surfaces.size(); ++i) {
+    const SupportSurface& s = r->support_surfaces[i];
+    Box3 box;
+    for (const Point& p : s.polygon) box.Add(Vec3{p.x, p.y, 0});
+    table.AddRow({"surface " + std::to_string(i), "z " + FormatFixed(s.z, 3) + ", " + FormatFixed(box.max.x - box.min.x, 2) +
+                                                      " x " + FormatFixed(box.max.y - box.min.y, 2) + " m, " +
+                                                      std::to_string(s.polygon.size()) + " corners, clear " +
+                                                      FormatFixed(s.clear_height, 2) + " m, from " + s.from});
+  }
+  for (std::size_t i = 0; i < r->cavities.size(); ++i) {
+    const Cavity& c = r->cavities[i];
+    table.AddRow({"cavity " + std::to_string(i), Sides(c.max - c.min) + ", at z " + FormatFixed(c.min.z, 3) + ", open " +
+                                                     c.open + ", on surface " + std::to_string(c.floor_surface)});
+  }
+  if (r->interaction_zone) table.AddRow({"interaction zone", r->interaction_zone->side + " " + FormatFixed(r->interaction_zone->depth, 2) + " m"});
+  table.AddRow({"mesh", r->mesh.file + ", " + std::to_string(r->mesh.triangles) + " triangles, " +
+                            (r->mesh.watertight ? "watertight" : "not watertight") + ", manifold edges " +
+                            FormatPercent(r->mesh.manifold_edges, 1.0)});
+  std::cout << table.Render();
+  SetExitCode(kExitOk);
+}
+
+// ---- search
+
+struct SearchCommand {
+  std::string library;
+  std::string text;
+  int k = 10;
+  std::vector<double> size;
+  std::string placement;
+  bool json = false;
+  RetrievalQuery query;
+};
+
+void RunSearch(SearchCommand& command) {
+  if (!command.size.empty()) {
+    if (command.size.size() != 3 || !(command.size[0] > 0 && command.size[1] > 0 && command.size[2] > 0))
+      throw UsageError("assets search: --size takes three lengths > 0 in m: W,D,H");
+    command.query.size = Vec3{command.size[0], command.size[1], command.size[2]};
+  }
+  if (!command.placement.empty()) {
+    command.query.placement = ParsePlacement(command.placement);
+    if (!command.query.placement) throw UsageError("assets search: --placement: expected floor, wall, ceiling or surface, got " + command.placement);
+  }
+  if (!command.query.category.empty() && !FindCategory(command.query.category))
+    std::cerr << "villa assets search: note: " << command.query.category << " is not in the vocabulary; matching it as a name\n";
+  command.query.text = command.text;
+  std::optional<AssetLibrary> library = OpenLibrary(command.library, "search");
+  if (!library) return;
+  // The offline lexical embedder; an OpenAI-compatible endpoint plugs in here once llm/ is available.
+  auto embedder = std::make_shared<LexicalEmbedder>();
+  Result<AssetRetriever> retriever = AssetRetriever::Build(library->records(), embedder);
+  if (!retriever.ok()) {
+    std::cerr << "villa assets search: " << retriever.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  RetrievalOptions options;
+  options.k = command.k;
+  Result<RetrievalResult> result = retriever->Rank(command.query, options);
+  if (!result.ok()) {
+    std::cerr << "villa assets search: " << result.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  if (command.json) {
+    for (const RankedAsset& r : result->ranked) {
+      nlohmann::ordered_json j;
+      j["id"] = r.asset->id;
+      j["score"] = std::round(r.score * 1e4) / 1e4;
+      j["similarity"] = std::round(r.similarity * 1e4) / 1e4;
+      j["size_fit"] = std::round(r.size_fit * 1e4) / 1e4;
+      j["name"] = r.asset->name;
+      j["category"] = r.asset->category;
+      std::cout << j.dump() << "\n";
+    }
+  } else {
+    TextTable table({"#", "score", "text", "size", "id", "name", "category", "size (m)"});
+    int rank = 0;
+    for (const RankedAsset& r : result->ranked)
+      table.AddRow({std::to_string(++rank), FormatFixed(r.score, 3), FormatFixed(r.similarity, 3), FormatFixed(r.size_fit, 2),
+                    r.asset->id, r.asset->name, r.asset->category, Size(r.asset->size)});
+    std::cout << "query: " << command.query.Text() << (result->category.empty() ? "" : " [category " + result->category + "]") << "\n";
+    std::cout << table.Render();
+  }
+  if (result->category_missing) {
+    std::cerr << "villa assets search: the library has no " << result->category << " that meets the query; "
+              << (result->fallback_generator.empty() ? "no procedural generator makes one either"
+                                                     : "the procedural generator '" + result->fallback_generator + "' makes one")
+              << "\n";
+  }
+  SetExitCode(kExitOk);
+}
+
+Registration registration{70, [](CLI::App& app) {
+  CLI::App* assets = app.add_subcommand(
+      "assets",
+      "The asset library: 3D models with their size, support surfaces, cavities, placement and licence\n"
+      "(shared/design/SCENE.md). Folder: --library DIR, else $VILLA_ASSETS, else\n"
+      "$XDG_DATA_HOME/villa/assets (~/.local/share/villa/assets).");
+  assets->require_subcommand(1);
+
+  auto import = std::make_shared<ImportCommand>();
+  CLI::App* sub = assets->add_subcommand(
+      "import",
+      "Import Sweet Home 3D furniture libraries (*.sh3f) into the library: every piece but doors, windows\n"
+      "and staircases, converted to the asset frame, with support surfaces and cavities found by ray casts.\n"
+      "Replaces the library's Sweet Home 3D records only when the whole import succeeds. Exit status: 0\n"
+      "imported, 1 failure (the old library is left as it was), 2 usage.");
+  sub->add_option("--from", import->from, "folder of .sh3f files, or one file (default: " + DefaultSh3dFurnitureDir().string() + ")");
+  sub->add_option("--library", import->library, "library folder to write");
+  sub->add_option("--max-triangles", import->options.max_triangles,
+                  "triangle budget per model (default 50000): larger meshes are decimated")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--skip-over-budget", import->skip_over_budget, "skip models over the budget instead of decimating them");
+  sub->add_option("-j,--threads", import->options.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sub->callback([import] { RunImport(*import); });
+
+  auto list = std::make_shared<ListCommand>();
+  sub = assets->add_subcommand("list", "List the library's assets as a table (or JSONL records with --json).");
+  sub->add_option("--library", list->library, "library folder");
+  sub->add_option("--category", list->category, "only this category (e.g. sofa, bookcase)");
+  sub->add_option("--room-type", list->room_type, "only assets suited to this room type (e.g. bedroom)");
+  sub->add_flag("--json", list->json, "one asset record (SCENE.md) a line");
+  sub->callback([list] { RunList(*list); });
+
+  auto show = std::make_shared<ShowCommand>();
+  sub = assets->add_subcommand("show", "Print one asset's record as a table.");
+  sub->add_option("--library", show->library, "library folder");
+  sub->add_option("id", show->id, "asset id, e.g. \"sh3d:BlendSwap-CC-0#bookcase\"")->required();
+  sub->callback([show] { RunShow(*show); });
+
+  auto search = std::make_shared<SearchCommand>();
+  sub = assets->add_subcommand(
+      "search",
+      "Rank the library's assets for a query: cosine similarity of text embeddings (offline lexical\n"
+      "embedding of names, categories, tags and synonyms) plus the fit of their size to --size (or to the\n"
+      "category's usual sizes) plus a bonus for the query's category.");
+  sub->add_option("text", search->text, "what to look for, e.g. \"dark leather couch\"")->required();
+  sub->add_option("--library", search->library, "library folder");
+  sub->add_option("-k", search->k, "answers to print (default 10)")->check(CLI::PositiveNumber);
+  sub->add_option("--category", search->query.category, "vocabulary category (default: read from the text)");
+  sub->add_option("--room-type", search->query.room_type, "room type the asset is for (e.g. bedroom)");
+  sub->add_option("--size", search->size, "wanted size W,D,H in m (asset frame)")->delimiter(',');
+  sub->add_flag("--needs-surface", search->query.needs_surface, "only assets with a support surface");
+  sub->add_flag("--needs-cavity", search->query.needs_cavity, "only assets with a cavity");
+  sub->add_option("--placement", search->placement, "only assets placed so: floor, wall, ceiling or surface");
+  sub->add_flag("--json", search->json, "one JSON object a line: id, score, similarity, size_fit, name, category");
+  sub->callback([search] { RunSearch(*search); });
+}};
+
+}  // namespace
+}  // namespace villa::cli

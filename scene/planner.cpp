@@ -1,0 +1,756 @@
+#include "scene/planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "assets/category.h"
+#include "scene/priors.h"
+#include "scene/random.h"
+#include "scene/request.h"
+#include "util/text_table.h"
+
+namespace villa::scene {
+namespace {
+
+constexpr double kStandardSill = 0.9;      // m: against a wall under a window stands only what is lower
+constexpr double kWallGap = 0.05;           // m left beside each object against a wall
+constexpr double kOnWallShare = 0.7;       // share of the free wall (not over windows) hung objects may take
+constexpr double kRugShare = 0.5;          // rugs cover at most half the furnishable floor
+constexpr double kSurfaceShare = 0.8;      // share of a parent's top small objects may cover
+constexpr double kTinyFootprint = 0.1;     // m2: slippers, a bin: they fit in what the floor share leaves
+
+// The parents a small object goes to when the room's priors do not say (a TV asked for in a bedroom).
+std::vector<ParentChoice> DefaultParents(std::string_view category) {
+  using R = Relation;
+  struct Entry {
+    std::string_view category;
+    std::vector<ParentChoice> parents;
+  };
+  static const std::vector<Entry> kTable = {
+      {"tv", {{"tv-stand", R::kOnTop}, {"dresser", R::kOnTop}, {"sideboard", R::kOnTop}}},
+      {"monitor", {{"desk", R::kOnTop}}},
+      {"laptop", {{"desk", R::kOnTop}, {"conference-table", R::kOnTop}, {"dining-table", R::kOnTop}}},
+      {"printer", {{"desk", R::kOnTop}, {"filing-cabinet", R::kOnTop}}},
+      {"books", {{"bookcase", R::kInside}, {"nightstand", R::kOnTop}, {"desk", R::kOnTop}, {"coffee-table", R::kOnTop}}},
+      {"table-lamp", {{"nightstand", R::kOnTop}, {"side-table", R::kOnTop}, {"desk", R::kOnTop}, {"dresser", R::kOnTop}}},
+      {"pillow", {{"sofa", R::kOnTop}, {"bed", R::kOnTop}, {"child-bed", R::kOnTop}}},
+      {"folded-clothes", {{"wardrobe", R::kInside}, {"dresser", R::kInside}, {"cabinet", R::kInside}}},
+      {"hanging-clothes", {{"wardrobe", R::kInside}}},
+      {"toy", {{"toy-chest", R::kInside}, {"bookcase", R::kInside}, {"play-table", R::kOnTop}}},
+      {"plate", {{"dining-table", R::kOnTop}, {"upper-cabinet", R::kInside}, {"sideboard", R::kInside}}},
+      {"glass", {{"dining-table", R::kOnTop}, {"upper-cabinet", R::kInside}, {"sideboard", R::kInside}}},
+      {"remote", {{"coffee-table", R::kOnTop}, {"side-table", R::kOnTop}}},
+      {"alarm-clock", {{"nightstand", R::kOnTop}}},
+      {"sink", {{"counter", R::kOnTop}}},
+      {"pan", {{"cooker", R::kOnTop}, {"counter", R::kOnTop}}},
+  };
+  for (const Entry& e : kTable)
+    if (e.category == category) return e.parents;
+  // Anything else small: the usual surfaces, in this order.
+  return {{"coffee-table", R::kOnTop}, {"side-table", R::kOnTop}, {"sideboard", R::kOnTop}, {"dresser", R::kOnTop},
+          {"desk", R::kOnTop},         {"dining-table", R::kOnTop}, {"counter", R::kOnTop}, {"nightstand", R::kOnTop},
+          {"bookcase", R::kOnTop},     {"outdoor-table", R::kOnTop}, {"washbasin", R::kOnTop}, {"cabinet", R::kOnTop}};
+}
+
+Mount DefaultMount(const CategoryInfo& c) {
+  switch (c.placement) {
+    case Placement::kFloor: return c.against_wall ? Mount::kWall : Mount::kFloor;
+    case Placement::kWall: return Mount::kOnWall;
+    case Placement::kCeiling: return Mount::kCeiling;
+    case Placement::kSurface: return Mount::kParent;
+  }
+  return Mount::kFloor;
+}
+
+bool IsRug(const CategoryInfo& c) { return c.name == "rug"; }
+
+// Furniture that also works away from the walls (a sofa's back to the room, an island desk) when no wall
+// stretch is long enough; storage and appliances do not.
+bool MayStandFree(const CategoryInfo& c) {
+  return c.name == "sofa" || c.name == "desk" || c.name == "bed" || c.name == "child-bed";
+}
+
+double Round2(double v) { return std::round(v * 100.0) / 100.0; }
+
+// A free stretch of wall objects may stand against; `under_window` stretches take only low objects.
+struct Stretch {
+  double left = 0.0;  // m still free
+  bool under_window = false;
+};
+
+struct Node {
+  const CategoryInfo* info = nullptr;
+  const ItemPrior* item = nullptr;  // the prior item it comes from or stands for (may be null)
+  Origin origin = Origin::kPrior;
+  Mount mount = Mount::kFloor;
+  int parent = -1;                  // node index, -1 for floor / wall / ceiling
+  Relation relation = Relation::kOnTop;
+  Vec3 size;
+  std::vector<std::string> hints;
+  int wish = -1;
+  bool removed = false;
+  // What it took from the room's budgets (given back when trimmed).
+  double floor_taken = 0.0;  // m2 of the priors' floor share
+  double extra_taken = 0.0;  // m2 of the extra share (requests, key furniture)
+  double rug_taken = 0.0;
+  double onwall_taken = 0.0;
+  int stretch = -1;
+  double stretch_taken = 0.0;
+};
+
+class Planning {
+ public:
+  Planning(const RoomContext& room, const std::string& text, uint64_t seed, const PlannerOptions& options)
+      : room_(room), text_(text), options_(options), priors_(PriorsFor(room.category)),
+        rng_(seed ^ (NameHash(room.name) * 0x9E3779B97F4A7C15ull)) {
+    const double area = room_.furnishable_area;
+    floor_left_ = options_.floor_share * area;
+    prompt_extra_ = std::max(0.0, options_.prompt_floor_share - options_.floor_share) * area;
+    rug_left_ = kRugShare * area;
+    double wall_free = 0.0;
+    for (const WallEdge& w : room_.walls) {
+      for (const Interval& f : w.free) {
+        // Split each free stretch at the windows on it: under a window only low objects stand.
+        std::vector<std::pair<double, bool>> cuts = {{f.first, false}};
+        for (const WallWindow& win : w.windows) {
+          double a = std::max(f.first, win.span.first), b = std::min(f.second, win.span.second);
+          if (b > a) cuts.push_back({a, true}), cuts.push_back({b, false});
+        }
+        std::sort(cuts.begin(), cuts.end());
+        for (size_t i = 0; i < cuts.size(); ++i) {
+          double end = i + 1 < cuts.size() ? cuts[i + 1].first : f.second;
+          if (end - cuts[i].first <= 0.2) continue;
+          stretches_.push_back({end - cuts[i].first, cuts[i].second});
+          if (!cuts[i].second) wall_free += end - cuts[i].first;
+        }
+      }
+    }
+    onwall_left_ = kOnWallShare * wall_free;
+    // Sizes lean small in small rooms and large in large ones.
+    double s = priors_.usual_area > 0 ? area / priors_.usual_area : 1.0;
+    size_factor_ = std::clamp(0.2 + 0.3 * s, 0.1, 0.65);
+  }
+
+  RoomPlan Run() {
+    RoomRequest request = ParseRoomRequest(text_, room_.category);
+    for (const std::string& other : request.other_rooms) notes_.push_back("the request gives " + other + " another room");
+    for (const Wish& w : request.wishes)
+      if (w.count == 0) excluded_.insert(std::string(w.category->name));
+      else named_.insert(std::string(w.category->name));
+    Targets();
+    Wishes(request);
+    for (bool small : {false, true}) {
+      Mandatory(small);
+      Draw(small);
+    }
+    Settings();
+    Grow();
+    Trim();
+    return Finish(request);
+  }
+
+ private:
+  // ---- counts aimed at
+  void Targets() {
+    if (IsRichRoomType(room_.category) && room_.area >= options_.rich_min_area) {
+      lo_ = options_.rich_min_objects;
+      hi_ = options_.rich_max_objects;
+    } else {
+      double s = priors_.usual_area > 0 ? std::clamp(room_.furnishable_area / priors_.usual_area, 0.3, 1.0) : 1.0;
+      int base = IsRichRoomType(room_.category) ? (options_.rich_min_objects + options_.rich_max_objects) / 2 : priors_.no_target;
+      lo_ = std::max(1, static_cast<int>(std::lround(0.8 * base * s)));
+      hi_ = std::max(lo_, static_cast<int>(std::lround(1.2 * base * s)));
+    }
+    target_ = rng_.Int(lo_, hi_);
+  }
+
+  // ---- budgets
+  Vec3 SizeOf(const CategoryInfo& c) {
+    double f = std::clamp(size_factor_ + 0.2 * (rng_.Unit() - 0.5), 0.0, 1.0);
+    auto pick = [&](double lo, double hi) { return Round2(lo + f * (hi - lo)); };
+    return {pick(c.size_min.x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
+  }
+
+  // Takes what a root object (on the floor, a wall or the ceiling) needs from the room; false (nothing
+  // taken) when it does not fit.
+  bool TakeRoom(Node& n, bool prompt) {
+    const double footprint = n.size.x * n.size.y;
+    switch (n.mount) {
+      case Mount::kCeiling: return true;
+      case Mount::kOnWall:
+        if (n.size.x > onwall_left_) return false;
+        onwall_left_ -= n.size.x;
+        n.onwall_taken = n.size.x;
+        return true;
+      case Mount::kFloor:
+        if (IsRug(*n.info)) {
+          if (footprint > rug_left_) return false;
+          rug_left_ -= footprint;
+          n.rug_taken = footprint;
+          return true;
+        }
+        return TakeFloor(n, footprint, prompt);
+      case Mount::kWall: {
+        // Best fit: the fullest stretch that still holds its width; tall objects not under windows.
+        bool tall = n.size.z > kStandardSill;
+        int best = -1, longest = -1;
+        for (int i = 0; i < static_cast<int>(stretches_.size()); ++i) {
+          const Stretch& s = stretches_[i];
+          if (tall && s.under_window) continue;
+          if (longest < 0 || s.left > stretches_[longest].left) longest = i;
+          if (s.left < n.size.x + kWallGap) continue;
+          if (best < 0 || s.left < stretches_[best].left) best = i;
+        }
+        // Too wide for every stretch: a narrower one of its kind, down to the category's smallest.
+        if (best < 0 && longest >= 0 && stretches_[longest].left - kWallGap >= n.info->size_min.x) {
+          n.size.x = Round2(std::floor((stretches_[longest].left - kWallGap) * 100.0) / 100.0);
+          best = longest;
+        }
+        if (best < 0) {
+          // No wall for it: a sofa, bed or desk may stand free in the room instead.
+          if (!MayStandFree(*n.info)) return false;
+          n.mount = Mount::kFloor;
+          return TakeFloor(n, footprint, prompt);
+        }
+        if (!TakeFloor(n, n.size.x * n.size.y, prompt)) return false;
+        stretches_[best].left -= n.size.x + kWallGap;
+        n.stretch = best;
+        n.stretch_taken = n.size.x + kWallGap;
+        return true;
+      }
+      case Mount::kParent: return false;
+    }
+    return false;
+  }
+
+  // Floor for a footprint: the priors' share, and for the request's objects and the room's key furniture
+  // the extra share on top. Key furniture takes the extra first, so the priors keep their share for the rest.
+  bool TakeFloor(Node& n, double footprint, bool prompt) {
+    if (footprint < kTinyFootprint) return true;
+    const bool key = n.origin == Origin::kPrior && n.item && n.item->key && CountOf(n.item) < n.item->min;
+    double room = floor_left_ + (prompt || key ? prompt_extra_ : 0.0);
+    if (footprint > room) return false;
+    double from_extra = key ? std::min(footprint, prompt_extra_) : std::max(0.0, footprint - floor_left_);
+    floor_left_ -= footprint - from_extra;
+    prompt_extra_ -= from_extra;
+    n.floor_taken = footprint - from_extra;
+    n.extra_taken = from_extra;
+    return true;
+  }
+
+  void GiveBack(const Node& n) {
+    floor_left_ += n.floor_taken;
+    prompt_extra_ += n.extra_taken;
+    rug_left_ += n.rug_taken;
+    onwall_left_ += n.onwall_taken;
+    if (n.stretch >= 0) stretches_[n.stretch].left += n.stretch_taken;
+  }
+
+  // ---- parents
+  int ChildrenOf(int parent, std::string_view category) const {
+    int k = 0;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.parent == parent && n.info->name == category) ++k;
+    return k;
+  }
+  double TopUsed(int parent) const {
+    double a = 0.0;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.parent == parent && n.relation == Relation::kOnTop) a += n.size.x * n.size.y;
+    return a;
+  }
+  // Seats planned around a table: objects whose item needs that table.
+  int SeatsOf(int parent) const {
+    int k = 0;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.item && n.item->requires_category == nodes_[parent].info->name) ++k;
+    return k;
+  }
+
+  bool ParentHolds(int parent, const CategoryInfo& child, const Vec3& size, Relation relation, const ItemPrior* item) const {
+    const Node& p = nodes_[parent];
+    if (p.removed || !(p.info->affordances & kProvider)) return false;
+    if (relation == Relation::kInside ? !p.info->has_cavity : !p.info->has_surface) return false;
+    int limit = options_.max_per_receptacle;
+    if (item && item->per_parent < limit) limit = item->per_parent;
+    if (item && item->per_seat) limit = std::max(1, SeatsOf(parent));
+    if (relation == Relation::kInside) limit *= CompartmentsOf(p.info->name);
+    if (ChildrenOf(parent, child.name) >= limit) return false;
+    if (relation == Relation::kOnTop && TopUsed(parent) + size.x * size.y > kSurfaceShare * p.size.x * p.size.y) return false;
+    return true;
+  }
+
+  // The parent for a small object: the first choice with room left, the emptier instance first.
+  int FindParent(const std::vector<ParentChoice>& choices, const CategoryInfo& child, const Vec3& size,
+                 const ItemPrior* item, Relation* relation) const {
+    for (const ParentChoice& choice : choices) {
+      int best = -1, best_load = 0;
+      for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
+        if (nodes_[i].info->name != choice.category || !ParentHolds(i, child, size, choice.relation, item)) continue;
+        int load = ChildrenOf(i, child.name);
+        if (best < 0 || load < best_load) best = i, best_load = load;
+      }
+      if (best >= 0) {
+        *relation = choice.relation;
+        return best;
+      }
+    }
+    return -1;
+  }
+
+  const ItemPrior* ItemFor(std::string_view category, std::string_view parent_category = {}) const {
+    const ItemPrior* first = nullptr;
+    for (const ItemPrior& item : priors_.items) {
+      if (item.category != category) continue;
+      if (!first) first = &item;
+      if (parent_category.empty()) return first;
+      for (const ParentChoice& p : item.parents)
+        if (p.category == parent_category) return &item;
+    }
+    return first;
+  }
+
+  int CountOf(const ItemPrior* item) const {
+    int k = 0;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.item == item) ++k;
+    return k;
+  }
+  int CountOfCategory(std::string_view category) const {
+    int k = 0;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.info->name == category) ++k;
+    return k;
+  }
+  int Total() const {
+    int k = 0;
+    for (const Node& n : nodes_) k += !n.removed;
+    return k;
+  }
+
+  // ---- adding
+  // Adds one object; for small ones finds (or, when `make_parent`, plans) a parent. The index, or -1.
+  int Add(const CategoryInfo& info, const ItemPrior* item, Origin origin, int wish, int parent, Relation relation,
+          bool make_parent) {
+    Node n;
+    n.info = &info;
+    n.item = item;
+    n.origin = origin;
+    n.wish = wish;
+    n.mount = item ? item->mount : DefaultMount(info);
+    if (parent >= 0) n.mount = Mount::kParent;
+    n.size = SizeOf(info);
+    if (item) n.hints.assign(item->hints.begin(), item->hints.end());
+    const bool prompt = origin == Origin::kPrompt;
+    if (n.mount == Mount::kParent) {
+      if (parent >= 0) {
+        if (!ParentHolds(parent, info, n.size, relation, item)) return -1;
+        n.parent = parent;
+        n.relation = relation;
+      } else {
+        std::vector<ParentChoice> choices = item && !item->parents.empty() ? item->parents : DefaultParents(info.name);
+        n.parent = FindParent(choices, info, n.size, item, &n.relation);
+        if (n.parent < 0 && make_parent) {
+          // Plan the first choice of parent that fits the room, then try again.
+          for (const ParentChoice& c : choices) {
+            const CategoryInfo* pc = FindCategory(c.category);
+            if (!pc || excluded_.count(std::string(c.category))) continue;
+            if (Add(*pc, ItemFor(c.category), Origin::kPrior, -1, -1, Relation::kOnTop, false) >= 0) break;
+          }
+          n.parent = FindParent(choices, info, n.size, item, &n.relation);
+        }
+        if (n.parent < 0) return -1;
+      }
+      nodes_.push_back(n);
+      return static_cast<int>(nodes_.size()) - 1;
+    }
+    if (!TakeRoom(n, prompt)) return -1;  // may turn a wall object free-standing
+    n.relation = n.mount == Mount::kWall ? Relation::kAgainstWall
+                 : n.mount == Mount::kOnWall ? Relation::kOnWall
+                 : n.mount == Mount::kCeiling ? Relation::kHanging : Relation::kOnTop;
+    nodes_.push_back(n);
+    return static_cast<int>(nodes_.size()) - 1;
+  }
+
+  // Whether the priors may add one more of `item` now.
+  bool Allowed(const ItemPrior& item) const {
+    std::string category(item.category);
+    if (excluded_.count(category) || named_.count(category)) return false;
+    if (item.condition == Condition::kNoDiningRoomOnLevel &&
+        std::count(room_.level_categories.begin(), room_.level_categories.end(), Category::kDiningRoom) > 0)
+      return false;
+    if (!item.requires_category.empty() && CountOfCategory(item.requires_category) == 0) return false;
+    if (item.min_area > room_.furnishable_area) return false;
+    if (!item.group.empty())
+      for (const ItemPrior& other : priors_.items)
+        if (&other != &item && other.group == item.group && CountOf(&other) > 0) return false;
+    return true;
+  }
+
+  int MaxOf(const ItemPrior& item) const {
+    int max = item.max;
+    if (item.mount == Mount::kCeiling) max = std::clamp(1 + static_cast<int>(room_.furnishable_area / 20.0), 1, item.max);
+    return max;
+  }
+
+  bool AddPrior(const ItemPrior& item) {
+    const CategoryInfo* info = FindCategory(item.category);
+    if (!info || !Allowed(item) || CountOf(&item) >= MaxOf(item)) return false;
+    return Add(*info, &item, Origin::kPrior, -1, -1, Relation::kOnTop, false) >= 0;
+  }
+
+  // ---- the steps
+  void Wishes(const RoomRequest& request) {
+    std::vector<std::vector<int>> made(request.wishes.size());
+    // Containers first, so "bookshelves full of books" has its bookcases before its books.
+    std::vector<int> order;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int w = 0; w < static_cast<int>(request.wishes.size()); ++w)
+        if ((request.wishes[w].container >= 0) == (pass == 1)) order.push_back(w);
+    for (int w : order) {
+      const Wish& wish = request.wishes[w];
+      if (wish.count == 0) continue;
+      const CategoryInfo& info = *wish.category;
+      std::vector<int> parents;
+      if (wish.container >= 0) parents = made[wish.container];
+      const ItemPrior* item =
+          ItemFor(info.name, wish.container >= 0 ? request.wishes[wish.container].category->name : std::string_view{});
+      int want = wish.count;
+      if (wish.fill && !parents.empty()) {
+        const CategoryInfo& pc = *request.wishes[wish.container].category;
+        int per = wish.relation == Relation::kInside ? std::min(6, options_.max_per_receptacle * CompartmentsOf(pc.name))
+                                                     : options_.max_per_receptacle;
+        want = per * static_cast<int>(parents.size());
+      }
+      int added = 0;
+      for (int k = 0; k < want; ++k) {
+        int parent = -1;
+        Relation relation = wish.relation;
+        if (!parents.empty()) {
+          // Spread over the containers: the one holding fewest of this category that still has room.
+          for (int p : parents)
+            if (ParentHolds(p, info, info.size_min, relation, item) &&
+                (parent < 0 || ChildrenOf(p, info.name) < ChildrenOf(parent, info.name)))
+              parent = p;
+          if (parent < 0) break;
+        }
+        int node = Add(info, item, Origin::kPrompt, w, parent, relation, true);
+        if (node < 0) break;
+        for (const std::string& h : wish.hints)
+          if (std::find(nodes_[node].hints.begin(), nodes_[node].hints.end(), h) == nodes_[node].hints.end())
+            nodes_[node].hints.push_back(h);
+        made[w].push_back(node);
+        ++added;
+      }
+      if (added < want && !wish.fill) {
+        notes_.push_back("the request asks for " + std::to_string(want) + " x " + std::string(info.name) + "; " +
+                         std::to_string(added) + " fit");
+        dropped_ += want - added;
+      }
+    }
+  }
+
+  // Place settings follow the seats: one per chair around their table, within the item's range.
+  int SettingsWanted(const ItemPrior& item) const {
+    int seats = 0;
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i)
+      if (!nodes_[i].removed && !item.parents.empty() && nodes_[i].info->name == item.parents[0].category) seats += SeatsOf(i);
+    return std::clamp(seats, item.min, item.max);
+  }
+
+  void Settings() {
+    for (const ItemPrior& item : priors_.items)
+      if (item.per_seat)
+        while (CountOf(&item) < SettingsWanted(item))
+          if (!AddPrior(item)) break;
+  }
+
+  // The priors' minimum counts: anchors, or (small) what stands on them.
+  void Mandatory(bool small) {
+    for (const ItemPrior& item : priors_.items) {
+      if ((item.mount == Mount::kParent) != small) continue;
+      int want = item.per_seat ? SettingsWanted(item) : item.min;
+      while (CountOf(&item) < want && Allowed(item))
+        if (!AddPrior(item)) {
+          notes_.push_back("no room for " + std::string(item.category) + " (" + std::to_string(CountOf(&item)) + " of " +
+                           std::to_string(want) + ")");
+          dropped_ += want - CountOf(&item);
+          break;
+        }
+    }
+  }
+
+  // Every item drawn between its min and max, up to the target: anchors, or (small) what stands on them.
+  void Draw(bool small) {
+    for (const ItemPrior& item : priors_.items) {
+      if ((item.mount == Mount::kParent) != small || item.per_seat) continue;
+      int cap = rng_.Int(item.min, MaxOf(item));
+      while (CountOf(&item) < cap && Total() < target_)
+        if (!AddPrior(item)) break;
+    }
+  }
+
+  // Up to the target: one more of a random item that can take one, small objects twice as likely.
+  void Grow() {
+    std::set<const ItemPrior*> full;
+    while (Total() < target_) {
+      std::vector<const ItemPrior*> open;
+      std::vector<double> weights;
+      for (const ItemPrior& item : priors_.items) {
+        if (full.count(&item) || item.per_seat || CountOf(&item) >= MaxOf(item) || !Allowed(item)) continue;
+        open.push_back(&item);
+        weights.push_back(item.mount == Mount::kParent ? 2.0 : 1.0);
+      }
+      if (open.empty()) break;
+      double total = 0.0;
+      for (double w : weights) total += w;
+      double x = rng_.Unit() * total;
+      size_t pick = 0;
+      while (pick + 1 < open.size() && x >= weights[pick]) x -= weights[pick++];
+      if (!AddPrior(*open[pick])) full.insert(open[pick]);
+    }
+  }
+
+  // Above the target: take back prior objects nothing stands on. First small things above their item's
+  // minimum, then anchors above theirs, then small things down from their minimum; the item furthest above
+  // its minimum first. Objects the request named stay.
+  void Trim() {
+    for (int pass = 0; pass < 3 && Total() > hi_; ++pass) {
+      const bool small = pass != 1;
+      while (Total() > hi_) {
+        int victim = -1, surplus = -1000;
+        for (int i = static_cast<int>(nodes_.size()) - 1; i >= 0; --i) {
+          const Node& n = nodes_[i];
+          if (n.removed || n.origin == Origin::kPrompt || !n.item || (n.mount == Mount::kParent) != small || HasChildren(i))
+            continue;
+          int over = CountOf(n.item) - n.item->min;
+          if (pass < 2 && over <= 0) continue;
+          if (over > surplus) victim = i, surplus = over;
+        }
+        if (victim < 0) break;
+        GiveBack(nodes_[victim]);
+        nodes_[victim].removed = true;
+      }
+    }
+  }
+
+  bool HasChildren(int i) const {
+    for (const Node& n : nodes_)
+      if (!n.removed && n.parent == i) return true;
+    return false;
+  }
+
+  // ---- output
+  RoomPlan Finish(const RoomRequest& request) {
+    RoomPlan plan;
+    // Output order: what stands on the floor, a wall or the ceiling first, then what stands on or in it;
+    // within each, a category's objects together, categories in the order they were first planned.
+    std::vector<int> order;
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i)
+      if (!nodes_[i].removed) order.push_back(i);
+    std::map<std::string_view, int> first_seen;
+    for (int i : order) first_seen.emplace(nodes_[i].info->name, i);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      bool sa = nodes_[a].mount == Mount::kParent, sb = nodes_[b].mount == Mount::kParent;
+      if (sa != sb) return !sa;
+      int ca = first_seen[nodes_[a].info->name], cb = first_seen[nodes_[b].info->name];
+      if (ca != cb) return ca < cb;
+      return nodes_[a].parent < nodes_[b].parent;  // a category's small objects grouped by parent
+    });
+    std::vector<std::string> ids(nodes_.size());
+    std::map<std::string, int> next;
+    std::map<std::string, std::vector<int>> by_category;  // live node indices in output order
+    for (int i : order) {
+      std::string category(nodes_[i].info->name);
+      ids[i] = room_.name + "/" + category + "-" + std::to_string(next[category]++);
+      by_category[category].push_back(i);
+    }
+    auto instance = [&](int i) {
+      const auto& list = by_category[std::string(nodes_[i].info->name)];
+      return static_cast<int>(std::find(list.begin(), list.end(), i) - list.begin());
+    };
+    std::set<std::tuple<std::string, int, std::string>> seen_edges;
+    auto add_edge = [&](const std::string& source, SemanticRelation relation, const std::string& target, const EdgeParams& params) {
+      if (source == target || !seen_edges.insert({source, static_cast<int>(relation), target}).second) return;
+      plan.edges.push_back({source, relation, target, params});
+    };
+    for (int i : order) {
+      const Node& n = nodes_[i];
+      SceneObject o;
+      o.id = ids[i];
+      o.category = std::string(n.info->name);
+      o.room = room_.name;
+      o.level = room_.level;
+      o.size = n.size;
+      o.affordances = n.info->affordances;
+      o.parent = n.parent >= 0 ? ids[n.parent]
+                 : n.mount == Mount::kOnWall ? std::string(kParentWall)
+                 : n.mount == Mount::kCeiling ? std::string(kParentCeiling) : std::string(kParentFloor);
+      o.relation = n.relation;
+      o.origin = n.origin;
+      o.hints = n.hints;
+      if (n.info->zone && (o.affordances & kInteractor)) {
+        InteractionZone zone{n.info->zone->side, n.info->zone->depth, {}};
+        if (n.item)
+          for (std::string_view c : n.item->exempt)
+            for (int j : by_category[std::string(c)]) zone.exempt.push_back(ids[j]);
+        o.interaction_zone = zone;
+      }
+      plan.objects.push_back(o);
+      if (!n.item) continue;
+      const int k = instance(i);
+      for (const EdgeRule& rule : n.item->edges) {
+        const std::vector<int>* targets = &by_category[std::string(rule.target)];
+        if (targets->empty()) continue;
+        int t = -1;
+        SemanticRelation relation = rule.relation;
+        switch (rule.pick) {
+          case Pick::kFirst: t = targets->front(); break;
+          case Pick::kSame: t = (*targets)[std::min<size_t>(k, targets->size() - 1)]; break;
+          case Pick::kPrevious: t = k > 0 && rule.target == n.info->name ? (*targets)[k - 1] : -1; break;
+          case Pick::kAlternate:
+            t = targets->front();
+            if (relation == SemanticRelation::kLeftOf && k % 2 == 1) relation = SemanticRelation::kRightOf;
+            break;
+        }
+        if (t >= 0) add_edge(ids[i], relation, ids[t], rule.params);
+      }
+    }
+    // Edges the request states between the objects it names (their first instances).
+    for (const WishEdge& e : request.edges) {
+      int s = -1, t = -1;
+      for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
+        if (nodes_[i].removed) continue;
+        if (s < 0 && nodes_[i].wish == e.source) s = i;
+        if (t < 0 && nodes_[i].wish == e.target) t = i;
+      }
+      if (s >= 0 && t >= 0) add_edge(ids[s], e.relation, ids[t], {});
+    }
+
+    PlanSummary& sum = plan.summary;
+    sum.objects = static_cast<int>(plan.objects.size());
+    for (const SceneObject& o : plan.objects) sum.from_prompt += o.origin == Origin::kPrompt;
+    sum.target_min = lo_;
+    sum.target_max = hi_;
+    sum.dropped = dropped_;
+    double floor_used = 0.0;
+    for (const Node& n : nodes_)
+      if (!n.removed) floor_used += n.floor_taken + n.extra_taken;
+    sum.floor_used = room_.furnishable_area > 0 ? floor_used / room_.furnishable_area : 0.0;
+    if (sum.objects == 0) {
+      sum.outcome = PlanOutcome::kEmpty;
+      notes_.push_back(priors_.items.empty() && text_.empty() ? "no priors for this room type and no request"
+                                                              : "nothing fits this room");
+    } else if (dropped_ > 0 || sum.objects < lo_) {
+      sum.outcome = PlanOutcome::kPartial;
+      if (sum.objects < lo_)
+        notes_.push_back(std::to_string(sum.objects) + " objects, below the " + std::to_string(lo_) +
+                         " aimed at: the room has no space for more");
+    }
+    plan.record.notes = notes_;
+    return plan;
+  }
+
+  const RoomContext& room_;
+  const std::string& text_;
+  const PlannerOptions& options_;
+  const RoomPriors& priors_;
+  SplitMix64 rng_;
+  std::vector<Node> nodes_;
+  std::vector<Stretch> stretches_;
+  double floor_left_ = 0.0, prompt_extra_ = 0.0, rug_left_ = 0.0, onwall_left_ = 0.0;
+  double size_factor_ = 0.5;
+  int lo_ = 0, hi_ = 0, target_ = 0;
+  int dropped_ = 0;
+  std::set<std::string> excluded_, named_;
+  std::vector<std::string> notes_;
+};
+
+}  // namespace
+
+std::string PlannerOptions::Check() const {
+  auto fmt = [](double v) {
+    std::string s = std::to_string(v);
+    return s.substr(0, s.find_last_not_of('0') + 1);
+  };
+  if (!(floor_share > 0.0 && floor_share <= 1.0)) return "floor_share = " + fmt(floor_share) + ": must be in (0, 1]";
+  if (!(prompt_floor_share >= floor_share && prompt_floor_share <= 1.0))
+    return "prompt_floor_share = " + fmt(prompt_floor_share) + ": must be in [floor_share, 1]";
+  if (max_per_receptacle < 1 || max_per_receptacle > 10)
+    return "max_per_receptacle = " + std::to_string(max_per_receptacle) + ": must be in [1, 10]";
+  if (rich_min_objects < 1 || rich_max_objects < rich_min_objects)
+    return "rich_min_objects / rich_max_objects = " + std::to_string(rich_min_objects) + " / " +
+           std::to_string(rich_max_objects) + ": need 1 <= min <= max";
+  if (!(rich_min_area >= 0.0)) return "rich_min_area = " + fmt(rich_min_area) + ": must be >= 0";
+  return "";
+}
+
+std::string_view PlanOutcomeName(PlanOutcome outcome) {
+  switch (outcome) {
+    case PlanOutcome::kPlanned: return "planned";
+    case PlanOutcome::kPartial: return "partial";
+    case PlanOutcome::kEmpty: return "empty";
+  }
+  return "planned";
+}
+
+Result<RoomPlan> PriorsPlanner::Plan(const PlanRequest& request) const {
+  if (!request.room) return Error{"plan: no room given"};
+  if (std::string problem = options_.Check(); !problem.empty()) return Error{"planner options: " + problem};
+  auto start = std::chrono::steady_clock::now();
+  RoomPlan plan = Planning(*request.room, request.text, request.seed, options_).Run();
+  plan.record.planner = std::string(name());
+  plan.record.seed = request.seed;
+  plan.record.text = request.text;
+  plan.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return plan;
+}
+
+}  // namespace villa::scene
+
+namespace villa::scene {
+
+SceneFile PlanSceneFile(const FileRef& layout, const BuildOptions& build, const std::string& room, const RoomPlan& plan) {
+  SceneFile scene;
+  scene.layout = layout;
+  scene.build = {build.slab_thickness, build.exterior_wall_thickness, build.interior_wall_thickness};
+  RoomEntry entry;
+  entry.name = room;
+  entry.plan = plan.record;
+  entry.edges_sem = plan.edges;
+  scene.rooms.push_back(entry);
+  scene.objects = plan.objects;
+  return scene;
+}
+
+std::string PlanTable(const RoomPlan& plan, const std::string& room) {
+  const std::string prefix = room + "/";
+  auto local = [&](const std::string& id) { return id.rfind(prefix, 0) == 0 ? id.substr(prefix.size()) : id; };
+  TextTable table({"id", "category", "parent / relation", "affordances", "zone", "origin"});
+  for (const SceneObject& o : plan.objects) {
+    std::string affordances;
+    for (const std::string& a : AffordanceNames(o.affordances)) affordances += (affordances.empty() ? "" : " ") + a;
+    std::string zone = "none";
+    if (o.interaction_zone) {
+      zone = o.interaction_zone->side + " " + FormatFixed(o.interaction_zone->depth, 2);
+      if (!o.interaction_zone->exempt.empty()) zone += " (" + std::to_string(o.interaction_zone->exempt.size()) + " exempt)";
+    }
+    std::string origin(OriginName(o.origin));
+    for (const std::string& h : o.hints) origin += ", " + h;
+    table.AddRow({local(o.id), o.category, local(o.parent) + " / " + std::string(RelationName(o.relation)), affordances,
+                  zone, origin});
+  }
+  std::string out = table.Render();
+  if (!plan.edges.empty()) {
+    out += "semantic edges:\n";
+    for (const SemanticEdge& e : plan.edges)
+      out += "  " + local(e.source) + " " + std::string(SemanticRelationName(e.relation)) + " " + local(e.target) + "\n";
+  }
+  for (const std::string& note : plan.record.notes) out += "note: " + note + "\n";
+  return out;
+}
+
+}  // namespace villa::scene

@@ -1,0 +1,369 @@
+#include "scene/request.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <optional>
+
+namespace villa::scene {
+namespace {
+
+struct Token {
+  std::string word;
+  int sentence = 0;
+};
+
+// Lower-case words; '-' and '_' join words as spaces do; apostrophes vanish ("children's" -> "childrens");
+// . ! ? ; end a sentence. Other punctuation separates words.
+std::vector<Token> Tokenise(std::string_view text) {
+  std::vector<Token> tokens;
+  std::string word;
+  int sentence = 0;
+  auto flush = [&] {
+    if (!word.empty()) tokens.push_back({word, sentence});
+    word.clear();
+  };
+  for (char raw : text) {
+    unsigned char c = static_cast<unsigned char>(raw);
+    if (std::isalnum(c) || c >= 0x80) {
+      word.push_back(static_cast<char>(std::tolower(c)));
+    } else if (c == '\'') {
+      continue;
+    } else {
+      flush();
+      if (c == '.' || c == '!' || c == '?' || c == ';' || c == '\n') ++sentence;
+    }
+  }
+  flush();
+  return tokens;
+}
+
+std::string Join(const std::vector<Token>& tokens, size_t begin, size_t end) {
+  std::string out;
+  for (size_t i = begin; i < end; ++i) out += (i > begin ? " " : "") + tokens[i].word;
+  return out;
+}
+
+struct RoomWord {
+  std::string_view words;
+  Category category;
+};
+
+// Enough room names to bind furniture to rooms (the generator's brief parser has the full lexicon for
+// layouts; scene/ sits below it and keeps its own short list).
+constexpr std::array<RoomWord, 38> kRoomWords = {{
+    {"living room", Category::kLivingRoom},     {"lounge", Category::kLivingRoom},
+    {"sitting room", Category::kLivingRoom},    {"family room", Category::kLivingRoom},
+    {"living area", Category::kLivingRoom},     {"bedroom", Category::kBedroom},
+    {"master bedroom", Category::kBedroom},     {"guest room", Category::kBedroom},
+    {"guest bedroom", Category::kBedroom},      {"kitchen", Category::kKitchen},
+    {"kitchenette", Category::kKitchen},        {"bathroom", Category::kBathroom},
+    {"washroom", Category::kBathroom},          {"restroom", Category::kBathroom},
+    {"shower room", Category::kBathroom},       {"dining room", Category::kDiningRoom},
+    {"dining area", Category::kDiningRoom},     {"childrens room", Category::kChildrenRoom},
+    {"children room", Category::kChildrenRoom}, {"kids room", Category::kChildrenRoom},
+    {"kid room", Category::kChildrenRoom},      {"nursery", Category::kChildrenRoom},
+    {"playroom", Category::kChildrenRoom},      {"office", Category::kOffice},
+    {"study", Category::kOffice},               {"home office", Category::kOffice},
+    {"meeting room", Category::kMeetingRoom},   {"conference room", Category::kMeetingRoom},
+    {"boardroom", Category::kMeetingRoom},      {"utility room", Category::kUtilityRoom},
+    {"laundry room", Category::kUtilityRoom},   {"laundry", Category::kUtilityRoom},
+    {"staircase room", Category::kUtilityRoom}, {"stair room", Category::kUtilityRoom},
+    {"balcony", Category::kBalcony},            {"terrace", Category::kBalcony},
+    {"veranda", Category::kBalcony},            {"patio", Category::kBalcony},
+}};
+
+// Vocabulary words too common in prose to mean the object alone ("a range of plants", "seats four").
+constexpr std::array<std::string_view, 7> kAmbiguous = {"range", "display", "seat", "seats", "screen", "frame", "trunk"};
+
+std::optional<Category> RoomOf(const std::string& phrase) {
+  for (const RoomWord& r : kRoomWords) {
+    if (phrase == r.words) return r.category;
+    // Plural room words ("bedrooms") bind like the singular.
+    if (phrase.size() == r.words.size() + 1 && phrase.back() == 's' && phrase.compare(0, r.words.size(), r.words) == 0)
+      return r.category;
+  }
+  return std::nullopt;
+}
+
+struct Mention {
+  bool room = false;
+  size_t begin = 0, end = 0;  // token range
+  const CategoryInfo* category = nullptr;
+  Category room_category = Category::kRoom;
+};
+
+// Longest match first (3, 2, 1 words): "study desk" is a desk, "study" alone an office.
+std::vector<Mention> FindMentions(const std::vector<Token>& tokens) {
+  std::vector<Mention> out;
+  size_t i = 0;
+  while (i < tokens.size()) {
+    bool found = false;
+    for (size_t n = std::min<size_t>(3, tokens.size() - i); n >= 1 && !found; --n) {
+      if (tokens[i + n - 1].sentence != tokens[i].sentence) continue;
+      std::string phrase = Join(tokens, i, i + n);
+      if (auto room = RoomOf(phrase)) {
+        out.push_back({true, i, i + n, nullptr, *room});
+        found = true;
+      } else if (n > 1 || std::find(kAmbiguous.begin(), kAmbiguous.end(), phrase) == kAmbiguous.end()) {
+        if (const CategoryInfo* c = CategoryForWord(phrase)) {
+          out.push_back({false, i, i + n, c, Category::kRoom});
+          found = true;
+        }
+      }
+      if (found) i += n;
+    }
+    if (!found) ++i;
+  }
+  return out;
+}
+
+std::optional<int> NumberWord(const std::string& w) {
+  static constexpr std::array<std::string_view, 13> kWords = {"zero", "one", "two", "three", "four", "five", "six",
+                                                              "seven", "eight", "nine", "ten", "eleven", "twelve"};
+  for (size_t i = 0; i < kWords.size(); ++i)
+    if (w == kWords[i]) return static_cast<int>(i);
+  if (!w.empty() && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    return std::stoi(w);
+  return std::nullopt;
+}
+
+bool IsOneOf(const std::string& w, std::initializer_list<std::string_view> words) {
+  return std::find(words.begin(), words.end(), w) != words.end();
+}
+
+// The count said before an object (up to three words back, past adjectives): a number, an article, "a pair
+// of", "several", "no". `explicit_count` is false when nothing was said.
+void CountBefore(const std::vector<Token>& tokens, const Mention& m, size_t floor, Wish& wish) {
+  const std::string& last = tokens[m.end - 1].word;
+  bool plural = last.size() > 3 && last.back() == 's' && last[last.size() - 2] != 's';
+  wish.count = plural ? 2 : 1;
+  wish.explicit_count = false;
+  for (size_t back = 1; back <= 4 && m.begin >= floor + back; ++back) {
+    const std::string& w = tokens[m.begin - back].word;
+    if (tokens[m.begin - back].sentence != tokens[m.begin].sentence) break;
+    if (IsOneOf(w, {"no", "without", "nor"})) {
+      wish.count = 0;
+      wish.explicit_count = true;
+      return;
+    }
+    if (auto n = NumberWord(w)) {
+      wish.count = *n;
+      wish.explicit_count = true;
+      return;
+    }
+    if (IsOneOf(w, {"a", "an", "single", "another", "any"})) {
+      wish.count = 1;
+      wish.explicit_count = true;
+      // "without a TV", "not a single rug"
+      for (size_t more = back + 1; more <= back + 2 && m.begin >= floor + more; ++more)
+        if (IsOneOf(tokens[m.begin - more].word, {"without", "no", "not", "nor"})) wish.count = 0;
+      return;
+    }
+    if (w == "pair" || w == "couple") {
+      wish.count = 2;
+      wish.explicit_count = true;
+      return;
+    }
+    if (IsOneOf(w, {"several", "some", "few"})) {
+      wish.count = 3;
+      wish.explicit_count = true;
+      return;
+    }
+    if (IsOneOf(w, {"many", "lots", "plenty"})) {
+      wish.count = 4;
+      wish.explicit_count = true;
+      return;
+    }
+    if (IsOneOf(w, {"and", "or", "with", "in", "on", "for", "the", "of", "to", "by", "near", "next", "beside", "facing"}))
+      break;  // the words before belong to something else
+  }
+}
+
+bool WordsAt(const std::vector<Token>& tokens, size_t at, std::initializer_list<std::string_view> words) {
+  size_t i = at;
+  for (std::string_view w : words) {
+    if (i >= tokens.size() || tokens[i].word != w || tokens[i].sentence != tokens[at].sentence) return false;
+    ++i;
+  }
+  return true;
+}
+
+// Skips "the", "a", "an", "my", "our", "its" at `at`.
+size_t SkipDeterminers(const std::vector<Token>& tokens, size_t at) {
+  while (at < tokens.size() && IsOneOf(tokens[at].word, {"the", "a", "an", "my", "our", "its", "their", "his", "her"})) ++at;
+  return at;
+}
+
+struct RelationPhrase {
+  std::initializer_list<std::string_view> words;
+  SemanticRelation relation;
+};
+
+bool IsSeat(const CategoryInfo* c) {
+  return c->name == "chair" || c->name == "office-chair" || c->name == "stool" || c->name == "child-chair" ||
+         c->name == "outdoor-chair" || c->name == "armchair" || c->name == "bench";
+}
+
+}  // namespace
+
+RoomRequest ParseRoomRequest(std::string_view text, Category room) {
+  RoomRequest out;
+  std::vector<Token> tokens = Tokenise(text);
+  std::vector<Mention> mentions = FindMentions(tokens);
+  const bool names_rooms = std::any_of(mentions.begin(), mentions.end(), [](const Mention& m) { return m.room; });
+
+  // The room each object mention belongs to.
+  std::vector<std::optional<Category>> bound(mentions.size());
+  std::optional<Category> carried;  // the room the text last spoke of, across sentences
+  for (size_t k = 0; k < mentions.size(); ++k) {
+    const Mention& m = mentions[k];
+    if (m.room) {
+      carried = m.room_category;
+      continue;
+    }
+    if (!names_rooms) {
+      bound[k] = room;
+      continue;
+    }
+    // "... in / for / into the <room>" after the object, before any other room is named.
+    for (size_t j = k + 1; j < mentions.size(); ++j) {
+      if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
+      if (!mentions[j].room) continue;
+      size_t p = mentions[j].begin;
+      while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their"})) --p;
+      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) bound[k] = mentions[j].room_category;
+      break;
+    }
+    if (!bound[k]) {
+      for (size_t j = k; j-- > 0;) {
+        if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
+        if (mentions[j].room) {
+          bound[k] = mentions[j].room_category;
+          break;
+        }
+      }
+    }
+    if (!bound[k]) bound[k] = carried;
+    // Named before any room: the text is meant for the room being planned.
+    if (!bound[k]) bound[k] = room;
+  }
+
+  // Wishes for this room, and how they relate.
+  std::vector<int> wish_of(mentions.size(), -1);
+  size_t floor = 0;  // counts are not read across an earlier mention
+  for (size_t k = 0; k < mentions.size(); ++k) {
+    const Mention& m = mentions[k];
+    if (m.room) {
+      floor = m.end;
+      continue;
+    }
+    if (!bound[k] || *bound[k] != room) {
+      if (bound[k]) out.other_rooms.push_back(std::string(m.category->name) + " (" + std::string(CategoryName(*bound[k])) + ")");
+      floor = m.end;
+      continue;
+    }
+    Wish wish;
+    wish.category = m.category;
+    wish.phrase = Join(tokens, m.begin, m.end);
+    CountBefore(tokens, m, floor, wish);
+    floor = m.end;
+    // "the sofa" after "a sofa" is the same sofa: a definite or count-less mention of a category already
+    // wished for refers back to it.
+    bool definite = m.begin > 0 && IsOneOf(tokens[m.begin - 1].word, {"the", "this", "that", "its", "their"});
+    auto earlier = std::find_if(out.wishes.begin(), out.wishes.end(), [&](const Wish& w) { return w.category == m.category; });
+    if (earlier != out.wishes.end() && (definite || !wish.explicit_count)) {
+      wish_of[k] = static_cast<int>(earlier - out.wishes.begin());
+      continue;
+    }
+    wish_of[k] = static_cast<int>(out.wishes.size());
+    out.wishes.push_back(wish);
+  }
+
+  static const RelationPhrase kRelations[] = {
+      {{"in", "front", "of"}, SemanticRelation::kFrontOf}, {{"next", "to"}, SemanticRelation::kNextTo},
+      {{"facing"}, SemanticRelation::kFaceTo},             {{"opposite"}, SemanticRelation::kFaceTo},
+      {{"beside"}, SemanticRelation::kNextTo},             {{"by"}, SemanticRelation::kNextTo},
+      {{"near"}, SemanticRelation::kNear},                 {{"behind"}, SemanticRelation::kBehind},
+      {{"left", "of"}, SemanticRelation::kLeftOf},         {{"right", "of"}, SemanticRelation::kRightOf},
+      {{"above"}, SemanticRelation::kBehind},              {{"over"}, SemanticRelation::kBehind},
+  };
+  for (size_t k = 0; k < mentions.size(); ++k) {
+    if (wish_of[k] < 0) continue;
+    Wish& wish = out.wishes[wish_of[k]];
+    const Mention& m = mentions[k];
+    size_t at = m.end;
+    // The next object mention, if it follows within a few words.
+    auto next_object = [&](size_t from) -> int {
+      for (size_t j = k + 1; j < mentions.size(); ++j) {
+        if (mentions[j].begin < from) continue;
+        if (mentions[j].begin > from + 3 || mentions[j].room) return -1;
+        return wish_of[j];
+      }
+      return -1;
+    };
+    // Containment: "full of", "filled with", "stocked with", "lined with".
+    for (auto phrase : {std::initializer_list<std::string_view>{"full", "of"}, {"filled", "with"}, {"stocked", "with"},
+                        {"lined", "with"}, {"packed", "with"}}) {
+      if (!WordsAt(tokens, at, phrase)) continue;
+      int inner = next_object(at + phrase.size());
+      if (inner >= 0) {
+        Wish& child = out.wishes[inner];
+        child.container = wish_of[k];
+        child.relation = wish.category->has_cavity ? Relation::kInside : Relation::kOnTop;
+        child.fill = !child.explicit_count;
+      }
+    }
+    // "on (the) X" / "in (the) X" / "inside X": a parent among the named objects.
+    for (std::string_view prep : {"on", "in", "inside", "onto"}) {
+      if (at >= tokens.size() || tokens[at].word != prep || tokens[at].sentence != tokens[m.begin].sentence) continue;
+      int parent = next_object(SkipDeterminers(tokens, at + 1));
+      if (parent < 0 || parent == wish_of[k]) continue;
+      const CategoryInfo* pc = out.wishes[parent].category;
+      bool inside = prep != "on" && prep != "onto";
+      if (inside ? pc->has_cavity : pc->has_surface) {
+        wish.container = parent;
+        wish.relation = inside ? Relation::kInside : Relation::kOnTop;
+      }
+    }
+    // Places in the room.
+    size_t place = SkipDeterminers(tokens, at + 1);
+    bool prep_place = at < tokens.size() && IsOneOf(tokens[at].word, {"by", "near", "at", "under", "beside", "facing", "in", "into", "to"});
+    if (WordsAt(tokens, at, {"next", "to"})) {
+      place = SkipDeterminers(tokens, at + 2);
+      prep_place = true;
+    }
+    if (prep_place && place < tokens.size() && IsOneOf(tokens[place].word, {"window", "windows"}))
+      wish.hints.emplace_back(kHintNearWindow);
+    if (WordsAt(tokens, at, {"far", "from"}) || WordsAt(tokens, at, {"away", "from"})) {
+      size_t what = SkipDeterminers(tokens, at + 2);
+      if (what < tokens.size() && IsOneOf(tokens[what].word, {"door", "doors", "entrance"})) wish.hints.emplace_back(kHintFarFromDoor);
+    }
+    if (at < tokens.size() && IsOneOf(tokens[at].word, {"in", "into"}) && place < tokens.size()) {
+      if (IsOneOf(tokens[place].word, {"corner", "corners"})) wish.hints.emplace_back(kHintCorner);
+      if (IsOneOf(tokens[place].word, {"middle", "centre", "center"})) wish.hints.emplace_back(kHintMiddle);
+    }
+    // Relations to the next named object.
+    for (const RelationPhrase& r : kRelations) {
+      if (!WordsAt(tokens, at, r.words)) continue;
+      int target = next_object(SkipDeterminers(tokens, at + r.words.size()));
+      if (target < 0 || target == wish_of[k]) continue;
+      out.edges.push_back({wish_of[k], r.relation, target});
+      if (r.words.size() == 1 && (*r.words.begin() == "above" || *r.words.begin() == "over"))
+        out.edges.push_back({wish_of[k], SemanticRelation::kCentered, target});
+      if (*r.words.begin() == "opposite") out.edges.push_back({target, SemanticRelation::kFaceTo, wish_of[k]});
+      break;
+    }
+    // "a table with four chairs": seats around the table.
+    if (WordsAt(tokens, at, {"with"})) {
+      int seat = next_object(at + 1);
+      if (seat >= 0 && IsSeat(out.wishes[seat].category) && wish.category->has_surface) {
+        out.edges.push_back({seat, SemanticRelation::kFaceTo, wish_of[k]});
+        out.edges.push_back({seat, SemanticRelation::kNextTo, wish_of[k]});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace villa::scene

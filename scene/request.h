@@ -1,0 +1,48 @@
+#pragma once
+// What a request text asks of one room's furnishing: the objects it names with their counts ("a TV",
+// "two armchairs", "no rug"), what goes in or on what ("bookshelves full of books", "a lamp on the desk"),
+// where ("a desk by the window", "the bed far from the door") and relations between the named objects
+// ("an armchair facing the sofa"). Object words come from the shared vocabulary (assets/category.h).
+//
+// A text may speak of several rooms ("a TV in the meeting room and an island in the kitchen"): objects
+// are bound to the room named around them (a following "in/for the <room>", else the nearest room named
+// before them in the sentence, else the room the previous sentences spoke of). Objects named before any
+// room is named are for the room being planned (the planner is given the text meant for its room).
+// Hand-written tokeniser, no regular expressions.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "assets/category.h"
+#include "layout/layout.h"
+#include "scene/scene.h"
+
+namespace villa::scene {
+
+struct Wish {
+  const CategoryInfo* category = nullptr;
+  int count = 1;                 // 0: "no rug", "without a TV" (the priors must not add one either)
+  bool explicit_count = false;   // a number or article was given; false for a bare plural (2 assumed)
+  int container = -1;            // index of the wish it goes on / in ("books" in "bookcase full of books")
+  Relation relation = Relation::kOnTop;  // with a container: kOnTop or kInside
+  bool fill = false;             // "full of": as many as the container holds
+  std::vector<std::string> hints;  // kHint* words
+  std::string phrase;            // the words of the request that named it
+};
+
+struct WishEdge {
+  int source = -1;  // wish indices
+  SemanticRelation relation = SemanticRelation::kNear;
+  int target = -1;
+};
+
+struct RoomRequest {
+  std::vector<Wish> wishes;        // in the order the text names them
+  std::vector<WishEdge> edges;
+  std::vector<std::string> other_rooms;  // "tv (meeting-room)": objects the text gives other rooms
+};
+
+// The wishes of `text` for a room of category `room`.
+RoomRequest ParseRoomRequest(std::string_view text, Category room);
+
+}  // namespace villa::scene

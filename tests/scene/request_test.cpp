@@ -1,0 +1,138 @@
+#include <catch2/catch.hpp>
+
+#include "scene/request.h"
+
+using namespace villa;
+using namespace villa::scene;
+
+namespace {
+
+const Wish* Named(const RoomRequest& r, std::string_view category) {
+  for (const Wish& w : r.wishes)
+    if (w.category->name == category) return &w;
+  return nullptr;
+}
+
+bool HasEdge(const RoomRequest& r, std::string_view source, SemanticRelation relation, std::string_view target) {
+  for (const WishEdge& e : r.edges)
+    if (r.wishes[e.source].category->name == source && e.relation == relation && r.wishes[e.target].category->name == target)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("counts: numbers, articles, plurals and negations", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("A sofa, two armchairs, 3 side tables, a pair of lamps, some plants, bookshelves and no rug.",
+                                   Category::kLivingRoom);
+  REQUIRE(r.wishes.size() == 7);
+  CHECK(Named(r, "sofa")->count == 1);
+  CHECK(Named(r, "sofa")->explicit_count);
+  CHECK(Named(r, "armchair")->count == 2);
+  CHECK(Named(r, "side-table")->count == 3);
+  CHECK(Named(r, "table-lamp")->count == 2);
+  CHECK(Named(r, "plant")->count == 3);
+  CHECK(Named(r, "bookcase")->count == 2);  // a bare plural
+  CHECK_FALSE(Named(r, "bookcase")->explicit_count);
+  CHECK(Named(r, "rug")->count == 0);
+  CHECK(Named(r, "rug")->explicit_count);
+  // Adjectives between the number and the noun.
+  CHECK(Named(ParseRoomRequest("two big comfortable armchairs", Category::kLivingRoom), "armchair")->count == 2);
+  CHECK(Named(ParseRoomRequest("without a TV", Category::kLivingRoom), "tv")->count == 0);
+}
+
+TEST_CASE("a definite mention refers back to the object already named", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("A sofa and an armchair facing the sofa.", Category::kLivingRoom);
+  REQUIRE(r.wishes.size() == 2);
+  CHECK(HasEdge(r, "armchair", SemanticRelation::kFaceTo, "sofa"));
+}
+
+TEST_CASE("containers: full of, on, inside", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("bookshelves full of books, a lamp on the desk and towels inside the cabinet",
+                                   Category::kOffice);
+  const Wish* books = Named(r, "books");
+  REQUIRE(books);
+  REQUIRE(books->container >= 0);
+  CHECK(r.wishes[books->container].category->name == "bookcase");
+  CHECK(books->relation == Relation::kInside);
+  CHECK(books->fill);
+  const Wish* lamp = Named(r, "table-lamp");
+  REQUIRE(lamp);
+  REQUIRE(lamp->container >= 0);
+  CHECK(r.wishes[lamp->container].category->name == "desk");
+  CHECK(lamp->relation == Relation::kOnTop);
+  const Wish* towels = Named(r, "folded-clothes");
+  REQUIRE(towels);
+  REQUIRE(towels->container >= 0);
+  CHECK(r.wishes[towels->container].category->name == "cabinet");
+  CHECK(towels->relation == Relation::kInside);
+  // "on" a thing without a surface is not a container.
+  CHECK(Named(ParseRoomRequest("a vase on the toilet", Category::kBathroom), "vase")->container == -1);
+}
+
+TEST_CASE("places in the room become hints", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("a desk by the window, the bed far from the door, a plant in the corner and a table in the middle",
+                                   Category::kBedroom);
+  auto hints = [&](std::string_view c) { return Named(r, c)->hints; };
+  CHECK(hints("desk") == std::vector<std::string>{"near_window"});
+  CHECK(hints("bed") == std::vector<std::string>{"far_from_door"});
+  CHECK(hints("plant") == std::vector<std::string>{"corner"});
+  CHECK(hints("dining-table") == std::vector<std::string>{"middle"});
+  CHECK(Named(ParseRoomRequest("a desk next to the window", Category::kOffice), "desk")->hints ==
+        std::vector<std::string>{"near_window"});
+}
+
+TEST_CASE("relations between named objects", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("a coffee table in front of the sofa; a lamp next to the sofa; a painting above the sofa; "
+                                   "a dining table with four chairs",
+                                   Category::kLivingRoom);
+  CHECK(HasEdge(r, "coffee-table", SemanticRelation::kFrontOf, "sofa"));
+  CHECK(HasEdge(r, "table-lamp", SemanticRelation::kNextTo, "sofa"));
+  CHECK(HasEdge(r, "painting", SemanticRelation::kBehind, "sofa"));
+  CHECK(HasEdge(r, "painting", SemanticRelation::kCentered, "sofa"));
+  CHECK(HasEdge(r, "chair", SemanticRelation::kFaceTo, "dining-table"));
+  CHECK(Named(r, "chair")->count == 4);
+  // "opposite" faces both ways.
+  RoomRequest o = ParseRoomRequest("an armchair opposite the sofa", Category::kLivingRoom);
+  CHECK(HasEdge(o, "armchair", SemanticRelation::kFaceTo, "sofa"));
+  CHECK(HasEdge(o, "sofa", SemanticRelation::kFaceTo, "armchair"));
+}
+
+TEST_CASE("objects are bound to the room the text places them in", "[scene][request]") {
+  const std::string text = "Put a TV in the meeting room. The kitchen has an island and two stools; "
+                           "the living room gets a sofa. It also has a piano-less corner with a plant.";
+  RoomRequest meeting = ParseRoomRequest(text, Category::kMeetingRoom);
+  REQUIRE(meeting.wishes.size() == 1);
+  CHECK(meeting.wishes[0].category->name == "tv");
+  RoomRequest kitchen = ParseRoomRequest(text, Category::kKitchen);
+  REQUIRE(kitchen.wishes.size() == 2);
+  CHECK(Named(kitchen, "island"));
+  CHECK(Named(kitchen, "stool")->count == 2);
+  RoomRequest living = ParseRoomRequest(text, Category::kLivingRoom);
+  CHECK(Named(living, "sofa"));
+  CHECK(Named(living, "plant"));  // carried over from the sentence before ("It also has...")
+  CHECK_FALSE(Named(living, "tv"));
+  CHECK(living.other_rooms.size() == 3);  // tv (meeting-room), island and stool (kitchen)
+  // A text naming no room is all for the room planned; so is what comes before any room is named.
+  CHECK(ParseRoomRequest("two armchairs", Category::kBedroom).wishes.size() == 1);
+  RoomRequest before = ParseRoomRequest("Two armchairs. A TV in the office.", Category::kLivingRoom);
+  CHECK(Named(before, "armchair"));
+  CHECK_FALSE(Named(before, "tv"));
+}
+
+TEST_CASE("longest phrase wins and ambiguous words are left alone", "[scene][request]") {
+  // "study desk" is a desk, not the study; "office chair" an office chair, not the office.
+  RoomRequest r = ParseRoomRequest("a study desk and an office chair", Category::kBedroom);
+  CHECK(Named(r, "desk"));
+  CHECK(Named(r, "office-chair"));
+  CHECK(r.other_rooms.empty());
+  // "a range of plants" does not ask for a cooker.
+  RoomRequest p = ParseRoomRequest("a range of plants", Category::kLivingRoom);
+  CHECK_FALSE(Named(p, "cooker"));
+  CHECK(Named(p, "plant"));
+  // Apostrophes, hyphens and case.
+  RoomRequest k = ParseRoomRequest("The Children's Room has a BUNK-BED.", Category::kChildrenRoom);
+  CHECK(Named(k, "child-bed"));
+  CHECK(ParseRoomRequest("", Category::kKitchen).wishes.empty());
+  CHECK(ParseRoomRequest("\xff\xfe garbage ;;; ...", Category::kKitchen).wishes.empty());
+}
