@@ -35,8 +35,8 @@ std::shared_ptr<Model> BuildModel(const TriangleMesh& mesh, double scale) {
   return model;
 }
 
-// Area-weighted points on a mesh's surface plus its vertices (asset frame, scaled), from a fixed seed so
-// the same mesh always gives the same points.
+// Area-weighted points on a mesh's surface (asset frame, scaled), from a fixed seed so the same mesh
+// always gives the same points (SceneEval samples the surface uniformly, as here).
 std::vector<Vec3> SurfaceSamples(const TriangleMesh& mesh, double scale, int count) {
   std::vector<Vec3> out;
   std::vector<double> cumulative;
@@ -60,7 +60,6 @@ std::vector<Vec3> SurfaceSamples(const TriangleMesh& mesh, double scale, int cou
     const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
     out.push_back((a + (b - a) * u + (c - a) * v) * scale);
   }
-  for (const Vec3& v : mesh.vertices) out.push_back(v * scale);
   return out;
 }
 

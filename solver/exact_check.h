@@ -30,7 +30,7 @@ struct ExactCheckOptions {
   double nudge = 0.005;                  // m, SceneEval's move before a collision counts, [0, 0.05]
   double in_bound_share = 0.99;          // OBR: share of points that must project inside, (0, 1]
   double containment_tolerance = 0.005;  // m, CSR box-in-cavity slack, [0, 0.05]
-  int obr_samples = 256;                 // surface points sampled per object (plus its vertices), [16, 100000]
+  int obr_samples = 1000;                // surface points sampled per object (OBR), [16, 100000]
   double clearance_probe = 0.05;         // m: pairs whose boxes come this close get an FCL distance, [0, 1]
   bool IsValid(std::string* message) const;
 };
