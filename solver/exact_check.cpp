@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <map>
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -98,25 +99,43 @@ bool ExactCheckOptions::IsValid(std::string* message) const {
 }
 
 struct ExactChecker::Impl {
+  // One asset mesh at one scale: its FCL model (built on first use: most objects of a solved room never
+  // come near another, and fitting OBBs to a 20,000-triangle mesh takes about 0.1 s), OBR samples, bounds.
   struct MeshEntry {
+    TriangleMesh merged;  // asset frame, unscaled
+    double scale = 1.0;
     std::shared_ptr<Model> model;
     std::vector<Vec3> samples;
-    double z_min = 0.0;
+    Box3 bounds;  // scaled
+    const std::shared_ptr<Model>& Model_() {
+      if (!model) model = BuildModel(merged, scale);
+      return model;
+    }
+  };
+  // A pair decision is kept while neither pose changes (the agent moves one object at a time).
+  struct PairMemo {
+    bool valid = false;
+    Pose a, b;
+    bool colliding = false;
   };
   const RoomProblem* problem;
   ExactCheckOptions options;
   std::vector<std::pair<std::string, std::shared_ptr<Model>>> building;
+  std::vector<fcl::AABBd> building_boxes;
   std::map<std::pair<const AssetMesh*, double>, MeshEntry> meshes;
+  std::map<std::pair<std::string, std::string>, PairMemo> pair_memo;
 
-  const MeshEntry& Entry(const ProblemObject& o, double scale) {
+  MeshEntry& Entry(const ProblemObject& o, double scale) {
     auto key = std::make_pair(o.mesh.get(), scale);
     auto it = meshes.find(key);
     if (it != meshes.end()) return it->second;
     MeshEntry e;
-    const TriangleMesh merged = o.mesh->Merged();
-    e.model = BuildModel(merged, scale);
-    e.samples = SurfaceSamples(merged, scale, options.obr_samples);
-    e.z_min = merged.Bounds().min.z * scale;
+    e.merged = o.mesh->Merged();
+    e.scale = scale;
+    e.samples = SurfaceSamples(e.merged, scale, options.obr_samples);
+    const Box3 b = e.merged.Bounds();
+    e.bounds.min = b.min * scale;
+    e.bounds.max = b.max * scale;
     return meshes.emplace(key, std::move(e)).first->second;
   }
 
@@ -149,17 +168,49 @@ struct ExactChecker::Impl {
   }
 };
 
+namespace {
+
+bool SamePose(const Pose& a, const Pose& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z && a.yaw == b.yaw && a.scale == b.scale;
+}
+
+// World AABB of a box (local bounds) turned by yaw and moved to the pose.
+fcl::AABBd WorldAabb(const Box3& local, const Pose& pose) {
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  fcl::AABBd box;
+  bool first = true;
+  for (int k = 0; k < 4; ++k) {
+    const double x = k & 1 ? local.max.x : local.min.x, y = k & 2 ? local.max.y : local.min.y;
+    const fcl::Vector3d p(pose.x + c * x - s * y, pose.y + s * x + c * y, pose.z + local.min.z);
+    const fcl::Vector3d q(p.x(), p.y(), pose.z + local.max.z);
+    if (first) {
+      box = fcl::AABBd(p, q);
+      first = false;
+    } else {
+      box += p;
+      box += q;
+    }
+  }
+  return box;
+}
+
+}  // namespace
+
 ExactChecker::ExactChecker(const RoomProblem& problem, const ExactCheckOptions& options) : impl_(new Impl) {
   impl_->problem = &problem;
   impl_->options = options;
   for (const BuildingPart& part : problem.building) {
-    if (!part.mesh.triangles.empty()) impl_->building.push_back({part.name, BuildModel(part.mesh, 1.0)});
+    if (part.mesh.triangles.empty()) continue;
+    impl_->building.push_back({part.name, BuildModel(part.mesh, 1.0)});
+    fcl::CollisionObjectd object(impl_->building.back().second, fcl::Transform3d::Identity());
+    object.computeAABB();
+    impl_->building_boxes.push_back(object.getAABB());
   }
 }
 
 ExactChecker::~ExactChecker() = default;
 
-ExactMetrics ExactChecker::Check(const RoomState& st) {
+ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
   const auto start = std::chrono::steady_clock::now();
   Impl& im = *impl_;
   const ExactCheckOptions& opt = im.options;
@@ -169,44 +220,70 @@ ExactMetrics ExactChecker::Check(const RoomState& st) {
   m.objects = n;
   m.per_object.resize(n);
 
-  std::vector<const Impl::MeshEntry*> entries;
-  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+  std::vector<Impl::MeshEntry*> entries;
+  std::vector<fcl::AABBd> boxes;
   for (int i = 0; i < n; ++i) {
     const Pose& pose = st.placements[i].pose;
     entries.push_back(&im.Entry(st.objects[i], pose.scale));
-    objects.push_back(std::make_unique<fcl::CollisionObjectd>(entries[i]->model, TransformOf(pose)));
-    objects.back()->computeAABB();
+    boxes.push_back(WorldAabb(entries[i]->bounds, pose));
     m.per_object[i].id = st.objects[i].id;
   }
+  // FCL objects only for the objects that need an exact test.
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects(n);
+  auto object = [&](int i) -> fcl::CollisionObjectd& {
+    if (!objects[i]) {
+      objects[i] = std::make_unique<fcl::CollisionObjectd>(entries[i]->Model_(), TransformOf(st.placements[i].pose));
+      objects[i]->computeAABB();
+    }
+    return *objects[i];
+  };
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> parts;
   for (const auto& [name, model] : im.building) {
     parts.push_back(std::make_unique<fcl::CollisionObjectd>(model, fcl::Transform3d::Identity()));
     parts.back()->computeAABB();
   }
+  // A pair's decision, from the memo while both poses are unchanged.
+  auto decide = [&](const std::string& a_id, const Pose& a_pose, const std::string& b_id, const Pose& b_pose,
+                    const std::function<bool()>& test) {
+    Impl::PairMemo& memo = im.pair_memo[{a_id, b_id}];
+    if (!(memo.valid && SamePose(memo.a, a_pose) && SamePose(memo.b, b_pose))) {
+      memo.valid = true;
+      memo.a = a_pose;
+      memo.b = b_pose;
+      memo.colliding = test();
+    }
+    return memo.colliding;
+  };
 
   // CR.
   for (int i = 0; i < n; ++i) {
+    const Pose& pi = st.placements[i].pose;
     for (int j = i + 1; j < n; ++j) {
       if (st.ParentChild(i, j) || st.IsFloorCovering(i) || st.IsFloorCovering(j)) continue;
-      if (!AabbOverlap(objects[i]->getAABB(), objects[j]->getAABB(), opt.clearance_probe)) continue;
-      if (!AabbOverlap(objects[i]->getAABB(), objects[j]->getAABB())) {
+      if (!AabbOverlap(boxes[i], boxes[j], opt.clearance_probe)) continue;
+      if (!AabbOverlap(boxes[i], boxes[j])) {
+        if (!measure_clearance) continue;
         // Close but apart boxes: how close do the meshes come?
         fcl::DistanceRequestd request;
         fcl::DistanceResultd result;
-        fcl::distance(objects[i].get(), objects[j].get(), request, result);
+        fcl::distance(&object(i), &object(j), request, result);
         if (result.min_distance >= 0.0 && (m.min_clearance < 0.0 || result.min_distance < m.min_clearance)) {
           m.min_clearance = result.min_distance;
         }
         continue;
       }
-      if (im.Collide(*objects[i], *objects[j])) {
+      const bool hit = decide(st.objects[i].id, pi, st.objects[j].id, st.placements[j].pose,
+                              [&] { return im.Collide(object(i), object(j)); });
+      if (hit) {
         m.per_object[i].colliding = m.per_object[j].colliding = true;
         m.pairs.push_back({st.objects[i].id, st.objects[j].id, false});
       }
     }
     for (size_t k = 0; k < parts.size(); ++k) {
-      if (!AabbOverlap(objects[i]->getAABB(), parts[k]->getAABB())) continue;
-      if (im.Collide(*parts[k], *objects[i])) {
+      if (!AabbOverlap(boxes[i], im.building_boxes[k])) continue;
+      const bool hit = decide(st.objects[i].id, pi, "\n" + im.building[k].first, Pose{0, 0, 0, 0, 1},
+                              [&] { return im.Collide(*parts[k], object(i)); });
+      if (hit) {
         m.per_object[i].colliding = true;
         m.pairs.push_back({st.objects[i].id, im.building[k].first, true});
       }
@@ -220,7 +297,7 @@ ExactMetrics ExactChecker::Check(const RoomState& st) {
     // FR.
     if (!st.Hung(i)) {
       ++m.consumers;
-      c.support_gap = std::abs(pose.z + entries[i]->z_min - st.SupportHeight(i));
+      c.support_gap = std::abs(pose.z + entries[i]->bounds.min.z - st.SupportHeight(i));
       c.floating = c.support_gap > opt.tau;
     }
     // OBR.
@@ -263,7 +340,9 @@ ExactMetrics ExactChecker::Check(const RoomState& st) {
         within = within && q.x >= cav.min.x * f.scale - t && q.x <= cav.max.x * f.scale + t &&
                  q.y >= cav.min.y * f.scale - t && q.y <= cav.max.y * f.scale + t;
       }
-      const bool touches = AabbOverlap(objects[p]->getAABB(), objects[i]->getAABB()) && im.Collide(*objects[p], *objects[i]);
+      const bool touches = AabbOverlap(boxes[p], boxes[i]) &&
+                           decide(st.objects[p].id, st.placements[p].pose, st.objects[i].id, pose,
+                                  [&] { return im.Collide(object(p), object(i)); });
       c.contained = within && !touches && c.support_gap <= opt.tau;
       m.contained += c.contained;
     }

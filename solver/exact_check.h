@@ -74,7 +74,9 @@ class ExactChecker {
   ~ExactChecker();
   ExactChecker(const ExactChecker&) = delete;
   ExactChecker& operator=(const ExactChecker&) = delete;
-  ExactMetrics Check(const RoomState& state);
+  // `measure_clearance`: also the FCL distance of close, non-colliding pairs (min_clearance); the solver
+  // asks for it on the state it keeps, not on every iteration.
+  ExactMetrics Check(const RoomState& state, bool measure_clearance = true);
 
  private:
   struct Impl;
