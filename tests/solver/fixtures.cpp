@@ -142,6 +142,7 @@ ProblemObject SmallObject(const std::string& name, double w, double d, double h,
   return o;
 }
 
+RoomProblem WithFloor(Ring free_floor) { return RoomOf(std::move(free_floor)); }
 RoomProblem Rectangle(double w, double d) { return RoomOf({{0, 0}, {w, 0}, {w, d}, {0, d}}); }
 RoomProblem LShape() { return RoomOf({{0, 0}, {6, 0}, {6, 2.5}, {3, 2.5}, {3, 5}, {0, 5}}); }
 RoomProblem Angled() { return RoomOf({{0, 0}, {5, 0}, {5, 3}, {3, 5}, {0, 5}}); }

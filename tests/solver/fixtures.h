@@ -31,6 +31,7 @@ ProblemObject SmallObject(const std::string& name, double w, double d, double h,
 RoomProblem Rectangle(double w, double d);
 RoomProblem LShape();   // 6 x 5 with a 3 x 2.5 corner cut away (reflex vertex at (3, 2.5))
 RoomProblem Angled();   // a pentagon with a 45-degree wall
+RoomProblem WithFloor(Ring free_floor);  // any CCW floor, with its walls and wall slabs
 
 // A living room in `room`: sofa against a wall, coffee table in front of it, TV stand with a TV facing the
 // sofa, bookcase with books inside and a vase on top, armchair facing the coffee table, side table with a

@@ -94,6 +94,15 @@ TEST_CASE("A room with an angled wall is furnished cleanly", "[solver]") {
   RequireClean(*solved, room.objects.size());
 }
 
+TEST_CASE("A room with no right angle and a skewed inner corner is furnished cleanly", "[solver]") {
+  // Walls at 0, 17, 113, 200 and 250 degrees or so, and a reflex corner between two of them.
+  RoomProblem room = WithFloor({{0, 0}, {4.6, 0}, {5.9, 4.0}, {3.4, 3.1}, {2.2, 5.3}, {-0.8, 4.6}});
+  FurnishLivingRoom(room);
+  auto solved = SolveRoom(room, {});
+  REQUIRE(solved.ok());
+  RequireClean(*solved, room.objects.size());
+}
+
 TEST_CASE("Too many things on a small table end in remove_entity, said in the outcome", "[solver]") {
   // 20 cups of 12 x 12 cm for a 50 x 50 cm top: 16 fit at most.
   RoomProblem room = Rectangle(4, 3);
