@@ -64,7 +64,9 @@ EnergyTerms StateEnergy(const RoomState& st) {
   }
   // The building: walls (outside the free floor), keep-outs, and the thin prisms in front of openings.
   std::vector<std::pair<std::string, Prism>> building;
-  for (const KeepOut& k : problem.keep_outs) building.push_back({k.name, {k.polygon, k.z_min, k.z_max, true, true}});
+  for (const KeepOut& k : problem.keep_outs) {
+    building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name, {k.polygon, k.z_min, k.z_max, true, true}});
+  }
   const Layer openings = RoomLayer(st, {}, {});
   for (const Prism& p : openings.prisms) {
     if (p.binds_floor && p.binds_hung) continue;  // keep-outs, counted above

@@ -9,7 +9,8 @@
 namespace villa::solver {
 namespace {
 
-constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip", "window_zone", "staircase", "other"};
+constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip",  "open_passage",  "window_zone",
+                                              "staircase",  "stair_hole", "stair_arrival", "other"};
 constexpr std::string_view kRelationNames[] = {"ontop", "inside", "against_wall", "on_wall", "hanging"};
 constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named"};
 constexpr std::string_view kSemanticNames[] = {"face_to", "front_of", "behind", "left_of", "right_of",

@@ -22,9 +22,12 @@
 
 namespace villa::solver {
 
-// What a keep-out zone protects: the room context's door sweeps and strips, window zones, the staircase.
-enum class KeepOutKind { kDoorSweep, kDoorStrip, kWindowZone, kStaircase, kOther };
-std::string_view KeepOutKindName(KeepOutKind kind);  // "door_sweep", "door_strip", "window_zone", ...
+// What a keep-out zone protects: one kind per kind of the room context's zones (scene/room_context.h), so
+// the furnish pipeline maps them one to one; only names in messages depend on it.
+enum class KeepOutKind {
+  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther
+};
+std::string_view KeepOutKindName(KeepOutKind kind);  // "door_sweep", "door_strip", "open_passage", ...
 
 // A prism no object may enter: `polygon` (world x/y, CCW; convex or not) between heights z_min and z_max
 // (world, m). A window zone starts at the sill, so a low sideboard may stand under the window.

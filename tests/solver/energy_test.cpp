@@ -140,6 +140,9 @@ TEST_CASE("A chair in a door sweep and a window zone for tall objects only", "[s
   std::vector<ObjectPlacement> at = {At(0.8, 0.8, z), At(2.75, 2.78, z), At(3.3, 1.0, z)};
   EnergyTerms e = ArrangementEnergy(room, at);
   CHECK(e.collision == Approx(0.35 * 0.35 * 0.9));  // the chair's corner in the sweep; the sideboard fits under the sill
+  REQUIRE(e.overlaps.size() == 1);
+  CHECK(e.overlaps[0] == std::make_pair(std::string("r/chair-0"), std::string("door_sweep door")));
+  CHECK(e.findings == std::vector<std::string>{"collision r/chair-0 x door_sweep door: 0.110250 m3"});
   at[2] = At(2.75, 2.68, z);  // the wardrobe in front of the window
   at[1] = At(1.0, 2.78, z);
   e = ArrangementEnergy(room, at);
