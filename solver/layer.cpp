@@ -375,6 +375,8 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     const Body& body = layer.bodies[b];
     if (!movable(b) || !wanted(b, b)) continue;
     const BodyShape shape = BodyBox(body);
+    if (body.scalable && o.optimise_scale) add(ScalePriorResidual::Create(0.5), {b}, false, kScaleOnly);
+    if (body.motion == Motion::kFree) add(YawPriorResidual::Create(body.yaw_class, 0.2), {b}, false, kPoseOnly);
     if (layer.kind == Layer::Kind::kCavity) {
       const Box3& c = layer.cavity;
       add(ContainmentResidual::Create(shape, c.min.x, c.min.y, c.max.x, c.max.y, c.max.z, o.child_gap,
@@ -397,7 +399,6 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
       add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), o.object_gap, o.weight_keep_out),
           {b}, true);
     }
-    if (body.scalable && o.optimise_scale) add(ScalePriorResidual::Create(0.5), {b}, false, kScaleOnly);
   }
 
   for (int a = 0; a < n; ++a) {
@@ -470,6 +471,10 @@ PolishStats Polish(Layer& layer, const RoomState& state, const SolveOptions& o) 
   if (movable == 0) return stats;
   stats.sparse = o.linear_solver == LinearSolverChoice::kSparseNormalCholesky ||
                  (o.linear_solver == LinearSolverChoice::kAuto && movable >= o.sparse_from_objects);
+  // The yaw window must hold the start (a candidate facing an angled target may lie off the classes).
+  for (Body& b : layer.bodies) {
+    if (b.motion == Motion::kFree && std::abs(b.p[3] - b.yaw_class) > o.max_yaw_offset) b.yaw_class = b.p[3];
+  }
   double slack = o.pair_slack;
   std::vector<Point> start_xy;
   for (const Body& b : layer.bodies) start_xy.push_back({b.p[0], b.p[1]});
@@ -489,8 +494,6 @@ PolishStats Polish(Layer& layer, const RoomState& state, const SolveOptions& o) 
       problem.AddParameterBlock(b.p, 4, ManifoldFor(b));
       problem.AddParameterBlock(b.s, 1);
       if (b.motion == Motion::kFree) {
-        // The yaw window must hold the start (a candidate facing an angled target may lie off the classes).
-        if (std::abs(b.p[3] - b.yaw_class) > o.max_yaw_offset) b.yaw_class = b.p[3];
         problem.SetParameterLowerBound(b.p, 3, b.yaw_class - o.max_yaw_offset);
         problem.SetParameterUpperBound(b.p, 3, b.yaw_class + o.max_yaw_offset);
       }

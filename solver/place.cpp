@@ -91,21 +91,38 @@ std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame
 }
 
 // A body standing on the floor with its back `gap` from a wall, facing into the room. `side_room`: the
-// wall length the objects meant to stand beside it need on each side (nightstands, side tables).
+// wall length the objects meant to stand beside it need on each side (nightstands, side tables);
+// `hang_above`: something is to hang on the wall above it (the painting over the bed), so a window there
+// is in the way.
 void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_index, double gap, double object_gap,
-               double side_room, std::vector<Candidate>& out) {
+               double side_room, bool hang_above, std::vector<Candidate>& out) {
   const Body& b = layer.bodies[self];
   const WallEdge& wall = state.problem->walls[wall_index];
   const WallFrame wf = FrameOfWall(wall);
   const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
+  const double top = b.p[2] + b.top * b.s[0];
   for (double t : AlongWallStops(layer, self, wf, wall, hx, hy, gap, object_gap)) {
     const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, gap + hy));
     // Big anchors prefer the middle of their wall a little (a bed centred on its wall), and room beside
     // them for what belongs there.
     double pref = hx > 0.5 ? 0.02 * std::abs(t - 0.5 * wf.length) : 0.0;
     pref += 0.3 * (std::max(0.0, side_room - (t - hx)) + std::max(0.0, side_room - (wf.length - t - hx)));
+    for (const WallOpening& o : wall.openings) {
+      if (hang_above && o.z1 > top) pref += std::max(0.0, std::min(t + hx, o.t1) - std::max(t - hx, o.t0));
+    }
     out.push_back({c.x, c.y, b.p[2], wf.yaw_in, wall_index, pref});
   }
+}
+
+// Whether a hung object relates to this one (it will hang on the wall above or beside it).
+bool HangsAbove(const RoomState& state, int object) {
+  for (const SemanticEdge& e : state.edges) {
+    const bool source = e.source == state.objects[object].id, target = e.target == state.objects[object].id;
+    if (!source && !target) continue;
+    const int other = state.Find(source ? e.target : e.source);
+    if (other >= 0 && state.objects[other].relation == Relation::kOnWall) return true;
+  }
+  return false;
 }
 
 // Wall length the objects that stand next to (or left or right of) this one need on each side.
@@ -207,6 +224,18 @@ void AroundTarget(const Layer& layer, int self, int target, const std::vector<Se
     const Point l = geo::Left(n);
     const double en = side < 2 ? box.hy : box.hx;
     const double el = side < 2 ? box.hx : box.hy;
+    // Spread the target's company over its sides: each body already on this side (within 1.2 m of the
+    // face, alongside it) makes the side a little less attractive (chairs all round the table, a side
+    // table at each end of the sofa).
+    int taken = 0;
+    for (size_t k = 0; k < layer.bodies.size(); ++k) {
+      const Body& q = layer.bodies[k];
+      if (static_cast<int>(k) == self || static_cast<int>(k) == target || !q.active || q.covering) continue;
+      const Point r = geo::Sub(Point{q.p[0], q.p[1]}, box.c);
+      const double out_of_face = geo::Dot(r, n) - en, along = std::abs(geo::Dot(r, l));
+      taken += out_of_face > 0.0 && out_of_face < 1.2 && along < el + 0.3;
+    }
+    const double crowding = 0.15 * taken;
     std::vector<double> yaws = {YawFacing(geo::Scale(n, -1.0)), box.yaw};
     for (double c : classes) yaws.push_back(SnapYaw(YawFacing(geo::Scale(n, -1.0)), {c}));
     for (double yaw : yaws) {
@@ -223,7 +252,7 @@ void AroundTarget(const Layer& layer, int self, int target, const std::vector<Se
       for (double gap : gaps) {
         for (double lat : laterals) {
           const Point c = geo::Add(geo::Add(box.c, geo::Scale(n, en + gap + rn)), geo::Scale(l, lat));
-          out.push_back({c.x, c.y, b.p[2], yaw, -1, 0.0});
+          out.push_back({c.x, c.y, b.p[2], yaw, -1, crowding});
         }
       }
     }
@@ -306,7 +335,8 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   if (b.motion == Motion::kAlongWall) {
     for (size_t w = 0; w < problem.walls.size(); ++w) {
       if (obj.wall >= 0 && obj.wall != static_cast<int>(w)) continue;
-      WallSlots(layer, self, state, static_cast<int>(w), obj.wall_gap, o.object_gap, SideRoom(state, b.object), out);
+      WallSlots(layer, self, state, static_cast<int>(w), obj.wall_gap, o.object_gap, SideRoom(state, b.object),
+                HangsAbove(state, b.object), out);
     }
     return out;
   }
@@ -335,7 +365,9 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   std::vector<Candidate> grid;
   GridSlots(layer, self, FourTurns(classes), step, grid);
   if (!hub) {
-    for (size_t w = 0; w < problem.walls.size(); ++w) WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, grid);
+    for (size_t w = 0; w < problem.walls.size(); ++w) {
+      WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, false, grid);
+    }
   }
   for (Candidate& c : grid) {
     const double clearance = geo::DistToRing({c.x, c.y}, layer.region);
@@ -511,7 +543,15 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     }
     // A hub and the objects placed around it: try its few best poses, place the group at each, keep the
     // group that holds best (a bed needs room for both nightstands, a sofa for its side tables).
-    const std::vector<Scored> tries = RankCandidates(layer, b, state, o, rng, jitter, kLookahead, stats);
+    // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
+    std::vector<Scored> tries;
+    for (const Scored& t : RankCandidates(layer, b, state, o, rng, jitter, 64, stats)) {
+      const bool repeat = std::any_of(tries.begin(), tries.end(), [&](const Scored& u) {
+        return std::hypot(u.c.x - t.c.x, u.c.y - t.c.y) < 0.5 && std::abs(WrapAngle(u.c.yaw - t.c.yaw)) < 0.1;
+      });
+      if (!repeat) tries.push_back(t);
+      if (tries.size() == kLookahead) break;
+    }
     std::vector<int> group = {b};
     for (int k : PlacementOrder(layer, state)) {
       if (std::find(dependents.begin(), dependents.end(), k) != dependents.end()) group.push_back(k);
@@ -521,13 +561,16 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     for (const Scored& t : tries) {
       Put(layer, b, state, t.c);
       for (size_t g = 1; g < group.size(); ++g) PlaceBody(layer, group[g], state, o, rng, jitter, stats);
+      // The group's cost: its terms, the hub's own preference and how snugly its companions sit.
       LayerCost cost;
+      double snug = 0.0;
       for (int g : group) {
         const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
         cost.hard += part.hard;
         cost.soft_linear += part.soft_linear;
+        if (g != b) snug += Closeness(layer, g, state);
       }
-      const double soft = cost.soft_linear + t.c.pref;
+      const double soft = cost.soft_linear + t.c.pref + snug;
       if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
         best_hard = cost.hard;
         best_soft = soft;

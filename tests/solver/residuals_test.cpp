@@ -135,6 +135,7 @@ TEST_CASE("Semantic residual gradients match differences", "[solver]") {
   CheckJacobians(AlignResidual::Create(0.0873, 1.9), {{0.0, 0.0, 0.0, 0.4}, {1.0, 1.0, 0.0, 1.5}});
   CheckJacobians(CenteredResidual::Create(kTable, kSofa, 0.05, 1.0), {{0.4, -0.9, 0.0, 0.0}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
   CheckJacobians(ScalePriorResidual::Create(0.5), {{1.2}});
+  CheckJacobians(YawPriorResidual::Create(1.5708, 0.2), {{0.0, 0.0, 0.0, 1.7}});
 }
 
 TEST_CASE("Semantic residuals vanish where the relation holds", "[solver]") {
