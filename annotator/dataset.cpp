@@ -7,6 +7,10 @@
 namespace villa::annotator {
 
 int Dataset::Find(const std::string& id) const {
+  if (!index.empty()) {
+    auto it = index.find(id);
+    return it == index.end() ? -1 : it->second;
+  }
   for (std::size_t i = 0; i < records.size(); ++i)
     if (records[i].id == id) return static_cast<int>(i);
   return -1;
@@ -81,6 +85,7 @@ Result<Dataset> LoadDataset(const std::filesystem::path& dir) {
         return false;
       }
     }
+    dataset.index.emplace(out.id, static_cast<int>(dataset.records.size()));
     dataset.records.push_back(std::move(out));
     return true;
   });

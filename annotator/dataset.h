@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "layout/layout.h"
@@ -23,6 +24,7 @@ struct DatasetRecord {
 struct Dataset {
   std::filesystem::path dir;
   std::vector<DatasetRecord> records;
+  std::unordered_map<std::string, int> index;  // id -> position in records (filled by LoadDataset)
   // Index of the record with this id, or -1.
   int Find(const std::string& id) const;
 };

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "annotator/plan_geometry.h"
+#include "annotator/utf8.h"
 
 namespace villa::annotator {
 namespace {
@@ -36,18 +37,6 @@ const char* BoxGlyph(int mask, bool unicode) {
   }
 }
 
-// UTF-8 code points of a label (ASCII in practice; kept general).
-std::vector<std::string> Glyphs(const std::string& text) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < text.size();) {
-    unsigned char c = static_cast<unsigned char>(text[i]);
-    std::size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : 4;
-    out.push_back(text.substr(i, n));
-    i += n;
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string Canvas::Row(int y) const {
@@ -67,8 +56,10 @@ Canvas DrawFloorPlan(const Layout& layout, int level, const CanvasOptions& o) {
   // Scale: rows per metre sy, columns per metre sx = aspect * sy; the plan's corners land on cells.
   double sy = std::min((canvas.height - 1) / b.height(), (canvas.width - 1) / (o.aspect * b.width()));
   double sx = o.aspect * sy;
-  double ox = std::floor((canvas.width - 1 - b.width() * sx) / 2);
-  double oy = std::floor((canvas.height - 1 - b.height() * sy) / 2);
+  // The margins, floored with a little slack: when the plan fills the width exactly, b.width() * sx can
+  // come out a hair above width - 1, and a plain floor would push the west wall off the canvas.
+  double ox = std::max(0.0, std::floor((canvas.width - 1 - b.width() * sx) / 2 + 1e-6));
+  double oy = std::max(0.0, std::floor((canvas.height - 1 - b.height() * sy) / 2 + 1e-6));
   auto col = [&](double x) { return ox + (x - b.min_x) * sx; };
   auto row = [&](double y) { return oy + (b.max_y - y) * sy; };
   auto inside = [&](int x, int y) { return x >= 0 && y >= 0 && x < canvas.width && y < canvas.height; };
@@ -86,8 +77,8 @@ Canvas DrawFloorPlan(const Layout& layout, int level, const CanvasOptions& o) {
         cell.room = r;
         bool stair = o.show_stairs && multi && layout.rooms[r].category == Category::kUtilityRoom;
         cell.kind = stair ? CellKind::kStair : CellKind::kFloor;
-        // Treads on every other row.
-        cell.glyph = stair && y % 2 == 0 ? (o.unicode ? "═" : "=") : " ";
+        // Treads on every other row, in a glyph of their own (windows are drawn with ═ and =).
+        cell.glyph = stair && y % 2 == 0 ? (o.unicode ? "≡" : "_") : " ";
         break;
       }
     }
@@ -199,7 +190,7 @@ Canvas DrawFloorPlan(const Layout& layout, int level, const CanvasOptions& o) {
       }
     if (best_x < 0) continue;
     for (const std::string& label : o.labels[r]) {
-      auto glyphs = Glyphs(label);
+      auto glyphs = Utf8Glyphs(label);
       int n = static_cast<int>(glyphs.size());
       // Try start columns so the label covers best_x, centred first.
       bool placed = false;

@@ -12,20 +12,13 @@ using namespace villa::annotator;
 
 namespace {
 
-std::unique_ptr<Session> OpenOrFail(const std::filesystem::path& dir, bool writable = true) {
-  auto s = Session::Open(dir, writable);
-  INFO((s ? std::string() : s.error()));
-  REQUIRE(s.ok());
-  return std::move(s).value();
-}
-
 int RoomIndex(const Session& s, int item, const std::string& name) { return s.state(item).layout.FindRoom(name); }
 
 }  // namespace
 
 TEST_CASE("a fresh session: all pending, drafted labels and descriptions", "[session]") {
   test::TempDataset ds;
-  auto s = OpenOrFail(ds.dir());
+  auto s = test::OpenSession(ds.dir(), true);
   REQUIRE(s->size() == 4);
   CHECK(s->counts().pending == 4);
   CHECK(s->NextPending(0) == 0);
@@ -43,7 +36,7 @@ TEST_CASE("actions are journaled and replayed after a restart", "[session][journ
   test::TempDataset ds;
   std::string msg;
   {
-    auto s = OpenOrFail(ds.dir());
+    auto s = test::OpenSession(ds.dir(), true);
     int kitchen = RoomIndex(*s, 0, "kitchen_0/0");
     REQUIRE(kitchen >= 0);
     REQUIRE(s->Relabel(0, kitchen, Category::kBathroom, &msg).ok());
@@ -66,24 +59,26 @@ TEST_CASE("actions are journaled and replayed after a restart", "[session][journ
     CHECK(s->counts().verified == 1);
     CHECK(s->counts().rejected == 1);
   }
-  auto s = OpenOrFail(ds.dir());
+  auto s = test::OpenSession(ds.dir(), true);
   CHECK(s->state(0).status == AnnotationStatus::kVerified);
   CHECK(s->state(0).layout.FindRoom("kitchen_0/0") >= 0);
   CHECK(s->state(1).status == AnnotationStatus::kRejected);
   CHECK(s->state(1).reason == "staircase badly placed");
   CHECK(s->state(3).coarse == "A one-storey house.");
-  CHECK(s->state(3).edited);
+  CHECK(s->state(3).edited(DescriptionField::kCoarse));
+  CHECK(s->state(3).edited(DescriptionField::kFine));
   CHECK(s->NextPending(0) == 2);
   // The undo history came back with the journal: the last action (the edit) undoes first.
   int item = -1;
   REQUIRE(s->Undo(&item, &msg).ok());
   CHECK(item == 3);
-  CHECK(!s->state(3).edited);
+  CHECK(!s->state(3).edited(DescriptionField::kCoarse));
+  CHECK(!s->state(3).edited(DescriptionField::kFine));
 }
 
 TEST_CASE("a relabel redrafts descriptions unless a person wrote them", "[session]") {
   test::TempDataset ds;
-  auto s = OpenOrFail(ds.dir());
+  auto s = test::OpenSession(ds.dir(), true);
   std::string msg;
   int office = -1;
   for (int i = 0; i < static_cast<int>(s->state(2).layout.rooms.size()); ++i)
@@ -101,13 +96,13 @@ TEST_CASE("a torn last journal line is skipped with a warning and set aside", "[
   test::TempDataset ds;
   std::string msg;
   {
-    auto s = OpenOrFail(ds.dir());
+    auto s = test::OpenSession(ds.dir(), true);
     REQUIRE(s->Reject(0, "duplicate of another layout", &msg).ok());
   }
   std::string complete = test::Slurp(ds.journal());
   test::Spit(ds.journal(), R"({"seq":2,"time":"2026-01-01T00:00:00Z","id":"villa-000001","kind":"do","act)", true);
   {
-    auto s = OpenOrFail(ds.dir());
+    auto s = test::OpenSession(ds.dir(), true);
     REQUIRE(s->warnings().size() == 1);
     CHECK(s->warnings()[0].find("annotations.journal.jsonl:2: torn last line") != std::string::npos);
     CHECK(s->state(0).status == AnnotationStatus::kRejected);
@@ -119,7 +114,7 @@ TEST_CASE("a torn last journal line is skipped with a warning and set aside", "[
     CHECK(test::Slurp(torn).find("villa-000001") != std::string::npos);
     REQUIRE(s->Accept(1, &msg).ok());
   }
-  auto s = OpenOrFail(ds.dir());
+  auto s = test::OpenSession(ds.dir(), true);
   CHECK(s->warnings().empty());
   CHECK(s->state(1).status == AnnotationStatus::kVerified);
 }
@@ -128,7 +123,7 @@ TEST_CASE("corrupt journal lines are named by file and line", "[journal]") {
   test::TempDataset ds;
   std::string msg;
   {
-    auto s = OpenOrFail(ds.dir());
+    auto s = test::OpenSession(ds.dir(), true);
     REQUIRE(s->Reject(0, "duplicate of another layout", &msg).ok());
     REQUIRE(s->Reject(1, "duplicate of another layout", &msg).ok());
   }
@@ -189,7 +184,7 @@ TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verif
   test::TempDataset a, b;
   std::string export_a, export_b;
   for (auto* ds : {&a, &b}) {
-    auto s = OpenOrFail(ds->dir());
+    auto s = test::OpenSession(ds->dir(), true);
     auto made = s->AutoAnnotate();
     REQUIRE(made.ok());
     CHECK(made->automatic == 3);
@@ -198,7 +193,7 @@ TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verif
   }
   CHECK(export_a == export_b);
   // Replayed from the journal, the export is the same bytes again.
-  auto again = OpenOrFail(a.dir(), false);
+  auto again = test::OpenSession(a.dir(), false);
   CHECK(again->ExportJsonl() == export_a);
 
   // Contents: keys, statuses, final room names, the fixed kitchen window, the rejection reason.
@@ -211,9 +206,15 @@ TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verif
     std::vector<std::string> keys;
     for (auto it = r.begin(); it != r.end(); ++it) keys.push_back(it.key());
     if (r["status"] == "rejected")
-      CHECK(keys == std::vector<std::string>{"id", "status", "reason", "descriptions", "layout"});
+      CHECK(keys == std::vector<std::string>{"id", "status", "reason", "descriptions", "annotation", "layout"});
     else
-      CHECK(keys == std::vector<std::string>{"id", "status", "descriptions", "layout"});
+      CHECK(keys == std::vector<std::string>{"id", "status", "descriptions", "annotation", "layout"});
+    // Nobody looked at an auto layout: decided by --auto, no annotator, no time, drafted texts.
+    CHECK(r["annotation"]["decided_by"] == "auto");
+    CHECK(r["annotation"]["annotators"].empty());
+    CHECK(r["annotation"]["seconds"] == 0);
+    CHECK(r["annotation"]["origin"]["coarse"] == "drafted");
+    CHECK(r["annotation"]["origin"]["fine"] == "drafted");
     CHECK(r["status"] != "verified");
     CHECK(r["descriptions"]["coarse"].get<std::string>().size() > 20);
     CHECK(r["descriptions"]["fine"].get<std::string>().size() > 20);
@@ -232,7 +233,7 @@ TEST_CASE("auto mode applies drafted labels, fixes and descriptions, never verif
 
 TEST_CASE("auto mode leaves what a person decided alone", "[auto]") {
   test::TempDataset ds;
-  auto s = OpenOrFail(ds.dir());
+  auto s = test::OpenSession(ds.dir(), true);
   std::string msg;
   REQUIRE(s->Reject(0, "rooms too small or too narrow to use", &msg).ok());
   REQUIRE(s->Accept(1, &msg).ok());
@@ -246,7 +247,7 @@ TEST_CASE("auto mode leaves what a person decided alone", "[auto]") {
 
 TEST_CASE("one writing session a dataset at a time", "[journal]") {
   test::TempDataset ds;
-  auto first = OpenOrFail(ds.dir());
+  auto first = test::OpenSession(ds.dir(), true);
   auto second = Session::Open(ds.dir());
   REQUIRE(!second.ok());
   CHECK(second.error().find("in use by another `villa annotate`") != std::string::npos);

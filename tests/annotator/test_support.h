@@ -8,25 +8,29 @@
 #include <string>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+
 #include "annotator/dataset.h"
+#include "annotator/session.h"
 #include "layout/layout_io.h"
 
 namespace villa::annotator::test {
 
-inline std::filesystem::path FixtureLayouts() {
-  return std::filesystem::path(VILLA_FIXTURE_DIR) / "annotator" / "layouts.jsonl";
+inline std::filesystem::path FixtureLayouts(const std::string& name = "layouts.jsonl") {
+  return std::filesystem::path(VILLA_FIXTURE_DIR) / "annotator" / name;
 }
 
-// A fresh folder holding a copy of the fixture dataset; removed when the object goes.
+// A fresh folder holding a copy of a fixture dataset (tests/fixtures/annotator/NAME as layouts.jsonl);
+// removed when the object goes.
 class TempDataset {
  public:
-  TempDataset() {
+  explicit TempDataset(const std::string& fixture = "layouts.jsonl") {
     static std::atomic<int> counter{0};
     dir_ = std::filesystem::temp_directory_path() /
            ("villa-annotator-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    std::filesystem::copy_file(FixtureLayouts(), LayoutsPath(dir_));
+    std::filesystem::copy_file(FixtureLayouts(fixture), LayoutsPath(dir_));
   }
   ~TempDataset() {
     std::error_code ec;
@@ -58,6 +62,18 @@ inline Layout FixtureLayout(const std::string& id) {
   for (const auto& r : dataset->records)
     if (r.id == id) return r.layout;
   return {};
+}
+
+// The session of `dir`, as `annotator` (default: the login name); the test stops if it does not open.
+inline std::unique_ptr<Session> OpenSession(const std::filesystem::path& dir, bool writable,
+                                            const std::string& annotator = "") {
+  SessionOptions o;
+  o.writable = writable;
+  o.annotator = annotator;
+  auto s = Session::Open(dir, o);
+  INFO((s ? std::string() : s.error()));
+  REQUIRE(s.ok());
+  return std::move(s).value();
 }
 
 }  // namespace villa::annotator::test

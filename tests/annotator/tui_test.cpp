@@ -1,99 +1,18 @@
 // The real `villa annotate` driven through a terminal (tmux: send-keys, capture-pane): label, accept,
 // reject, fix, edit, quit, restart and find the state; kill -9 mid-session and find the journal replayed.
 #include <signal.h>
-#include <sys/wait.h>
-
-#include <chrono>
-#include <cstdio>
-#include <thread>
 
 #include <catch2/catch.hpp>
 
 #include "annotator/session.h"
+#include "terminal.h"
 #include "test_support.h"
 
 using namespace villa;
 using namespace villa::annotator;
-
-namespace {
-
-std::string Run(const std::string& command, int* status = nullptr) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  int rc = ::pclose(pipe);
-  if (status) *status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  return out;
-}
-
-std::string Quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-// One private tmux server running `villa annotate DIR` in a 80 x 24 (or larger) window.
-class Terminal {
- public:
-  Terminal(const std::filesystem::path& dir, int width = 80, int height = 24, const std::string& env = "") {
-    static int counter = 0;
-    socket_ = "villa-annotator-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-    std::string command = "exec env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=xterm-256color " + env + " " + Quote(VILLA_BINARY) +
-                          " annotate " + Quote(dir.string());
-    Tmux("new-session -d -s t -x " + std::to_string(width) + " -y " + std::to_string(height) + " " + Quote(command));
-  }
-  ~Terminal() { Tmux("kill-server 2>/dev/null"); }
-
-  std::string Tmux(const std::string& args, int* status = nullptr) const {
-    return Run("env -u TMUX tmux -f /dev/null -L " + socket_ + " " + args, status);
-  }
-  std::string Screen() const { return Tmux("capture-pane -p -t t 2>/dev/null"); }
-  void Keys(const std::string& keys) const { Tmux("send-keys -t t " + keys); }
-  void Type(const std::string& text) const { Tmux("send-keys -t t -l " + Quote(text)); }
-  bool Alive() const {
-    int status = 0;
-    Tmux("has-session -t t 2>/dev/null", &status);
-    return status == 0;
-  }
-  int Pid() const { return std::atoi(Tmux("display -p -t t '#{pane_pid}'").c_str()); }
-
-  // Waits (up to 10 s) until the screen shows `text`.
-  bool WaitFor(const std::string& text) const {
-    for (int i = 0; i < 200; ++i) {
-      if (Screen().find(text) != std::string::npos) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return false;
-  }
-  bool WaitForExit() const {
-    for (int i = 0; i < 200; ++i) {
-      if (!Alive()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return false;
-  }
-
- private:
-  std::string socket_;
-};
-
-#define REQUIRE_SCREEN(term, text)          \
-  do {                                      \
-    bool shown = (term).WaitFor(text);      \
-    INFO("screen:\n" << (term).Screen());   \
-    REQUIRE(shown);                         \
-  } while (false)
-
-bool HaveTmux() {
-  int status = 0;
-  Run("command -v tmux >/dev/null 2>&1", &status);
-  return status == 0;
-}
-
-}  // namespace
+using test::HaveTmux;
+using test::Quote;
+using test::Terminal;
 
 TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all", "[tui]") {
   // tmux is a declared dependency (scripts/install-deps.sh): without it the test fails, never skips.
@@ -133,8 +52,7 @@ TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all"
     term.Type("A one-storey rectangular house with a kitchen.");
     term.Keys("Enter");
     REQUIRE_SCREEN(term, "(edited)");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   auto s = Session::Open(ds.dir(), false);
   REQUIRE(s.ok());
@@ -157,8 +75,7 @@ TEST_CASE("label, accept, reject, fix, edit, quit, and the restart finds it all"
   REQUIRE_SCREEN(term, "villa-000000");
   REQUIRE_SCREEN(term, "[verified]");
   REQUIRE_SCREEN(term, "office_0/0");
-  term.Keys("q");
-  REQUIRE(term.WaitForExit());
+  REQUIRE(term.Quit());
 }
 
 TEST_CASE("kill -9 mid-session loses nothing that was shown as done", "[tui]") {
@@ -188,8 +105,7 @@ TEST_CASE("kill -9 mid-session loses nothing that was shown as done", "[tui]") {
   REQUIRE_SCREEN(term, "meeting-room_0/0");
   term.Keys("u");
   REQUIRE_SCREEN(term, "undone: redraft");
-  term.Keys("q");
-  REQUIRE(term.WaitForExit());
+  REQUIRE(term.Quit());
 }
 
 TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
@@ -211,9 +127,11 @@ TEST_CASE("the screen is usable at 80x24 and uses 160x48", "[tui]") {
     CHECK(screen.find("pending 4") != std::string::npos);
     term.Keys("?");
     REQUIRE_SCREEN(term, "villa annotate: keys");
+    // Esc and a key within the escape delay read as Alt-key, as in every terminal program: wait for
+    // the help to close, as a person sees it close, before the next key.
     term.Keys("Escape");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.WaitGone("villa annotate: keys"));
+    REQUIRE(term.Quit());
   }
 }
 
@@ -221,24 +139,27 @@ TEST_CASE("both descriptions edited in $EDITOR", "[tui]") {
   // tmux is a declared dependency (scripts/install-deps.sh): without it the test fails, never skips.
   REQUIRE(HaveTmux());
   test::TempDataset ds;
-  // An "editor" that rewrites the file: the coarse text, the marker line kept, a new fine text.
+  // An "editor" that rewrites the file: a new coarse text and a new fine text under the marker lines
+  // (kept), the fine one over two lines of one paragraph.
   std::filesystem::path editor = ds.dir() / "editor.sh";
   test::Spit(editor,
              "#!/bin/sh\n"
-             "marker=$(grep '^# ---- fine' \"$1\")\n"
-             "printf '# a comment\\nA small house.\\n%s\\nOne floor, with a kitchen\\nopen to the dining room.\\n' \"$marker\" > \"$1\"\n");
+             "coarse=$(grep '^# ---- coarse' \"$1\")\n"
+             "fine=$(grep '^# ---- fine' \"$1\")\n"
+             "printf '# a comment\\n%s\\nA small house.\\n%s\\nOne floor, with a kitchen\\nopen to the dining room.\\n' "
+             "\"$coarse\" \"$fine\" > \"$1\"\n");
   std::filesystem::permissions(editor, std::filesystem::perms::owner_all);
   {
     Terminal term(ds.dir(), 80, 24, "VISUAL= EDITOR=" + Quote(editor.string()));
     REQUIRE_SCREEN(term, "villa-000000");
     term.Keys("v");
     REQUIRE_SCREEN(term, "edit descriptions of villa-000000");
-    term.Keys("q");
-    REQUIRE(term.WaitForExit());
+    REQUIRE(term.Quit());
   }
   auto s = Session::Open(ds.dir(), false);
   REQUIRE(s.ok());
   CHECK((*s)->state(0).coarse == "A small house.");
   CHECK((*s)->state(0).fine == "One floor, with a kitchen open to the dining room.");
-  CHECK((*s)->state(0).edited);
+  CHECK((*s)->state(0).edited(DescriptionField::kCoarse));
+  CHECK((*s)->state(0).edited(DescriptionField::kFine));
 }
