@@ -1,0 +1,37 @@
+#pragma once
+// Upright oriented boxes in the plan (the optimiser's proxies and the E_col of SCENE.md), plain doubles.
+// A box is a rectangle (centre, yaw, half extents along its own x and y) swept from z0 to z1 (m).
+#include <array>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace villa::solver {
+
+struct OrientedBox {
+  Point c;
+  double yaw = 0.0;  // rad: the box's x axis is (cos yaw, sin yaw)
+  double hx = 0.0;   // half extents (m)
+  double hy = 0.0;
+  double z0 = 0.0;
+  double z1 = 0.0;
+
+  Point U() const;  // unit x axis
+  Point V() const;  // unit y axis (U turned +90 degrees)
+  Ring Footprint() const;  // the four corners, CCW
+  bool ContainsPlan(Point p, double tolerance = 0.0) const;
+};
+
+// Separating-axis depth in plan: > 0 the footprints overlap by that much along the best axis, < 0 they are
+// apart (minus the widest gap along a face normal).
+double PlanDepth(const OrientedBox& a, const OrientedBox& b);
+// Overlap of the z ranges (m, negative when apart).
+double HeightOverlap(const OrientedBox& a, const OrientedBox& b);
+// Volume of the intersection of two upright boxes (m3).
+double OverlapVolume(const OrientedBox& a, const OrientedBox& b);
+// Area of `subject` (any simple polygon) inside the convex CCW polygon `clip` (m2).
+double ClippedArea(const Ring& subject, const Ring& clip);
+// The reflex (inner-corner) vertices of a CCW polygon.
+std::vector<Point> ReflexVertices(const Ring& ring);
+
+}  // namespace villa::solver

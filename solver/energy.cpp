@@ -1,0 +1,154 @@
+#include "solver/energy.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "mesh/geometry2d.h"
+#include "solver/layer.h"
+#include "solver/residuals.h"
+#include "solver/state.h"
+#include "layout/geometry.h"
+
+namespace villa::solver {
+namespace {
+
+std::string Format(const char* format, const std::string& a, const std::string& b, double value) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, format, a.c_str(), b.c_str(), value);
+  return buffer;
+}
+
+// An object's pose as the cost functors read it.
+struct Blocks {
+  double p[4];
+  double s[1];
+};
+Blocks BlocksOf(const ObjectPlacement& pl) {
+  return {{pl.pose.x, pl.pose.y, pl.pose.z, pl.pose.yaw}, {pl.pose.scale}};
+}
+
+BodyShape ShapeOf(const ProblemObject& o) {
+  return {0.0, 0.0, 0.5 * o.asset.size.x, 0.5 * o.asset.size.y, 0.0, o.asset.size.z};
+}
+
+// Volume of an object's box inside an upright prism (polygon x [z0, z1]).
+double PrismOverlap(const OrientedBox& box, const Ring& polygon, double z0, double z1) {
+  const double dz = std::min(box.z1, z1) - std::max(box.z0, z0);
+  if (dz <= 0.0) return 0.0;
+  return ClippedArea(polygon, box.Footprint()) * dz;
+}
+
+}  // namespace
+
+EnergyTerms StateEnergy(const RoomState& st) {
+  const RoomProblem& problem = *st.problem;
+  const int n = static_cast<int>(st.objects.size());
+  EnergyTerms e;
+  e.object_collision.assign(n, 0.0);
+  e.object_support.assign(n, 0.0);
+  e.object_semantic.assign(n, 0.0);
+  std::vector<OrientedBox> boxes;
+  for (int i = 0; i < n; ++i) boxes.push_back(st.WorldBox(i));
+
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (st.IsFloorCovering(i) || st.IsFloorCovering(j) || st.ParentChild(i, j)) continue;
+      const double v = OverlapVolume(boxes[i], boxes[j]);
+      if (v <= 1e-12) continue;
+      e.collision += v;
+      e.object_collision[i] += v;
+      e.object_collision[j] += v;
+      e.overlaps.push_back({st.objects[i].id, st.objects[j].id});
+      e.findings.push_back(Format("collision %s x %s: %.6f m3", st.objects[i].id, st.objects[j].id, v));
+    }
+  }
+  // The building: walls (outside the free floor), keep-outs, and the thin prisms in front of openings.
+  std::vector<std::pair<std::string, Prism>> building;
+  for (const KeepOut& k : problem.keep_outs) {
+    building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name, {k.polygon, k.z_min, k.z_max, true, true}});
+  }
+  const Layer openings = RoomLayer(st, {}, {});
+  for (const Prism& p : openings.prisms) {
+    if (p.binds_floor && p.binds_hung) continue;  // keep-outs, counted above
+    if (p.binds_floor) building.push_back({"wall opening", p});
+  }
+  for (int i = 0; i < n; ++i) {
+    const OrientedBox& b = boxes[i];
+    const double footprint = 4.0 * b.hx * b.hy;
+    const double outside = std::max(0.0, footprint - ClippedArea(problem.free_floor, b.Footprint()));
+    double v = outside > 1e-9 ? outside * (b.z1 - b.z0) : 0.0;
+    if (v > 0.0) {
+      e.overlaps.push_back({st.objects[i].id, "walls"});
+      e.findings.push_back(Format("collision %s x %s: %.6f m3", st.objects[i].id, "walls", v));
+    }
+    for (const auto& [name, prism] : building) {
+      const double w = PrismOverlap(b, prism.polygon, prism.z0, prism.z1);
+      if (w <= 1e-12) continue;
+      v += w;
+      e.overlaps.push_back({st.objects[i].id, name});
+      e.findings.push_back(Format("collision %s x %s: %.6f m3", st.objects[i].id, name, w));
+    }
+    e.collision += v;
+    e.object_collision[i] += v;
+  }
+
+  for (int i = 0; i < n; ++i) {
+    if (st.Hung(i)) continue;
+    const double dz = std::abs(st.placements[i].pose.z - st.SupportHeight(i));
+    const bool outside = !PointInRing(boxes[i].c, st.SupportRegion(i), 0);
+    const double s = dz + (outside ? 1.0 : 0.0);
+    if (s <= 0.0) continue;
+    e.support += s;
+    e.object_support[i] += s;
+    e.findings.push_back(Format("support %s%s: %.4f", st.objects[i].id, outside ? " (centre off its support)" : "", s));
+  }
+
+  for (const SemanticEdge& edge : st.edges) {
+    const int a = st.Find(edge.source), b = st.Find(edge.target);
+    double v = 0.0;
+    if (a >= 0 && b >= 0) {
+      Blocks pa = BlocksOf(st.placements[a]), pb = BlocksOf(st.placements[b]);
+      bool pose_only = false;
+      std::unique_ptr<ceres::CostFunction> cost(
+          SemanticCost(edge, ShapeOf(st.objects[a]), ShapeOf(st.objects[b]), 1.0, &pose_only));
+      std::vector<double*> blocks = pose_only ? std::vector<double*>{pa.p, pb.p} : std::vector<double*>{pa.p, pa.s, pb.p, pb.s};
+      cost->Evaluate(blocks.data(), &v, nullptr);
+      v = std::abs(v);
+      if (v > 1e-9) {
+        e.object_semantic[a] += v;
+        e.findings.push_back(Format("relation %s -> %s: %.4f", edge.source + " " + std::string(SemanticRelationName(edge.relation)),
+                                    edge.target, v));
+      }
+    }
+    e.edge_violation.push_back(v);
+    e.semantic += v;
+  }
+  for (int i = 0; i < n; ++i) {
+    for (const BodyShape& zone : ZoneShapes(st, i)) {
+      Blocks po = BlocksOf(st.placements[i]);
+      for (int j = 0; j < n; ++j) {
+        if (j == i || st.IsFloorCovering(j) || ZoneExempt(st, i, j)) continue;
+        Blocks pj = BlocksOf(st.placements[j]);
+        InteractionZoneResidual intrusion{zone, ShapeOf(st.objects[j]), 1.0};
+        double depth = 0.0;
+        intrusion(po.p, po.s, pj.p, pj.s, &depth);
+        if (depth <= 1e-9) continue;
+        e.semantic += depth;
+        e.object_semantic[j] += depth;
+        e.findings.push_back(Format("zone of %s entered by %s: %.4f m", st.objects[i].id, st.objects[j].id, depth));
+      }
+    }
+  }
+  e.total = kWeightCollision * e.collision + kWeightSupport * e.support + kWeightSemantic * e.semantic;
+  return e;
+}
+
+EnergyTerms ArrangementEnergy(const RoomProblem& problem, const std::vector<ObjectPlacement>& placements) {
+  RoomState state = RoomState::From(problem);
+  state.placements = placements;
+  state.placements.resize(problem.objects.size());
+  return StateEnergy(state);
+}
+
+}  // namespace villa::solver

@@ -1,0 +1,677 @@
+#include "solver/place.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "mesh/geometry2d.h"
+#include "layout/geometry.h"
+
+namespace villa::solver {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kHalfPi = 0.5 * std::numbers::pi;
+
+struct Candidate {
+  double x = 0.0, y = 0.0, z = 0.0, yaw = 0.0;
+  int wall = -1;
+  double pref = 0.0;  // soft preference added to the score (lower is better)
+};
+
+// Yaw whose facing f = (sin yaw, -cos yaw) is the unit direction `dir`.
+double YawFacing(Point dir) { return std::atan2(dir.x, -dir.y); }
+
+// Half the extent of a box (half sizes hx, hy, turned by yaw) along the unit direction k.
+double Extent(double hx, double hy, double yaw, Point k) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return hx * std::abs(c * k.x + s * k.y) + hy * std::abs(-s * k.x + c * k.y);
+}
+
+struct WallFrame {
+  Point a, d, n;  // start, unit direction, unit inward normal
+  double length = 0.0;
+  double yaw_in = 0.0;  // yaw facing into the room
+};
+
+WallFrame FrameOfWall(const WallEdge& w) {
+  WallFrame f;
+  f.a = w.a;
+  f.d = geo::Unit(geo::Sub(w.b, w.a));
+  f.n = geo::Left(f.d);
+  f.length = geo::Dist(w.a, w.b);
+  f.yaw_in = YawFacing(f.n);
+  return f;
+}
+
+OrientedBox LayerBox(const Body& b) {
+  OrientedBox box;
+  box.c = {b.p[0], b.p[1]};
+  box.yaw = b.p[3];
+  box.hx = b.hx * b.s[0];
+  box.hy = b.hy * b.s[0];
+  box.z0 = b.p[2];
+  box.z1 = b.p[2] + b.height * b.s[0];
+  return box;
+}
+
+// Positions along a wall for a body of half width hx and half depth hy standing `gap` from it: both ends,
+// the middle, a regular comb, and the slots right beside every placed body near the wall and beside every
+// opening (the nightstand beside the bed, the cabinet next to the door).
+std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame& wf, const WallEdge& wall, double hx,
+                                   double hy, double gap, double object_gap) {
+  // The ends keep 2 cm to the wall's ends (the solver's wall-span margin is 1 cm).
+  const double end = hx + 0.02;
+  std::vector<double> ts = {end, wf.length - end, 0.5 * wf.length};
+  const double step = std::max(0.1, wf.length / 40.0);
+  for (double t = end; t <= wf.length - end + 1e-9; t += step) ts.push_back(t);
+  for (size_t q = 0; q < layer.bodies.size(); ++q) {
+    const Body& other = layer.bodies[q];
+    if (static_cast<int>(q) == self || !other.active || other.covering) continue;
+    double t0 = 1e9, t1 = -1e9, n0 = 1e9;
+    for (Point c : LayerBox(other).Footprint()) {
+      const Point r = geo::Sub(c, wf.a);
+      t0 = std::min(t0, geo::Dot(r, wf.d));
+      t1 = std::max(t1, geo::Dot(r, wf.d));
+      n0 = std::min(n0, geo::Dot(r, wf.n));
+    }
+    if (n0 > gap + 2.0 * hy + 0.3) continue;
+    ts.push_back(t0 - 1.5 * object_gap - hx);
+    ts.push_back(t1 + 1.5 * object_gap + hx);
+  }
+  for (const WallOpening& o : wall.openings) {
+    ts.push_back(o.t0 - hx - 0.12);
+    ts.push_back(o.t1 + hx + 0.12);
+  }
+  // The whole width stays on the wall: past its end (beyond an inner corner) there is no wall behind.
+  std::erase_if(ts, [&](double t) { return t < end - 1e-9 || t > wf.length - end + 1e-9; });
+  return ts;
+}
+
+// A body standing on the floor with its back `gap` from a wall, facing into the room. `side_room`: the
+// wall length the objects meant to stand beside it need on each side (nightstands, side tables);
+// `hang_above`: something is to hang on the wall above it (the painting over the bed), so a window there
+// is in the way.
+void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_index, double gap, double object_gap,
+               double side_room, bool hang_above, std::vector<Candidate>& out) {
+  const Body& b = layer.bodies[self];
+  const WallEdge& wall = state.problem->walls[wall_index];
+  const WallFrame wf = FrameOfWall(wall);
+  const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
+  const double top = b.p[2] + b.top * b.s[0];
+  for (double t : AlongWallStops(layer, self, wf, wall, hx, hy, gap, object_gap)) {
+    const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, gap + hy));
+    // Big anchors prefer the middle of their wall a little (a bed centred on its wall), and room beside
+    // them for what belongs there.
+    double pref = hx > 0.5 ? 0.02 * std::abs(t - 0.5 * wf.length) : 0.0;
+    pref += 0.3 * (std::max(0.0, side_room - (t - hx)) + std::max(0.0, side_room - (wf.length - t - hx)));
+    for (const WallOpening& o : wall.openings) {
+      if (hang_above && o.z1 > top) pref += std::max(0.0, std::min(t + hx, o.t1) - std::max(t - hx, o.t0));
+    }
+    out.push_back({c.x, c.y, b.p[2], wf.yaw_in, wall_index, pref});
+  }
+}
+
+// Whether a hung object relates to this one (it will hang on the wall above or beside it).
+bool HangsAbove(const RoomState& state, int object) {
+  for (const SemanticEdge& e : state.edges) {
+    const bool source = e.source == state.objects[object].id, target = e.target == state.objects[object].id;
+    if (!source && !target) continue;
+    const int other = state.Find(source ? e.target : e.source);
+    if (other >= 0 && state.objects[other].relation == Relation::kOnWall) return true;
+  }
+  return false;
+}
+
+// Wall length the objects that stand next to (or left or right of) this one need on each side.
+double SideRoom(const RoomState& state, int object) {
+  double need = 0.0;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.target != state.objects[object].id) continue;
+    if (e.relation != SemanticRelation::kNextTo && e.relation != SemanticRelation::kLeftOf &&
+        e.relation != SemanticRelation::kRightOf)
+      continue;
+    const int s = state.Find(e.source);
+    if (s >= 0 && state.parent[s] < 0) need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
+  }
+  return need;
+}
+
+// A small pull toward the tight end of distance relations (a nightstand flush with the bed rather than
+// half a metre off), in metres of the relation's own units.
+double Closeness(const Layer& layer, int self, const RoomState& state) {
+  double pref = 0.0;
+  const std::string& id = state.objects[layer.bodies[self].object].id;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.relation != SemanticRelation::kNextTo && e.relation != SemanticRelation::kNear) continue;
+    if (e.source != id && e.target != id) continue;
+    const int other = state.Find(e.source == id ? e.target : e.source);
+    if (other < 0 || layer.body_of[other] < 0 || !layer.bodies[layer.body_of[other]].active) continue;
+    const double gap = -PlanDepth(LayerBox(layer.bodies[self]), LayerBox(layer.bodies[layer.body_of[other]]));
+    pref += e.relation == SemanticRelation::kNextTo ? 0.05 * std::max(0.0, gap) : 0.02 * std::abs(gap - 0.8);
+  }
+  return pref;
+}
+
+// Hung on a wall: along the wall at eye level, at the usual heights, or above a related object.
+void OnWallSlots(const Layer& layer, int self, const RoomState& state, const std::vector<int>& targets,
+                 std::vector<Candidate>& out) {
+  const Body& b = layer.bodies[self];
+  const ProblemObject& o = state.objects[b.object];
+  const RoomProblem& problem = *state.problem;
+  const double hx = b.hx * b.s[0], hy = b.hy * b.s[0], h = b.height * b.s[0];
+  const double floor = problem.floor_z, ceiling = problem.floor_z + problem.clear_height;
+  std::vector<double> zs = {floor + 1.5 - 0.5 * h, floor + 1.45, floor + 0.6, floor + 1.2 - 0.5 * h};
+  for (int t : targets) {
+    const OrientedBox box = LayerBox(layer.bodies[t]);
+    zs.push_back(box.z1 + 0.15);
+    zs.push_back(box.z1 + 0.3);
+  }
+  std::erase_if(zs, [&](double z) { return z < floor + 0.05 || z + h > ceiling - 0.02; });
+  if (zs.empty()) zs.push_back(std::max(floor + 0.05, ceiling - 0.02 - h));
+  for (size_t w = 0; w < problem.walls.size(); ++w) {
+    if (o.wall >= 0 && o.wall != static_cast<int>(w)) continue;
+    const WallEdge& wall = problem.walls[w];
+    if (!wall.hang_allowed) continue;
+    const WallFrame wf = FrameOfWall(wall);
+    std::vector<double> ts = AlongWallStops(layer, self, wf, wall, hx, hy, o.wall_gap, 0.05);
+    for (int t : targets) {
+      if (wf.length < 2.0 * (hx + 0.02)) break;
+      const double along = geo::Dot(geo::Sub(Point{layer.bodies[t].p[0], layer.bodies[t].p[1]}, wf.a), wf.d);
+      ts.push_back(std::clamp(along, hx + 0.02, wf.length - hx - 0.02));
+    }
+    for (double t : ts) {
+      const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, o.wall_gap + hy));
+      for (double z : zs) {
+        out.push_back({c.x, c.y, z, wf.yaw_in, static_cast<int>(w), 0.1 * std::abs(z + 0.5 * h - (floor + 1.5))});
+      }
+    }
+  }
+}
+
+// Around a related body: on each of its four sides, at the relation's gaps, along the side, facing it or
+// turned like it.
+void AroundTarget(const Layer& layer, int self, int target, const std::vector<SemanticEdge>& edges,
+                  const std::vector<double>& classes, std::vector<Candidate>& out) {
+  const Body& b = layer.bodies[self];
+  const Body& q = layer.bodies[target];
+  const OrientedBox box = LayerBox(q);
+  const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
+  std::set<double> gaps;
+  bool centred = false;
+  int only_side = -1;  // 0 front, 1 back, 2 left, 3 right (target's frame)
+  for (const SemanticEdge& e : edges) {
+    switch (e.relation) {
+      case SemanticRelation::kNextTo: gaps.insert({0.05, 0.2, 0.45}); break;
+      case SemanticRelation::kNear: gaps.insert({0.55, 0.9, 1.3}); break;
+      case SemanticRelation::kFar: gaps.insert({1.6, 2.4}); break;
+      case SemanticRelation::kCentered: centred = true; break;
+      case SemanticRelation::kFrontOf: only_side = 0; break;
+      case SemanticRelation::kBehind: only_side = 1; break;
+      case SemanticRelation::kLeftOf: only_side = 2; break;
+      case SemanticRelation::kRightOf: only_side = 3; break;
+      default: break;
+    }
+  }
+  if (gaps.empty()) gaps = {0.1, 0.45, 0.8};
+  const Point u = box.U(), v = box.V();
+  const Point normals[4] = {geo::Scale(v, -1.0), v, u, geo::Scale(u, -1.0)};
+  for (int side = 0; side < 4; ++side) {
+    if (only_side >= 0 && side != only_side) continue;
+    const Point n = normals[side];
+    const Point l = geo::Left(n);
+    const double en = side < 2 ? box.hy : box.hx;
+    const double el = side < 2 ? box.hx : box.hy;
+    // Spread the target's company over its sides: each body already on this side (within 1.2 m of the
+    // face, alongside it) makes the side a little less attractive (chairs all round the table, a side
+    // table at each end of the sofa).
+    int taken = 0;
+    for (size_t k = 0; k < layer.bodies.size(); ++k) {
+      const Body& q = layer.bodies[k];
+      if (static_cast<int>(k) == self || static_cast<int>(k) == target || !q.active || q.covering) continue;
+      const Point r = geo::Sub(Point{q.p[0], q.p[1]}, box.c);
+      const double out_of_face = geo::Dot(r, n) - en, along = std::abs(geo::Dot(r, l));
+      taken += out_of_face > 0.0 && out_of_face < 1.2 && along < el + 0.3;
+    }
+    const double crowding = 0.15 * taken;
+    std::vector<double> yaws = {YawFacing(geo::Scale(n, -1.0)), box.yaw};
+    for (double c : classes) yaws.push_back(SnapYaw(YawFacing(geo::Scale(n, -1.0)), {c}));
+    for (double yaw : yaws) {
+      const double rn = Extent(hx, hy, yaw, n), rl = Extent(hx, hy, yaw, l);
+      std::vector<double> laterals = {0.0};
+      if (!centred) {
+        laterals.push_back(el - rl);
+        laterals.push_back(rl - el);
+        for (double t = 0.25; t <= el + rl; t += 0.25) {
+          laterals.push_back(t);
+          laterals.push_back(-t);
+        }
+      }
+      for (double gap : gaps) {
+        for (double lat : laterals) {
+          const Point c = geo::Add(geo::Add(box.c, geo::Scale(n, en + gap + rn)), geo::Scale(l, lat));
+          out.push_back({c.x, c.y, b.p[2], yaw, -1, crowding});
+        }
+      }
+    }
+  }
+}
+
+// min x, min y, max x, max y of a polygon.
+std::array<double, 4> PlanBounds(const Ring& ring) {
+  std::array<double, 4> b = {1e9, 1e9, -1e9, -1e9};
+  for (Point p : ring) {
+    b = {std::min(b[0], p.x), std::min(b[1], p.y), std::max(b[2], p.x), std::max(b[3], p.y)};
+  }
+  return b;
+}
+
+// A lattice over the region's bounding box, points inside the region, each yaw class.
+void GridSlots(const Layer& layer, int self, const std::vector<double>& yaws, double step, std::vector<Candidate>& out) {
+  const Body& b = layer.bodies[self];
+  const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
+  for (double x = x0 + 0.5 * step; x < x1; x += step) {
+    for (double y = y0 + 0.5 * step; y < y1; y += step) {
+      if (!PointInRing({x, y}, layer.region, 0)) continue;
+      for (double yaw : yaws) out.push_back({x, y, b.p[2], yaw, -1, 0.0});
+    }
+  }
+}
+
+std::vector<double> FourTurns(const std::vector<double>& classes) {
+  std::vector<double> yaws;
+  for (double c : classes) {
+    for (int k = 0; k < 4; ++k) yaws.push_back(WrapAngle(c + k * kHalfPi));
+  }
+  return yaws;
+}
+
+// The edges between the body's object and other active bodies of the layer, by that body.
+std::vector<std::pair<int, std::vector<SemanticEdge>>> Related(const Layer& layer, int self, const RoomState& state) {
+  std::vector<std::pair<int, std::vector<SemanticEdge>>> out;
+  const std::string& id = state.objects[layer.bodies[self].object].id;
+  for (const SemanticEdge& e : state.edges) {
+    const bool as_source = e.source == id;
+    if (!as_source && e.target != id) continue;
+    const int other = state.Find(as_source ? e.target : e.source);
+    if (other < 0 || layer.body_of[other] < 0 || !layer.bodies[layer.body_of[other]].active) continue;
+    const int q = layer.body_of[other];
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& p) { return p.first == q; });
+    if (it == out.end()) {
+      out.push_back({q, {}});
+      it = std::prev(out.end());
+    }
+    // Seen from the other body, "A front_of B" read from B's side is not a side rule for B.
+    if (as_source) it->second.push_back(e);
+    else if (e.relation == SemanticRelation::kNextTo || e.relation == SemanticRelation::kNear ||
+             e.relation == SemanticRelation::kFar || e.relation == SemanticRelation::kFaceTo)
+      it->second.push_back(e);
+  }
+  return out;
+}
+
+int IncomingEdges(const RoomState& state, int object) {
+  int n = 0;
+  for (const SemanticEdge& e : state.edges) n += e.target == state.objects[object].id;
+  return n;
+}
+
+// `around_count`: how many of the candidates, at the front, were generated around related bodies (0 when
+// the body has no relation to a placed one).
+std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomState& state, const SolveOptions& o,
+                                      size_t* around_count) {
+  *around_count = 0;
+  std::vector<Candidate> out;
+  const Body& b = layer.bodies[self];
+  const ProblemObject& obj = state.objects[b.object];
+  const RoomProblem& problem = *state.problem;
+  const std::vector<double> classes = RoomYawClasses(problem);
+  const auto related = Related(layer, self, state);
+  std::vector<int> targets;
+  for (const auto& r : related) targets.push_back(r.first);
+
+  if (b.motion == Motion::kAlongWall) {
+    for (size_t w = 0; w < problem.walls.size(); ++w) {
+      if (obj.wall >= 0 && obj.wall != static_cast<int>(w)) continue;
+      WallSlots(layer, self, state, static_cast<int>(w), obj.wall_gap, o.object_gap, SideRoom(state, b.object),
+                HangsAbove(state, b.object), out);
+    }
+    return out;
+  }
+  if (b.motion == Motion::kOnWall) {
+    OnWallSlots(layer, self, state, targets, out);
+    return out;
+  }
+  const double area = Area(layer.region);
+  const double step = std::clamp(std::sqrt(area) / 12.0, 0.15, 0.5);
+  if (obj.relation == Relation::kHanging) {
+    const double z = problem.floor_z + problem.clear_height - b.height * b.s[0];
+    std::vector<Candidate> grid;
+    GridSlots(layer, self, classes, step, grid);
+    for (int t : targets) grid.push_back({layer.bodies[t].p[0], layer.bodies[t].p[1], 0.0, SnapYaw(layer.bodies[t].p[3], classes), -1, -1.0});
+    for (Candidate& c : grid) {
+      c.z = z;
+      c.pref += -0.1 * std::min(DistanceToBoundary({c.x, c.y}, layer.region), 2.0);
+      out.push_back(c);
+    }
+    return out;
+  }
+  for (const auto& [target, edges] : related) AroundTarget(layer, self, target, edges, classes, out);
+  const size_t around = out.size();
+  *around_count = around;
+  const bool hub = IncomingEdges(state, b.object) >= 2 || b.covering;
+  std::vector<Candidate> grid;
+  GridSlots(layer, self, FourTurns(classes), step, grid);
+  if (!hub) {
+    for (size_t w = 0; w < problem.walls.size(); ++w) {
+      WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, false, grid);
+    }
+  }
+  for (Candidate& c : grid) {
+    const double clearance = DistanceToBoundary({c.x, c.y}, layer.region);
+    // Hubs (a dining table with its chairs, a rug) keep room around them; loners go by a wall.
+    c.pref += hub ? -0.1 * std::min(clearance, 1.5) : 0.1 * std::min(clearance, 3.0);
+    // With relations to honour, the grid is a fallback behind the slots around the targets.
+    if (around > 0) c.pref += 0.1;
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<Candidate> ChildCandidates(const Layer& layer, int self) {
+  std::vector<Candidate> out;
+  const Body& b = layer.bodies[self];
+  const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
+  if (layer.kind == Layer::Kind::kCavity) {
+    const Box3& c = layer.cavity;
+    // Rows from the left: books stand side by side, spines to the open front.
+    for (double yaw : {0.0, kHalfPi}) {
+      const double ex = Extent(hx, hy, yaw, {1, 0}), ey = Extent(hx, hy, yaw, {0, 1});
+      const double ymid = 0.5 * (c.min.y + c.max.y);
+      for (double y : {ymid, c.min.y + ey + 0.01, c.max.y - ey - 0.01}) {
+        for (double x = c.min.x + ex + 0.006; x <= c.max.x - ex - 0.006 + 1e-9; x += 0.005) {
+          const double pref = 0.05 * (x - c.min.x) + (yaw != 0.0 ? 0.02 : 0.0) + 0.01 * std::abs(y - ymid);
+          out.push_back({x, y, b.p[2], yaw, -1, pref});
+        }
+      }
+    }
+    return out;
+  }
+  const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
+  Point centroid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
+  const double step = std::clamp(0.5 * std::min(hx, hy), 0.01, 0.05);
+  for (double yaw : {0.0, kHalfPi, kPi, -kHalfPi}) {
+    for (double x = x0; x <= x1 + 1e-9; x += step) {
+      for (double y = y0; y <= y1 + 1e-9; y += step) {
+        // Spread out: away from the siblings already there, near the middle for the first.
+        double nearest = 0.4;
+        for (const Body& q : layer.bodies) {
+          if (&q == &b || !q.active || q.motion == Motion::kFixed) continue;
+          nearest = std::min(nearest, std::hypot(q.p[0] - x, q.p[1] - y));
+        }
+        const double pref = 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0);
+        out.push_back({x, y, b.p[2], yaw, -1, pref});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+struct Scored {
+  Candidate c;
+  double score = 0.0;
+  double hard = 0.0;
+};
+
+// Every candidate of the body scored against the active bodies (hard violations far behind), best first;
+// at most `keep` of them. The body's pose is left as it was.
+std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng,
+                                   double jitter, size_t keep, PlaceStats* stats) {
+  Body& b = layer.bodies[self];
+  const bool was_active = b.active;
+  b.active = true;
+  size_t around_count = 0;
+  const std::vector<Candidate> candidates = layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o, &around_count)
+                                                                             : ChildCandidates(layer, self);
+  const double saved[4] = {b.p[0], b.p[1], b.p[2], b.p[3]};
+  const int saved_wall = b.wall;
+  const Point saved_dir = b.wall_dir;
+  // A wall-bound body's terms depend on its wall (the span term): one set per wall the candidates use.
+  std::map<int, std::vector<Term>> terms_by_wall;
+  auto terms_for = [&](int wall) -> const std::vector<Term>& {
+    const int key = wall >= 0 ? wall : saved_wall;
+    auto it = terms_by_wall.find(key);
+    if (it != terms_by_wall.end()) return it->second;
+    b.wall = key;
+    b.wall_dir = key >= 0 ? geo::Unit(geo::Sub(state.problem->walls[key].b, state.problem->walls[key].a)) : saved_dir;
+    return terms_by_wall.emplace(key, MakeTerms(layer, state, o, self, -1.0)).first->second;
+  };
+  std::vector<Scored> ranked;
+  size_t feasible = 0;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& c = candidates[k];
+    // The slots a relation asks for come first: when one of them already meets every term, the
+    // fallbacks behind them (grid, walls) cannot beat it.
+    if (k == around_count && feasible > 0 && ranked.front().score < 0.05 && keep == 1) break;
+    b.p[0] = c.x;
+    b.p[1] = c.y;
+    b.p[2] = c.z;
+    b.p[3] = c.yaw;
+    // With `keep` feasible candidates in hand, an infeasible one cannot make the list: stop at its
+    // first hard violation.
+    const LayerCost cost = Evaluate(terms_for(c.wall), feasible >= keep ? 1e-10 : 1e300);
+    feasible += cost.hard <= 1e-10;
+    const double noise = jitter > 0.0 ? jitter * rng.Unit() : 0.0;
+    const double score =
+        cost.hard > 1e-10 ? 1e6 + cost.hard : cost.soft_linear + c.pref + Closeness(layer, self, state) + noise;
+    ranked.push_back({c, score, cost.hard});
+    if (ranked.size() > 1 && ranked.back().score < ranked.front().score) std::swap(ranked.front(), ranked.back());
+  }
+  if (stats) stats->candidates += static_cast<int>(candidates.size());
+  std::copy(saved, saved + 4, b.p);
+  b.wall = saved_wall;
+  b.wall_dir = saved_dir;
+  b.active = was_active;
+  // Stable: equal scores keep the generation order, so the result does not depend on the sort.
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Scored& x, const Scored& y) { return x.score < y.score; });
+  if (ranked.size() > keep) ranked.resize(keep);
+  return ranked;
+}
+
+void Put(Layer& layer, int self, const RoomState& state, const Candidate& c) {
+  Body& b = layer.bodies[self];
+  b.active = true;
+  b.p[0] = c.x;
+  b.p[1] = c.y;
+  b.p[2] = c.z;
+  b.p[3] = c.yaw;
+  if (c.wall >= 0) {
+    b.wall = c.wall;
+    const WallEdge& w = state.problem->walls[c.wall];
+    b.wall_dir = geo::Unit(geo::Sub(w.b, w.a));
+  }
+  b.yaw_class = SnapYaw(c.yaw, layer.kind == Layer::Kind::kRoom ? RoomYawClasses(*state.problem) : std::vector<double>{0.0});
+}
+
+// The bodies whose own relations point at `hub` (placed after it, around it), not yet placed.
+std::vector<int> Dependents(const Layer& layer, int hub, const RoomState& state, const std::vector<char>& placed) {
+  std::vector<int> out;
+  const std::string& id = state.objects[layer.bodies[hub].object].id;
+  for (const SemanticEdge& e : state.edges) {
+    if (e.target != id) continue;
+    const int s = state.Find(e.source);
+    if (s < 0 || layer.body_of[s] < 0) continue;
+    const int k = layer.body_of[s];
+    if (layer.bodies[k].motion == Motion::kFixed || placed[k] || std::find(out.begin(), out.end(), k) != out.end()) continue;
+    out.push_back(k);
+  }
+  return out;
+}
+
+}  // namespace
+
+double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter,
+                 PlaceStats* stats) {
+  const std::vector<Scored> best = RankCandidates(layer, self, state, o, rng, jitter, 1, stats);
+  if (best.empty()) {
+    layer.bodies[self].active = true;
+    if (stats) ++stats->infeasible;
+    return 1e300;
+  }
+  Put(layer, self, state, best[0].c);
+  if (best[0].hard > 1e-10 && stats) ++stats->infeasible;
+  return best[0].hard;
+}
+
+void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter, PlaceStats* stats) {
+  constexpr size_t kLookahead = 4;
+  const std::vector<int> order = PlacementOrder(layer, state);
+  std::vector<char> placed(layer.bodies.size(), 0);
+  for (int b : order) {
+    if (placed[b]) continue;
+    const std::vector<int> dependents = Dependents(layer, b, state, placed);
+    placed[b] = 1;
+    if (dependents.empty()) {
+      PlaceBody(layer, b, state, o, rng, jitter, stats);
+      continue;
+    }
+    // A hub and the objects placed around it: try its few best poses, place the group at each, keep the
+    // group that holds best (a bed needs room for both nightstands, a sofa for its side tables).
+    // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
+    std::vector<Scored> tries;
+    for (const Scored& t : RankCandidates(layer, b, state, o, rng, jitter, 64, stats)) {
+      const bool repeat = std::any_of(tries.begin(), tries.end(), [&](const Scored& u) {
+        return std::hypot(u.c.x - t.c.x, u.c.y - t.c.y) < 0.5 && std::abs(WrapAngle(u.c.yaw - t.c.yaw)) < 0.1;
+      });
+      if (!repeat) tries.push_back(t);
+      if (tries.size() == kLookahead) break;
+    }
+    std::vector<int> group = {b};
+    for (int k : PlacementOrder(layer, state)) {
+      if (std::find(dependents.begin(), dependents.end(), k) != dependents.end()) group.push_back(k);
+    }
+    std::vector<Body> best_bodies;
+    double best_hard = 1e300, best_soft = 1e300;
+    for (const Scored& t : tries) {
+      Put(layer, b, state, t.c);
+      for (size_t g = 1; g < group.size(); ++g) PlaceBody(layer, group[g], state, o, rng, jitter, stats);
+      // The group's cost: its terms, the hub's own preference and how snugly its companions sit.
+      LayerCost cost;
+      double snug = 0.0;
+      for (int g : group) {
+        const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
+        cost.hard += part.hard;
+        cost.soft_linear += part.soft_linear;
+        if (g != b) snug += Closeness(layer, g, state);
+      }
+      const double soft = cost.soft_linear + t.c.pref + snug;
+      if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
+        best_hard = cost.hard;
+        best_soft = soft;
+        best_bodies.clear();
+        for (int g : group) best_bodies.push_back(layer.bodies[g]);
+      }
+      for (size_t g = 1; g < group.size(); ++g) layer.bodies[group[g]].active = false;
+    }
+    for (size_t g = 0; g < group.size() && !best_bodies.empty(); ++g) layer.bodies[group[g]] = best_bodies[g];
+    for (int g : group) placed[g] = 1;
+  }
+}
+
+std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state) {
+  std::vector<int> pending;
+  for (size_t k = 0; k < layer.bodies.size(); ++k) {
+    if (layer.bodies[k].motion != Motion::kFixed) pending.push_back(static_cast<int>(k));
+  }
+  auto rank = [&](int k) {
+    const Body& b = layer.bodies[k];
+    const ProblemObject& o = state.objects[b.object];
+    double r = 0.0;
+    if (b.covering) r -= 1000.0;
+    if (b.motion == Motion::kAlongWall) r += 100.0;
+    r += 10.0 * static_cast<int>(o.priority);
+    r += 4.0 * b.hx * b.hy * b.s[0] * b.s[0];
+    return r;
+  };
+  std::vector<int> order;
+  std::set<int> placed;
+  while (!pending.empty()) {
+    // Ready: every target of the body's own edges inside this layer is placed (or is the body's own child).
+    auto ready = [&](int k) {
+      const std::string& id = state.objects[layer.bodies[k].object].id;
+      for (const SemanticEdge& e : state.edges) {
+        if (e.source != id) continue;
+        const int t = state.Find(e.target);
+        if (t < 0 || layer.body_of[t] < 0 || layer.bodies[layer.body_of[t]].motion == Motion::kFixed) continue;
+        if (!placed.count(layer.body_of[t])) return false;
+      }
+      return true;
+    };
+    int pick = -1;
+    for (int k : pending) {
+      if (ready(k) && (pick < 0 || rank(k) > rank(pick))) pick = k;
+    }
+    if (pick < 0) {  // a cycle of relations: take the highest rank
+      for (int k : pending) {
+        if (pick < 0 || rank(k) > rank(pick)) pick = k;
+      }
+    }
+    order.push_back(pick);
+    placed.insert(pick);
+    std::erase(pending, pick);
+  }
+  return order;
+}
+
+void AssignSupports(RoomState& state) {
+  const size_t n = state.objects.size();
+  // Room left per (parent, surface) in m2 and per (parent, cavity) in m of width.
+  std::vector<std::vector<double>> surface_room(n), cavity_room(n);
+  for (size_t p = 0; p < n; ++p) {
+    const AssetRecord& a = state.objects[p].asset;
+    const double s = state.placements[p].pose.scale;
+    for (const SupportSurface& sf : a.support_surfaces) surface_room[p].push_back(Area(sf.polygon) * s * s);
+    for (const Cavity& c : a.cavities) cavity_room[p].push_back((c.max.x - c.min.x) * s);
+  }
+  auto fits = [](double height, double clear) { return clear <= 0.0 || height <= clear + 1e-9; };
+  for (size_t i = 0; i < n; ++i) {
+    const int p = state.parent[i];
+    if (p < 0) continue;
+    const ProblemObject& o = state.objects[i];
+    ObjectPlacement& pl = state.placements[i];
+    const AssetRecord& pa = state.objects[p].asset;
+    const double sp = state.placements[p].pose.scale;
+    const double h = o.asset.size.z * o.scale_min;
+    if (o.relation == Relation::kOnTop) {
+      if (pl.surface < 0) {
+        int best = -1;
+        for (size_t k = 0; k < pa.support_surfaces.size(); ++k) {
+          if (!fits(h, pa.support_surfaces[k].clear_height * sp)) continue;
+          if (best < 0 || surface_room[p][k] > surface_room[p][best] + 1e-12) best = static_cast<int>(k);
+        }
+        pl.surface = best >= 0 ? best : 0;
+      }
+      surface_room[p][pl.surface] -= o.asset.size.x * o.asset.size.y;
+    } else if (o.relation == Relation::kInside) {
+      if (pl.cavity < 0) {
+        int best = -1;
+        for (size_t k = 0; k < pa.cavities.size(); ++k) {
+          const Cavity& c = pa.cavities[k];
+          if (!fits(h, (c.max.z - c.min.z) * sp)) continue;
+          if (best < 0 || cavity_room[p][k] > cavity_room[p][best] + 1e-12) best = static_cast<int>(k);
+        }
+        pl.cavity = best >= 0 ? best : 0;
+      }
+      cavity_room[p][pl.cavity] -= std::min(o.asset.size.x, o.asset.size.y) + 0.01;
+    }
+  }
+}
+
+}  // namespace villa::solver

@@ -1,0 +1,40 @@
+#pragma once
+// Constructive placement (internal to villa_solver): the discrete choices Ceres cannot make. Each body is
+// put at the best of a set of candidate poses, scored with the layer's own cost terms against the bodies
+// already placed: anchors slide along free wall intervals, related objects go where their relations say
+// (around their target, at the relation's gap, facing it), free objects on a grid or by a wall, hung
+// objects along the walls at eye level or above their target, small objects in rows on their surface or
+// in their cavity. Ceres then polishes what this finds.
+#include <vector>
+
+#include "solver/layer.h"
+#include "solver/rng.h"
+
+namespace villa::solver {
+
+struct PlaceStats {
+  int candidates = 0;  // candidate poses scored
+  int infeasible = 0;  // bodies whose best candidate still breaks a hard term
+};
+
+// Puts body `b` at its best candidate given the active bodies and marks it active. `jitter` (>= 0) adds
+// rng noise of that size to the soft preferences (restarts explore; 0 keeps the first start's order).
+// Returns the hard cost at the chosen pose (0: no proxy violation).
+double PlaceBody(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
+                 PlaceStats* stats);
+
+// Places every movable body of the layer in PlacementOrder. A body that others relate to (a hub: the
+// bed, the sofa, the table) is tried at its few best poses with its dependents placed around each, and the
+// group that holds best is kept.
+void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
+                PlaceStats* stats);
+
+// The order a layer's movable bodies are placed in: a relation's target before its source, then objects
+// against a wall, higher priority and bigger footprints first; floor coverings last.
+std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state);
+
+// Children without a chosen surface or cavity get one: the surface or cavity with the most room left
+// that is tall enough (asset height x scale_min within its clear height), in a deterministic order.
+void AssignSupports(RoomState& state);
+
+}  // namespace villa::solver

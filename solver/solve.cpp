@@ -1,0 +1,797 @@
+#include "solver/solve.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "mesh/geometry2d.h"
+#include "solver/layer.h"
+#include "solver/place.h"
+#include "solver/rng.h"
+#include "solver/state.h"
+#include "layout/geometry.h"
+
+namespace villa::solver {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kFeasible = 1e-10;  // hard cost below this: no proxy violation
+constexpr std::string_view kOutcomeNames[] = {"converged", "budget", "infeasible"};
+
+double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string Fixed(double v, int digits = 4) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
+  return buffer;
+}
+
+// Hard violations the exact check found (each failing object once per test).
+int Violations(const ExactMetrics& m) {
+  return m.colliding + m.floating + m.out_of_bounds + (m.inside_edges - m.contained);
+}
+
+// Which state is better: fewer exact violations, then no proxy overlap or support error, then lower E,
+// then more objects kept.
+bool Better(const ExactMetrics& m, const EnergyTerms& e, const ExactMetrics& best_m, const EnergyTerms& best_e) {
+  const int v = Violations(m), bv = Violations(best_m);
+  if (v != bv) return v < bv;
+  const bool hard = e.collision + e.support > 0.0, best_hard = best_e.collision + best_e.support > 0.0;
+  if (hard != best_hard) return !hard;
+  if (std::abs(e.total - best_e.total) > 1e-9) return e.total < best_e.total;
+  return m.objects > best_m.objects;
+}
+
+double Volume(const ProblemObject& o, double scale) {
+  return o.asset.size.x * o.asset.size.y * std::max(o.asset.size.z, 0.01) * scale * scale * scale;
+}
+
+}  // namespace
+
+std::string_view OutcomeName(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
+
+bool SolveOptions::IsValid(std::string* message) const {
+  auto fail = [&](const std::string& m) {
+    if (message) *message = m;
+    return false;
+  };
+  auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
+  if (restarts < 1 || restarts > 16) return fail("restarts must be in [1, 16], is " + std::to_string(restarts));
+  if (agent_iterations < 0 || agent_iterations > 200) return fail("agent_iterations must be in [0, 200], is " + std::to_string(agent_iterations));
+  if (!in(energy_threshold, 0.0, 1e6)) return fail("energy_threshold must be >= 0");
+  if (!in(object_gap, 0.0, 0.2)) return fail("object_gap must be in [0, 0.2] m");
+  if (!in(child_gap, 0.0, 0.05)) return fail("child_gap must be in [0, 0.05] m");
+  if (!in(bounds_margin, 0.0, 0.1)) return fail("bounds_margin must be in [0, 0.1] m");
+  if (!in(max_yaw_offset, 0.0, std::numbers::pi / 4)) return fail("max_yaw_offset must be in [0, pi/4] rad");
+  if (!in(pair_slack, 0.0, 100.0)) return fail("pair_slack must be in [0, 100] m");
+  if (ceres_max_iterations < 1 || ceres_max_iterations > 1000) return fail("ceres_max_iterations must be in [1, 1000]");
+  if (sparse_from_objects < 1 || sparse_from_objects > 100000) return fail("sparse_from_objects must be in [1, 100000]");
+  for (double w : {weight_collision, weight_bounds, weight_keep_out, weight_containment, weight_zone, weight_semantic}) {
+    if (!in(w, 1e-9, 1000.0)) return fail("every weight must be in (0, 1000]");
+  }
+  return true;
+}
+
+struct RoomSolver::Impl {
+  const RoomProblem& problem;
+  SolveOptions options;
+  ExactCheckOptions check_options;
+  RoomState state;
+  std::unique_ptr<ExactChecker> checker;
+  SolveSummary summary;
+  ExactMetrics metrics;
+  EnergyTerms energy;
+  RoomState best;
+  ExactMetrics best_metrics;
+  EnergyTerms best_energy;
+  bool have_best = false;
+  std::map<std::string, int> tries;   // hard-trouble actions taken per object
+  std::set<std::string> semantic_tried;
+  Clock::time_point start;
+  bool initialised = false;
+
+  Impl(const RoomProblem& p, const SolveOptions& o, const ExactCheckOptions& c) : problem(p), options(o), check_options(c) {}
+
+  // ---- the first solve, layer by layer
+
+  void Account(const PolishStats& stats) {
+    summary.ceres_solves += stats.solves;
+    summary.ceres_iterations += stats.iterations;
+    summary.seconds_ceres += stats.seconds;
+    summary.sparse |= stats.sparse;
+  }
+
+  void PolishInto(Layer& layer) {
+    Account(Polish(layer, state, options));
+    WriteLayer(layer);
+  }
+
+  // Places the layer's movable bodies one by one (constructive start), then polishes them with Ceres.
+  LayerCost Construct(Layer& layer, Rng& rng, double jitter) {
+    const auto t = Clock::now();
+    PlaceStats stats;
+    PlaceLayer(layer, state, options, rng, jitter, &stats);
+    summary.candidates += stats.candidates;
+    summary.seconds_place += Since(t);
+    const PolishStats polish = Polish(layer, state, options);
+    Account(polish);
+    return polish.cost;
+  }
+
+  void WriteLayer(const Layer& layer) {
+    for (size_t b = 0; b < layer.bodies.size(); ++b) {
+      if (layer.bodies[b].motion != Motion::kFixed && layer.bodies[b].active) WriteBack(layer, static_cast<int>(b), state);
+    }
+  }
+
+  void SolveLayers() {
+    AssignSupports(state);
+    std::vector<int> floor, hung;
+    for (size_t i = 0; i < state.objects.size(); ++i) {
+      if (state.parent[i] >= 0) continue;
+      state.placements[i].pose.z = problem.floor_z;
+      (state.Hung(static_cast<int>(i)) ? hung : floor).push_back(static_cast<int>(i));
+    }
+    // Floor layer: restarts while the best start still breaks a hard term.
+    std::optional<Layer> best_layer;
+    LayerCost best_cost{1e300, 1e300};
+    for (int r = 0; r < options.restarts; ++r) {
+      Layer layer = RoomLayer(state, floor, {});
+      Rng rng(options.seed * kSplitMix64Gamma + static_cast<uint64_t>(r) + 1);
+      const LayerCost cost = Construct(layer, rng, r == 0 ? 0.0 : 0.3);
+      const bool better = cost.hard < best_cost.hard - kFeasible ||
+                          (std::abs(cost.hard - best_cost.hard) <= kFeasible && cost.soft < best_cost.soft);
+      if (better) {
+        best_cost = cost;
+        best_layer = std::move(layer);
+      }
+      if (best_cost.hard <= kFeasible) break;
+    }
+    if (best_layer) WriteLayer(*best_layer);
+    // Walls and ceiling, the floor fixed.
+    if (!hung.empty()) {
+      Layer layer = RoomLayer(state, hung, floor);
+      Rng rng(options.seed ^ 0xC0FFEEull);
+      Construct(layer, rng, 0.0);
+      WriteLayer(layer);
+    }
+    // Surfaces and cavities, parents before children.
+    std::vector<int> parents;
+    for (size_t i = 0; i < state.objects.size(); ++i) {
+      if (state.parent[i] < 0 && !state.children[i].empty()) parents.push_back(static_cast<int>(i));
+    }
+    for (size_t k = 0; k < parents.size(); ++k) {
+      const int p = parents[k];
+      std::map<std::pair<int, int>, std::vector<int>> groups;  // (kind, index) -> children
+      for (int c : state.children[p]) {
+        const bool inside = state.objects[c].relation == Relation::kInside;
+        groups[{inside ? 1 : 0, inside ? state.placements[c].cavity : state.placements[c].surface}].push_back(c);
+        if (!state.children[c].empty()) parents.push_back(c);
+      }
+      for (const auto& [key, members] : groups) {
+        Layer layer = ChildLayer(state, p, key.first ? Layer::Kind::kCavity : Layer::Kind::kSurface, key.second, members);
+        for (Body& b : layer.bodies) {
+          if (b.motion != Motion::kFixed) b.active = false;
+        }
+        Rng rng(options.seed ^ (0xB00Cull + static_cast<uint64_t>(p) * 131 + key.second));
+        Construct(layer, rng, 0.0);
+        WriteLayer(layer);
+      }
+    }
+  }
+
+  // Places a surface's or cavity's children again from scratch (after a removal freed room there); the
+  // new arrangement replaces the old only when it breaks fewer hard terms.
+  void Resettle(int parent, bool inside, int group) {
+    std::vector<int> members;
+    for (int c : state.children[parent]) {
+      const bool c_inside = state.objects[c].relation == Relation::kInside;
+      if (c_inside == inside && (inside ? state.placements[c].cavity : state.placements[c].surface) == group) members.push_back(c);
+    }
+    if (members.empty()) return;
+    const Layer::Kind kind = inside ? Layer::Kind::kCavity : Layer::Kind::kSurface;
+    Layer current = ChildLayer(state, parent, kind, group, members);
+    const LayerCost before = Evaluate(MakeTerms(current, state, options, -1, -1.0));
+    Layer fresh = ChildLayer(state, parent, kind, group, members);
+    for (Body& b : fresh.bodies) {
+      if (b.motion != Motion::kFixed) b.active = false;
+    }
+    Rng rng(options.seed ^ (0xB00Cull + static_cast<uint64_t>(parent) * 131 + group));
+    const LayerCost after = Construct(fresh, rng, 0.0);
+    if (after.hard < before.hard - kFeasible || (after.hard <= kFeasible && before.hard <= kFeasible && after.soft_linear < before.soft_linear)) {
+      WriteLayer(fresh);
+    }
+  }
+
+  // ---- checks and the best state
+
+  void Check() {
+    const auto t = Clock::now();
+    metrics = checker->Check(state, false);
+    summary.seconds_exact += Since(t);
+    energy = StateEnergy(state);
+    summary.energy_trace.push_back(energy.total);
+    std::string line = "check " + std::to_string(summary.log.size()) + ": E " + Fixed(energy.total) + ", " +
+                       std::to_string(metrics.objects) + " objects";
+    for (const CollisionPair& pair : metrics.pairs) line += "; collision " + pair.a + " x " + pair.b;
+    for (const ObjectCheck& c : metrics.per_object) {
+      if (c.floating) line += "; floating " + c.id;
+      if (c.out_of_bounds) line += "; out of bounds " + c.id + " (" + Fixed(100.0 * c.in_bound_share, 1) + " % in)";
+      if (c.inside_edge && !c.contained) line += "; not contained " + c.id;
+    }
+    for (const auto& [a, b] : energy.overlaps) line += "; boxes overlap " + a + " x " + b;
+    summary.log.push_back(line);
+    if (!have_best || Better(metrics, energy, best_metrics, best_energy)) {
+      best = state;
+      best_metrics = metrics;
+      best_energy = energy;
+      have_best = true;
+    }
+  }
+
+  bool Converged(const ExactMetrics& m, const EnergyTerms& e) const {
+    return m.Clean() && e.collision == 0.0 && e.support == 0.0 && e.total <= options.energy_threshold;
+  }
+
+  // ---- one object in its own layer, everything else fixed
+
+  Layer LayerFor(int i) const {
+    const int p = state.parent[i];
+    if (p < 0) {
+      std::vector<int> others;
+      for (size_t k = 0; k < state.objects.size(); ++k) {
+        if (static_cast<int>(k) != i && state.parent[k] < 0 && state.placements[k].placed) others.push_back(static_cast<int>(k));
+      }
+      return RoomLayer(state, {i}, others);
+    }
+    const bool inside = state.objects[i].relation == Relation::kInside;
+    return ChildLayer(state, p, inside ? Layer::Kind::kCavity : Layer::Kind::kSurface,
+                      inside ? state.placements[i].cavity : state.placements[i].surface, {i});
+  }
+
+  // A child taller than the room above its surface (the shelf above) cannot stand there.
+  bool TooTall(const Layer& layer, int i) const {
+    return layer.kind == Layer::Kind::kSurface &&
+           state.objects[i].asset.size.z * state.placements[i].pose.scale > layer.clear_height + 1e-9;
+  }
+
+  LayerCost CostAt(int i) {
+    Layer layer = LayerFor(i);
+    LayerCost cost = Evaluate(MakeTerms(layer, state, options, 0, -1.0));
+    if (TooTall(layer, i)) cost.hard += 1.0;
+    return cost;
+  }
+
+  struct Slot {
+    Pose pose;
+    int surface = -1, cavity = -1, wall = -1;
+    LayerCost cost;
+  };
+
+  // The best free pose for object i with everything else where it is: a fresh candidate search in its
+  // layer (for a child, on each surface or cavity it may use), polished. nullopt: none without a hard
+  // violation.
+  std::optional<Slot> FindSlot(int i) {
+    const ObjectPlacement saved = state.placements[i];
+    std::vector<int> groups = {-2};  // -2: its current choice
+    const int p = state.parent[i];
+    const ProblemObject& o = state.objects[i];
+    if (p >= 0 && o.relation == Relation::kOnTop && o.surface < 0) {
+      for (size_t k = 0; k < state.objects[p].asset.support_surfaces.size(); ++k) groups.push_back(static_cast<int>(k));
+    }
+    if (p >= 0 && o.relation == Relation::kInside && o.cavity < 0) {
+      for (size_t k = 0; k < state.objects[p].asset.cavities.size(); ++k) groups.push_back(static_cast<int>(k));
+    }
+    std::optional<Slot> best;
+    for (int g : groups) {
+      state.placements[i] = saved;
+      if (g >= 0) {
+        if (g == (o.relation == Relation::kInside ? saved.cavity : saved.surface)) continue;
+        (o.relation == Relation::kInside ? state.placements[i].cavity : state.placements[i].surface) = g;
+        state.placements[i].pose.z = state.SupportHeight(i);
+      }
+      Layer layer = LayerFor(i);
+      if (TooTall(layer, i)) continue;
+      Rng rng(options.seed ^ (0x5107ull + i));
+      const auto t = Clock::now();
+      PlaceStats stats;
+      PlaceBody(layer, 0, state, options, rng, 0.0, &stats);
+      summary.candidates += stats.candidates;
+      summary.seconds_place += Since(t);
+      const PolishStats polish = Polish(layer, state, options);
+      Account(polish);
+      if (polish.cost.hard > kFeasible) continue;
+      RoomState probe = state;
+      WriteBack(layer, 0, probe);
+      const ObjectPlacement& found = probe.placements[i];
+      const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
+      if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
+    }
+    state.placements[i] = saved;
+    return best;
+  }
+
+  // The pose an object may take near `want`: z from its support, against_wall and on_wall objects put on
+  // a wall (the one asked for, else the nearest) with their back at the gap and facing the room.
+  Pose Snap(int i, Pose want) {
+    const ProblemObject& o = state.objects[i];
+    ObjectPlacement& pl = state.placements[i];
+    const double s = want.scale;
+    if (o.relation == Relation::kAgainstWall || o.relation == Relation::kOnWall) {
+      int w = pl.wall;
+      if (w < 0 || o.wall < 0) {
+        double best = 1e300;
+        for (size_t k = 0; k < problem.walls.size(); ++k) {
+          if (o.wall >= 0 && static_cast<int>(k) != o.wall) continue;
+          const double d = PointSegmentDistance({want.x, want.y}, {problem.walls[k].a, problem.walls[k].b});
+          if (d < best - 1e-12) {
+            best = d;
+            w = static_cast<int>(k);
+          }
+        }
+      }
+      if (w >= 0) {
+        const WallEdge& wall = problem.walls[w];
+        const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
+        const double t = geo::Dot(geo::Sub({want.x, want.y}, wall.a), d);
+        const Point c = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, o.wall_gap + 0.5 * o.asset.size.y * s));
+        want.x = c.x;
+        want.y = c.y;
+        want.yaw = std::atan2(n.x, -n.y);
+        pl.wall = w;
+      }
+    }
+    if (o.relation == Relation::kHanging) {
+      want.z = problem.floor_z + problem.clear_height - o.asset.size.z * s;
+    } else if (o.relation == Relation::kOnWall) {
+      if (std::isnan(want.z)) want.z = pl.pose.z;
+    } else {
+      want.z = state.SupportHeight(i);
+    }
+    want.yaw = WrapAngle(want.yaw);
+    return want;
+  }
+
+  // After an action moved or resized object i: nothing to do when it is free; else polish it where it is,
+  // else find it another free slot. False (and the state untouched by this call) when neither works.
+  bool Repair(int i, std::string* how) {
+    if (CostAt(i).hard <= kFeasible) return true;
+    const Pose before = state.placements[i].pose;
+    Layer layer = LayerFor(i);
+    if (!TooTall(layer, i)) {
+      PolishInto(layer);
+      if (CostAt(i).hard <= kFeasible) {
+        const Pose& after = state.placements[i].pose;
+        *how = "moved " + Fixed(std::hypot(after.x - before.x, after.y - before.y), 3) + " m to the nearest free pose";
+        return true;
+      }
+    }
+    state.SetPose(i, before);
+    if (auto slot = FindSlot(i)) {
+      ObjectPlacement& pl = state.placements[i];
+      pl.surface = slot->surface;
+      pl.cavity = slot->cavity;
+      pl.wall = slot->wall;
+      state.SetPose(i, slot->pose);
+      *how = "moved to another free slot";
+      return true;
+    }
+    return false;
+  }
+
+  // ---- the four actions
+
+  ActionResult Refuse(ActionResult r, const std::string& why) {
+    r.status = ActionStatus::kRefused;
+    r.message = why;
+    return r;
+  }
+
+  ActionResult Apply(const Action& action) {
+    ActionResult r;
+    r.action = action;
+    if (action.kind == ActionKind::kAddEntity) return AddEntity(action, r);
+    const int i = state.Find(action.id);
+    if (i < 0) return Refuse(r, "no object \"" + action.id + "\" in the room");
+    if (action.kind == ActionKind::kRemoveEntity) {
+      const int p = state.parent[i];
+      const std::string parent_id = p >= 0 ? state.objects[p].id : "";
+      const bool inside = state.objects[i].relation == Relation::kInside;
+      const int group = inside ? state.placements[i].cavity : state.placements[i].surface;
+      r.removed = state.Remove(i);
+      summary.removed.insert(summary.removed.end(), r.removed.begin(), r.removed.end());
+      r.status = ActionStatus::kApplied;
+      r.message = "removed " + std::to_string(r.removed.size()) + " object(s)";
+      // The room freed may let the neighbours settle: re-pack the surface or cavity, or polish the room.
+      if (p >= 0) {
+        Resettle(state.Find(parent_id), inside, group);
+      } else {
+        std::vector<int> room_level;
+        for (size_t k = 0; k < state.objects.size(); ++k) {
+          if (state.parent[k] < 0) room_level.push_back(static_cast<int>(k));
+        }
+        Layer layer = RoomLayer(state, room_level, {});
+        PolishInto(layer);
+      }
+      return r;
+    }
+    const RoomState saved = state;
+    const ProblemObject& o = state.objects[i];
+    Pose want = state.placements[i].pose;
+    if (action.kind == ActionKind::kUpdateScale) {
+      if (!action.scale) return Refuse(r, "update_scale needs a scale");
+      if (*action.scale < o.scale_min - 1e-9 || *action.scale > o.scale_max + 1e-9) {
+        return Refuse(r, "scale " + Fixed(*action.scale, 3) + " is outside the object's range [" + Fixed(o.scale_min, 3) +
+                             ", " + Fixed(o.scale_max, 3) + "]");
+      }
+      want.scale = *action.scale;
+    } else {
+      if (!action.pose) return Refuse(r, "update_pose needs a pose");
+      want.x = action.pose->x;
+      want.y = action.pose->y;
+      want.yaw = action.pose->yaw;
+      if (!std::isnan(action.pose->z)) want.z = action.pose->z;
+      ObjectPlacement& pl = state.placements[i];
+      const int p = state.parent[i];
+      if (action.surface) {
+        if (p < 0 || *action.surface < 0 || *action.surface >= static_cast<int>(state.objects[p].asset.support_surfaces.size()))
+          return Refuse(r, "surface " + std::to_string(*action.surface) + " does not exist on the parent");
+        pl.surface = *action.surface;
+      }
+      if (action.cavity) {
+        if (p < 0 || *action.cavity < 0 || *action.cavity >= static_cast<int>(state.objects[p].asset.cavities.size()))
+          return Refuse(r, "cavity " + std::to_string(*action.cavity) + " does not exist on the parent");
+        pl.cavity = *action.cavity;
+      }
+      if (action.wall) {
+        if (*action.wall < 0 || *action.wall >= static_cast<int>(problem.walls.size()))
+          return Refuse(r, "wall " + std::to_string(*action.wall) + " does not exist");
+        pl.wall = *action.wall;
+      }
+    }
+    state.SetPose(i, Snap(i, want));
+    std::string how;
+    if (!Repair(i, &how)) {
+      state = saved;
+      return Refuse(r, "no free pose for \"" + action.id + "\" there or elsewhere: it would collide or leave its support");
+    }
+    r.status = how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
+    r.message = how.empty() ? "done" : how;
+    r.final_pose = state.placements[i].pose;
+    return r;
+  }
+
+  ActionResult AddEntity(const Action& action, ActionResult r) {
+    if (!action.object) return Refuse(r, "add_entity needs an object");
+    RoomProblem probe = problem;
+    probe.objects = state.objects;
+    probe.objects.push_back(*action.object);
+    probe.edges = state.edges;
+    probe.edges.insert(probe.edges.end(), action.edges.begin(), action.edges.end());
+    if (Status s = probe.Check(); !s.ok()) return Refuse(r, s.error());
+    const RoomState saved = state;
+    state.objects.push_back(*action.object);
+    state.placements.push_back({});
+    ObjectPlacement& pl = state.placements.back();
+    pl.surface = action.object->surface;
+    pl.cavity = action.object->cavity;
+    pl.wall = action.object->wall;
+    state.edges = probe.edges;
+    state.Reindex();
+    AssignSupports(state);
+    const int i = static_cast<int>(state.objects.size()) - 1;
+    state.placements[i].pose.z = state.Hung(i) ? problem.floor_z : state.SupportHeight(i);
+    std::string how;
+    bool ok = false;
+    if (action.pose) {
+      Pose want = *action.pose;
+      if (std::isnan(want.z)) want.z = state.placements[i].pose.z;
+      state.SetPose(i, Snap(i, want));
+      state.placements[i].placed = true;
+      ok = Repair(i, &how);
+    } else if (auto slot = FindSlot(i)) {
+      state.placements[i].surface = slot->surface;
+      state.placements[i].cavity = slot->cavity;
+      state.placements[i].wall = slot->wall;
+      state.placements[i].placed = true;
+      state.SetPose(i, slot->pose);
+      ok = true;
+      how = "placed at the best free slot";
+    }
+    if (!ok) {
+      state = saved;
+      return Refuse(r, "no free pose for the new object \"" + action.object->id + "\"");
+    }
+    r.status = action.pose && how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
+    r.message = how.empty() ? "added" : how;
+    r.final_pose = state.placements[i].pose;
+    return r;
+  }
+
+  // ---- the rule agent
+
+  // Objects in hard trouble, the one that should give way first: lowest priority, then smallest.
+  std::vector<int> Culprits() const {
+    std::set<int> set;
+    auto lesser = [&](int a, int b) {
+      const ProblemObject& A = state.objects[a];
+      const ProblemObject& B = state.objects[b];
+      if (A.priority != B.priority) return A.priority < B.priority ? a : b;
+      return Volume(A, state.placements[a].pose.scale) <= Volume(B, state.placements[b].pose.scale) ? a : b;
+    };
+    for (const CollisionPair& pair : metrics.pairs) {
+      const int a = state.Find(pair.a), b = pair.building ? -1 : state.Find(pair.b);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+    }
+    for (const auto& [a_id, b_id] : energy.overlaps) {
+      const int a = state.Find(a_id), b = state.Find(b_id);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+    }
+    for (size_t i = 0; i < state.objects.size(); ++i) {
+      const ObjectCheck& c = metrics.per_object[i];
+      if (c.floating || c.out_of_bounds || (c.inside_edge && !c.contained) || energy.object_support[i] > 0.0) {
+        set.insert(static_cast<int>(i));
+      }
+    }
+    std::vector<int> out(set.begin(), set.end());
+    std::sort(out.begin(), out.end(), [&](int a, int b) {
+      const ProblemObject& A = state.objects[a];
+      const ProblemObject& B = state.objects[b];
+      if (A.priority != B.priority) return A.priority < B.priority;
+      const double va = Volume(A, state.placements[a].pose.scale), vb = Volume(B, state.placements[b].pose.scale);
+      if (va != vb) return va < vb;
+      return a > b;
+    });
+    return out;
+  }
+
+  // Who goes when nothing else helps: the least important of the object and those it conflicts with
+  // (its collision partners, its siblings on the same surface or in the same cavity).
+  int LeastImportant(int i) const {
+    std::vector<int> set = {i};
+    const std::string& id = state.objects[i].id;
+    for (const CollisionPair& pair : metrics.pairs) {
+      if (pair.building) continue;
+      if (pair.a == id) set.push_back(state.Find(pair.b));
+      if (pair.b == id) set.push_back(state.Find(pair.a));
+    }
+    const int p = state.parent[i];
+    if (p >= 0) {
+      for (int c : state.children[p]) {
+        if (state.objects[c].relation == state.objects[i].relation &&
+            state.placements[c].surface == state.placements[i].surface && state.placements[c].cavity == state.placements[i].cavity)
+          set.push_back(c);
+      }
+    }
+    int pick = i;
+    for (int k : set) {
+      if (k < 0) continue;
+      const ProblemObject& K = state.objects[k];
+      const ProblemObject& P = state.objects[pick];
+      if (K.priority < P.priority ||
+          (K.priority == P.priority && Volume(K, state.placements[k].pose.scale) < Volume(P, state.placements[pick].pose.scale) - 1e-12))
+        pick = k;
+    }
+    return pick;
+  }
+
+  std::optional<Action> NextAction() {
+    for (int i : Culprits()) {
+      const std::string& id = state.objects[i].id;
+      int& n = tries[id];
+      const ProblemObject& o = state.objects[i];
+      if (n == 0) {
+        ++n;
+        if (auto slot = FindSlot(i)) {
+          Action a;
+          a.kind = ActionKind::kUpdatePose;
+          a.id = id;
+          a.pose = slot->pose;
+          if (slot->surface >= 0 && slot->surface != state.placements[i].surface) a.surface = slot->surface;
+          if (slot->cavity >= 0 && slot->cavity != state.placements[i].cavity) a.cavity = slot->cavity;
+          if (slot->wall >= 0 && slot->wall != state.placements[i].wall) a.wall = slot->wall;
+          a.reason = "collides, floats or is out of bounds: move to a free slot";
+          return a;
+        }
+      }
+      if (n == 1) {
+        ++n;
+        if (o.scale_min < state.placements[i].pose.scale - 1e-9) {
+          Action a;
+          a.kind = ActionKind::kUpdateScale;
+          a.id = id;
+          a.scale = o.scale_min;
+          a.reason = "no free slot at full size: shrink to the smallest allowed scale";
+          return a;
+        }
+      }
+      if (n == 2) {
+        ++n;
+        const int victim = LeastImportant(i);
+        Action a;
+        a.kind = ActionKind::kRemoveEntity;
+        a.id = state.objects[victim].id;
+        a.reason = victim == i ? "no free slot even at its smallest scale: remove it (least important of its conflict)"
+                               : "no room for both: remove the least important object of the conflict with " + id;
+        return a;
+      }
+    }
+    if (!Culprits().empty()) return std::nullopt;  // hard trouble left and every remedy tried
+    // Physically valid: lower the semantic energy, one try per object, the most involved first. An unmet
+    // relation may be mended from either end (the painting cannot be centred over the bed beside a window,
+    // but the bed can move under the painting).
+    std::vector<double> involved = energy.object_semantic;
+    for (size_t k = 0; k < state.edges.size() && k < energy.edge_violation.size(); ++k) {
+      const int t = state.Find(state.edges[k].target);
+      if (t >= 0) involved[t] += energy.edge_violation[k];
+    }
+    std::vector<int> order;
+    for (size_t i = 0; i < state.objects.size(); ++i) {
+      if (involved[i] > 1e-6 && !semantic_tried.count(state.objects[i].id)) order.push_back(static_cast<int>(i));
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      if (involved[a] != involved[b]) return involved[a] > involved[b];
+      return a < b;
+    });
+    for (int i : order) {
+      semantic_tried.insert(state.objects[i].id);
+      const LayerCost now = CostAt(i);
+      auto slot = FindSlot(i);
+      if (!slot || slot->cost.soft_linear >= now.soft_linear - 1e-9) continue;
+      Action a;
+      a.kind = ActionKind::kUpdatePose;
+      a.id = state.objects[i].id;
+      a.pose = slot->pose;
+      if (slot->wall >= 0 && slot->wall != state.placements[i].wall) a.wall = slot->wall;
+      a.reason = "relations or interaction zones unmet: move to where they hold better";
+      return a;
+    }
+    return std::nullopt;
+  }
+
+  void RunAgent() {
+    bool stuck = false;
+    for (int it = 0; it < options.agent_iterations; ++it) {
+      if (Converged(metrics, energy)) break;
+      std::optional<Action> action = NextAction();
+      if (!action) {
+        stuck = true;
+        break;
+      }
+      summary.actions.push_back(Apply(*action));
+      ++summary.iterations;
+      Check();
+    }
+    // Keep the best state seen (its check again, with the clearance figure this time).
+    state = best;
+    energy = best_energy;
+    const auto t = Clock::now();
+    metrics = checker->Check(state, true);
+    summary.seconds_exact += Since(t);
+    summary.metrics = metrics;
+    summary.energy = energy;
+    if (Converged(metrics, energy)) {
+      summary.outcome = Outcome::kConverged;
+      summary.reason = "E = " + Fixed(energy.total) + " <= " + Fixed(options.energy_threshold, 2) + ", exact check clean";
+      if (!summary.removed.empty()) {
+        summary.reason += ", after removing " + std::to_string(summary.removed.size()) + " object(s) that did not fit";
+      }
+    } else if (metrics.Clean() && energy.collision == 0.0 && energy.support == 0.0) {
+      summary.outcome = Outcome::kBudget;
+      summary.reason = "physically valid, but E = " + Fixed(energy.total) + " (semantic " + Fixed(energy.semantic) +
+                       ") stays above " + Fixed(options.energy_threshold, 2) +
+                       (stuck ? ": no move lowers it further" : ": iterations spent");
+    } else if (stuck) {
+      summary.outcome = Outcome::kInfeasible;
+      summary.reason = std::to_string(Violations(metrics)) + " exact violation(s) left after every remedy (move, shrink, remove)";
+    } else {
+      summary.outcome = Outcome::kBudget;
+      summary.reason = std::to_string(Violations(metrics)) + " exact violation(s) left when the iterations ran out";
+    }
+  }
+};
+
+RoomSolver::RoomSolver(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check)
+    : impl_(new Impl(problem, options, check)) {}
+RoomSolver::~RoomSolver() = default;
+
+Status RoomSolver::Initialise() {
+  Impl& im = *impl_;
+  im.start = Clock::now();
+  std::string message;
+  if (!im.options.IsValid(&message)) return Error{"solver options: " + message};
+  if (!im.check_options.IsValid(&message)) return Error{"exact check options: " + message};
+  if (Status s = im.problem.Check(); !s.ok()) return s;
+  im.state = RoomState::From(im.problem);
+  im.checker = std::make_unique<ExactChecker>(im.problem, im.check_options);
+  im.SolveLayers();
+  im.Check();
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  im.initialised = true;
+  im.summary.seconds = Since(im.start);
+  return Status::Ok();
+}
+
+ActionResult RoomSolver::Apply(const Action& action) {
+  Impl& im = *impl_;
+  if (!im.initialised) {
+    ActionResult r;
+    r.action = action;
+    return im.Refuse(r, "the solver is not initialised");
+  }
+  ActionResult r = im.Apply(action);
+  im.summary.actions.push_back(r);
+  im.Check();
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  return r;
+}
+
+void RoomSolver::RunAgent() {
+  Impl& im = *impl_;
+  if (!im.initialised) return;
+  im.RunAgent();
+  im.summary.seconds = Since(im.start);
+}
+
+RoomSolution RoomSolver::Solution() const {
+  RoomSolution s;
+  s.objects = impl_->state.objects;
+  s.placements = impl_->state.placements;
+  s.summary = impl_->summary;
+  return s;
+}
+
+Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check) {
+  RoomSolver solver(problem, options, check);
+  if (Status s = solver.Initialise(); !s.ok()) return Error{s.error()};
+  solver.RunAgent();
+  return solver.Solution();
+}
+
+std::string SolveSummary::BriefReport() const {
+  std::string out;
+  out += "outcome: " + std::string(OutcomeName(outcome)) + " (" + reason + ")\n";
+  out += "objects: " + std::to_string(metrics.objects);
+  if (!removed.empty()) {
+    out += ", removed " + std::to_string(removed.size()) + ":";
+    for (const std::string& id : removed) out += " " + id;
+  }
+  out += "\n";
+  out += "exact: CR " + Fixed(metrics.cr, 3) + "  FR " + Fixed(metrics.fr, 3) + "  OBR " + Fixed(metrics.obr, 3) + "  CSR " +
+         Fixed(metrics.csr, 3) + " (" + std::to_string(metrics.contained) + "/" + std::to_string(metrics.inside_edges) + ")\n";
+  out += "energy: E " + Fixed(energy.total) + " = 5 x " + Fixed(energy.collision, 6) + " + 2 x " + Fixed(energy.support) +
+         " + " + Fixed(energy.semantic) + "\n";
+  int applied = 0, repaired = 0, refused = 0;
+  for (const ActionResult& a : actions) {
+    applied += a.status == ActionStatus::kApplied;
+    repaired += a.status == ActionStatus::kRepaired;
+    refused += a.status == ActionStatus::kRefused;
+  }
+  out += "agent: " + std::to_string(iterations) + " iteration(s), " + std::to_string(actions.size()) + " action(s) (" +
+         std::to_string(applied) + " applied, " + std::to_string(repaired) + " repaired, " + std::to_string(refused) +
+         " refused)\n";
+  out += "time: " + Fixed(seconds, 3) + " s (placement " + Fixed(seconds_place, 3) + ", ceres " + Fixed(seconds_ceres, 3) +
+         " in " + std::to_string(ceres_solves) + " solves / " + std::to_string(ceres_iterations) + " iterations" +
+         (sparse ? " sparse" : " dense") + ", exact " + Fixed(seconds_exact, 3) + ")\n";
+  return out;
+}
+
+nlohmann::ordered_json SolveSummary::SolveRecord() const {
+  nlohmann::ordered_json j;
+  j["outcome"] = std::string(OutcomeName(outcome));
+  j["reason"] = reason;
+  j["iterations"] = iterations;
+  j["energy"] = std::round(energy.total * 1e4) / 1e4;
+  j["removed"] = removed;
+  j["actions"] = nlohmann::ordered_json::array();
+  for (const ActionResult& a : actions) j["actions"].push_back(ActionResultToJson(a));
+  return j;
+}
+
+}  // namespace villa::solver

@@ -1,0 +1,93 @@
+#pragma once
+// The pose solver of a room (paper Sec. 3.4): discrete choices and a constructive start outside Ceres,
+// a Ceres polish per layer, the exact check (FCL) after every solve, and a rule agent that applies the
+// paper's four actions until the energy is below its threshold or the budget is spent.
+//
+//   Result<RoomSolution> s = SolveRoom(problem, options);
+//   std::cout << s->summary.BriefReport();
+//
+// Layers, in order: the floor (objects on the floor or against a wall), the walls and the ceiling (hung
+// objects, the floor fixed), then every support surface and cavity in its parent's frame. Deterministic for
+// a seed: the same problem and options give the same poses, bit for bit, on one build.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "solver/actions.h"
+#include "solver/energy.h"
+#include "solver/exact_check.h"
+#include "solver/options.h"
+#include "solver/placement.h"
+#include "solver/problem.h"
+#include "util/result.h"
+
+namespace villa::solver {
+
+// SCENE.md "Failure outcomes": converged (E <= threshold, E_col = E_sup = 0, the exact check clean),
+// budget (iterations spent, or no action lowers E further while the hard constraints hold), infeasible
+// (the hard constraints could not be met with the actions the agent may take).
+enum class Outcome { kConverged, kBudget, kInfeasible };
+std::string_view OutcomeName(Outcome outcome);  // "converged", "budget", "infeasible"
+
+struct SolveSummary {
+  Outcome outcome = Outcome::kInfeasible;
+  std::string reason;                 // one line: why the room ended so
+  int iterations = 0;                 // rule-agent iterations run
+  EnergyTerms energy;                 // of the kept (best) state
+  ExactMetrics metrics;               // of the kept state: CR, FR, OBR, CSR, NO
+  std::vector<std::string> removed;   // ids removed by actions
+  std::vector<ActionResult> actions;  // every action tried, in order
+  std::vector<double> energy_trace;   // E after the first solve and after each agent iteration
+  // One line per check: E, the exact violations and who was involved ("check 2: E 0.31, collisions
+  // r/a x r/b; floating r/cup-0"), so a room that ends badly says what stood in the way.
+  std::vector<std::string> log;
+
+  int ceres_solves = 0;
+  int ceres_iterations = 0;
+  bool sparse = false;                // the largest solve used sparse normal Cholesky
+  int candidates = 0;                 // candidate poses scored by the constructive search
+  double seconds = 0.0;               // wall time of the whole solve
+  double seconds_place = 0.0;         // constructive placement
+  double seconds_ceres = 0.0;         // Ceres polishes
+  double seconds_exact = 0.0;         // exact checks
+
+  std::string BriefReport() const;    // a few lines for people
+  // SCENE.md rooms[r].solve: {"outcome", "iterations", "energy", "removed", "actions"}.
+  nlohmann::ordered_json SolveRecord() const;
+};
+
+struct RoomSolution {
+  std::vector<ProblemObject> objects;       // the room's objects at the end (actions add and remove)
+  std::vector<ObjectPlacement> placements;  // parallel to objects
+  SolveSummary summary;
+};
+
+// Solves a room. An invalid problem or options is an error (the message names the field); a room that
+// cannot reach the targets is an outcome in the summary, with its best state.
+Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& options,
+                               const ExactCheckOptions& check = {});
+
+// The same solver as a session a critic can drive: Initialise() places everything, Apply() takes one
+// action through the path the rule agent uses (repaired or refused when it would break a hard
+// constraint), RunAgent() lets the rule agent finish. The problem must outlive the solver.
+class RoomSolver {
+ public:
+  RoomSolver(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check = {});
+  ~RoomSolver();
+  RoomSolver(const RoomSolver&) = delete;
+  RoomSolver& operator=(const RoomSolver&) = delete;
+
+  // Checks the problem and options; then places every layer and runs the first exact check.
+  Status Initialise();
+  ActionResult Apply(const Action& action);
+  void RunAgent();
+  RoomSolution Solution() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace villa::solver
