@@ -61,8 +61,9 @@ class SplitMix64 {
 // 64-bit FNV-1a of `text`. `hash` continues an earlier hash, so a stream can be hashed piece by piece:
 // Fnv1a64(b, Fnv1a64(a)) == Fnv1a64(a + b).
 inline constexpr std::uint64_t kFnv1a64Offset = 0xcbf29ce484222325ULL;
+inline constexpr std::uint64_t kFnv1a64Prime = 0x100000001b3ULL;
 constexpr std::uint64_t Fnv1a64(std::string_view text, std::uint64_t hash = kFnv1a64Offset) {
-  for (char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  for (char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * kFnv1a64Prime;
   return hash;
 }
 

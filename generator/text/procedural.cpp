@@ -288,7 +288,7 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     PartitionOptions po = PartitionOptionsForBrief(brief, f, only_required);
     // Every other round of variants places the whole-building counts ourselves.
     if ((a / (2 * static_cast<int>(floors.size()))) % 2 == 0) DistributeRooms(po, SplitMix64Hash(options.seed ^ (0xD15Full + a)));
-    const std::uint64_t seed = SplitMix64Hash(options.seed * 0x100000001B3ull + static_cast<std::uint64_t>(a));
+    const std::uint64_t seed = SplitMix64Hash(options.seed * kFnv1a64Prime + static_cast<std::uint64_t>(a));
     PartitionSummary ps = GenerateLayout(po, seed);
     ++attempts;
     if (!ps.ok()) {
