@@ -40,27 +40,6 @@ std::vector<char32_t> DecodeUtf8(std::string_view text) {
   return out;
 }
 
-std::string EncodeUtf8(char32_t cp) {
-  std::string u;
-  if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) cp = kReplacement;
-  if (cp < 0x80) {
-    u += static_cast<char>(cp);
-  } else if (cp < 0x800) {
-    u += static_cast<char>(0xC0 | (cp >> 6));
-    u += static_cast<char>(0x80 | (cp & 0x3F));
-  } else if (cp < 0x10000) {
-    u += static_cast<char>(0xE0 | (cp >> 12));
-    u += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-    u += static_cast<char>(0x80 | (cp & 0x3F));
-  } else {
-    u += static_cast<char>(0xF0 | (cp >> 18));
-    u += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-    u += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-    u += static_cast<char>(0x80 | (cp & 0x3F));
-  }
-  return u;
-}
-
 std::string EncodeUtf8(const std::vector<char32_t>& code_points) {
   std::string out;
   for (char32_t cp : code_points) out += EncodeUtf8(cp);

@@ -7,11 +7,13 @@
 #include <string_view>
 #include <vector>
 
+#include "util/utf8.h"
+
 namespace villa::annotator {
 
 // The code points of `text`; a byte that starts no valid sequence becomes U+FFFD.
 std::vector<char32_t> DecodeUtf8(std::string_view text);
-std::string EncodeUtf8(char32_t code_point);
+using villa::EncodeUtf8;  // one code point (util/utf8.h)
 std::string EncodeUtf8(const std::vector<char32_t>& code_points);
 
 // Each code point of `text` as its own UTF-8 string (the cells of a plan row, a label's glyphs).

@@ -24,6 +24,23 @@ std::string Describe(const std::filesystem::path& path, const char* what) {
   return path.string() + ": " + what + ": " + std::strerror(errno);
 }
 
+// Empty when `path` is missing or a regular file; otherwise why it may not be replaced. Renaming a temporary
+// onto /dev/null, a folder's name or a symbolic link would swap a device or a link for a plain file (a
+// helper once replaced /dev/null that way), so anything but a regular file is left alone.
+std::string NotReplaceable(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(path, ec);
+  if (ec || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status)) return {};
+  const char* kind = std::filesystem::is_directory(status)      ? "a folder"
+                     : std::filesystem::is_symlink(status)      ? "a symbolic link"
+                     : std::filesystem::is_character_file(status) ? "a character device"
+                     : std::filesystem::is_block_file(status)   ? "a block device"
+                     : std::filesystem::is_fifo(status)         ? "a named pipe"
+                     : std::filesystem::is_socket(status)       ? "a socket"
+                                                                : "not a regular file";
+  return path.string() + ": is " + kind + ", not a regular file: refusing to replace it";
+}
+
 }  // namespace
 
 Status WriteFileAtomic(const std::filesystem::path& path, std::string_view content) {
@@ -43,6 +60,10 @@ Result<std::string> ReadFile(const std::filesystem::path& path) {
 }
 
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
+  if (std::string refused = NotReplaceable(path_); !refused.empty()) {
+    error_ = std::move(refused);
+    return;
+  }
   temp_ = TempPathFor(path_.has_parent_path() ? path_ : std::filesystem::path(".") / path_);
   file_ = std::fopen(temp_.c_str(), "wb");
   if (!file_) error_ = Describe(temp_, "cannot create");
@@ -68,6 +89,7 @@ Status AtomicFileWriter::Commit() {
   if (!flushed && error_.empty()) error_ = Describe(temp_, "cannot flush");
   std::fclose(file_);
   file_ = nullptr;
+  if (error_.empty()) error_ = NotReplaceable(path_);  // it may have appeared since the temporary was made
   if (error_.empty() && std::rename(temp_.c_str(), path_.c_str()) != 0) error_ = Describe(path_, "cannot rename into place");
   if (!error_.empty()) {
     std::error_code ignored;

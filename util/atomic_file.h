@@ -9,7 +9,9 @@
 
 namespace villa {
 
-// Writes `content` to `path` atomically (temporary file in the same folder, fsync, rename).
+// Writes `content` to `path` atomically (temporary file in the same folder, fsync, rename). Only a missing
+// path or a regular file is replaced: a folder, a device (/dev/null), a pipe or a symbolic link at `path` is
+// an error naming it, and nothing is written.
 Status WriteFileAtomic(const std::filesystem::path& path, std::string_view content);
 
 // Reads a whole file; the error names the file.
