@@ -67,13 +67,17 @@ void Run(const ValidateCommand& command) {
   const std::vector<int>& layouts_by_rule = summary.layouts_by_rule;
   const std::vector<int>& violations_by_rule = summary.violations_by_rule;
 
+  for (const auto& file : summary.empty_files) std::cerr << "villa validate: no layouts in " << file << "\n";
   if (command.json) {
     std::cout << ValidateFilesReportJson(summary).dump(2) << "\n";
   } else {
+    bool printed = false;
     if (!command.quiet)
-      for (const auto& c : checked)
-        if (!c.valid()) std::cout << ViolationLine(c) << "\n";
-    if (!command.quiet && valid < count) std::cout << "\n";
+      for (const auto& c : checked) {
+        if (!c.valid()) std::cout << ViolationLine(c) << "\n", printed = true;
+        for (const auto& note : c.report.notes) std::cout << Label(c) << ": note: " << note << "\n", printed = true;
+      }
+    if (printed) std::cout << "\n";
     std::cout << count << (count == 1 ? " layout: " : " layouts: ") << valid << " valid, " << count - valid
               << " invalid (" << unparsable << " unparsable)\n";
     const MetricsSummary& metrics = summary.metrics;
@@ -88,7 +92,7 @@ void Run(const ValidateCommand& command) {
       std::cout << "\n" << table.Render();
     }
   }
-  SetExitCode(valid == count ? kExitOk : kExitFailure);
+  SetExitCode(summary.all_valid() ? kExitOk : kExitFailure);
 }
 
 Registration registration{20, [](CLI::App& app) {
@@ -100,7 +104,9 @@ Registration registration{20, [](CLI::App& app) {
       "{\"layout\": ...} (an object or its text) with an optional \"id\", or a fine-tuning sample whose answer is\n"
       "the layout (messages, ShareGPT conversations, Alpaca output). Prints a line per invalid layout, then\n"
       "a summary.\n"
-      "Exit status: 0 all valid, 1 some layout invalid or unparsable, 2 usage (no file, missing file).");
+      "A number with more than two decimals is read as written and noted (not a violation).\n"
+      "Exit status: 0 all valid, 1 some layout invalid or unparsable or a stream without layouts, 2 usage\n"
+      "(no file, missing file).");
   sub->add_option("files", command->files, "layout files (.json) or JSONL streams (.jsonl)")->required();
   sub->add_flag("--json", command->json,
                 "print a machine-readable report on stdout instead: per layout its source, id, validity, "

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
+
+#include "layout/shape_codec.h"
 
 namespace villa {
 namespace {
@@ -126,6 +129,18 @@ bool SegmentsMeet(const Point& a, const Point& b, const Point& c, const Point& d
          (o4 == 0 && OnSegment(b, c, d));
 }
 
+// The first pair of edges (i, j), i < j, that are not neighbours and still share a point; none for a ring
+// whose edges meet only at their shared corners.
+std::optional<std::pair<std::size_t, std::size_t>> FirstMeetingEdges(const Ring& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing corner
+      if (SegmentsMeet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return std::pair{i, j};
+    }
+  return std::nullopt;
+}
+
 // Edges meet only at the corners they share, and no corner folds back on itself.
 bool IsSimpleRing(const Ring& ring) {
   const std::size_t n = ring.size();
@@ -138,12 +153,33 @@ bool IsSimpleRing(const Ring& ring) {
     double cross = Cross(b.x - a.x, b.y - a.y, c.x - b.x, c.y - b.y);
     if (cross == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0) return false;  // a spike
   }
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through the closing corner
-      if (SegmentsMeet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
-    }
+  return !FirstMeetingEdges(ring);
+}
+
+// Every corner on one line (or on one point): a ring without width.
+bool AllCollinear(const Ring& ring) {
+  const Point& o = ring[0];
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < ring.size(); ++i)
+    if (Distance(o, ring[i]) > Distance(o, ring[far])) far = i;
+  if (far == 0) return true;
+  const Point& f = ring[far];
+  for (const Point& p : ring)
+    if (Cross(f.x - o.x, f.y - o.y, p.x - o.x, p.y - o.y) != 0) return false;
   return true;
+}
+
+// A point the closed segments ab and cd share (they meet): where the lines cross, or for touching and
+// overlapping segments an end point that lies on the other one.
+Point MeetingPoint(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double den = Cross(b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+  if (den != 0) {
+    const double t = Cross(c.x - a.x, c.y - a.y, d.x - c.x, d.y - c.y) / den;
+    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  }
+  for (const Point& p : {c, d})
+    if (OnSegment(p, a, b)) return p;
+  return OnSegment(a, c, d) ? a : b;
 }
 
 }  // namespace
@@ -467,6 +503,15 @@ std::string RingProblem(const Ring& ring) {
   // edges meet only at their shared corners. Anything else goes to Boost.Geometry for the verdict and why.
   if (IsConvex(ring)) return Area(ring) > 0 ? "" : "has zero area";
   if (IsSimpleRing(ring) && Area(ring) > 0) return "";
+  // The two faults a person can fix from the message: no width at all, and edges crossing (where).
+  if (AllCollinear(ring)) return "zero width (every corner on one line)";
+  bool repeated = false;  // a corner given twice in a row: Boost.Geometry judges those
+  for (std::size_t k = 0; k < ring.size(); ++k) repeated = repeated || ring[k] == ring[(k + 1) % ring.size()];
+  if (auto edges = repeated ? std::nullopt : FirstMeetingEdges(ring)) {
+    const std::size_t n = ring.size(), i = edges->first, j = edges->second;
+    const Point at = MeetingPoint(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n]);
+    return "self-intersecting at (" + FormatNumber(at.x) + ", " + FormatNumber(at.y) + ")";
+  }
   BgPolygon polygon = ToBoost(ring);
   std::string message;
   if (!bg::is_valid(polygon, message)) return message;

@@ -1,8 +1,10 @@
 #include "layout/layout.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace villa {
 namespace {
@@ -35,6 +37,21 @@ const CategoryEntry& EntryOf(Category category) {
   for (const auto& entry : kCategories)
     if (entry.category == category) return entry;
   return kCategories[0];
+}
+
+// %g: the value as a person wrote it for ordinary sizes, with an exponent for absurd ones (1e+12, 1e-320).
+std::string Shortest(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+std::string PointExtentProblem(const Point& p) {
+  for (const auto& [axis, value] : {std::pair{"x", p.x}, std::pair{"y", p.y}})
+    if (!(std::abs(value) <= kMaxCoordinate))
+      return std::string(axis) + " = " + Shortest(value) + " is outside the building extent (|x| and |y| at most " +
+             Shortest(kMaxCoordinate) + " m)";
+  return {};
 }
 
 std::optional<int> ParseNonNegative(std::string_view text) {
@@ -132,6 +149,36 @@ int Layout::FindRoom(std::string_view name) const {
     if (r.category == parsed->category && r.level == parsed->level && r.index == parsed->index) return i;
   }
   return -1;
+}
+
+std::string RoomExtentProblem(const Ring& ring) {
+  if (ring.empty()) return {};
+  for (const Point& p : ring)
+    if (std::string problem = PointExtentProblem(p); !problem.empty()) return problem;
+  double min_x = ring[0].x, max_x = ring[0].x, min_y = ring[0].y, max_y = ring[0].y;
+  for (const Point& p : ring) {
+    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+  }
+  struct Side {
+    const char* axis;
+    const char* adjective;  // "wide"
+    const char* noun;       // "width"
+    double from, to;
+  };
+  for (const Side& side : {Side{"x", "wide", "width", min_x, max_x}, Side{"y", "deep", "depth", min_y, max_y}}) {
+    const double size = side.to - side.from;
+    if (size >= kMinRoomSize) continue;
+    if (size == 0) return std::string("zero ") + side.noun + " (every corner at " + side.axis + " = " + Shortest(side.from) + ")";
+    return Shortest(size) + " m " + side.adjective + " (" + side.axis + " from " + Shortest(side.from) + " to " +
+           Shortest(side.to) + "); a room is at least " + Shortest(kMinRoomSize) + " m wide and deep";
+  }
+  return {};
+}
+
+std::string SegmentExtentProblem(const Segment& segment) {
+  if (std::string problem = PointExtentProblem(segment.a); !problem.empty()) return problem;
+  return PointExtentProblem(segment.b);
 }
 
 double SignedArea(const Ring& ring) {

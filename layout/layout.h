@@ -14,15 +14,27 @@ inline constexpr double kLevelHeight = 2.8;    // m between floors
 // The tolerance policy (docs/RULES.md, "Tolerances"). Every plan-geometry question is answered with one
 // of these two, so the validator, the renderer, the annotator, the building and the furnishing agree:
 //  - kTolerance: two lengths or distances within it are equal, an area (m2) within it is zero, a point
-//    within it of a line lies on the line. Every rule of FORMAT.md.
+//    within it of a line lies on the line. Room geometry: every rule of FORMAT.md about rooms, shared
+//    boundaries, footprints.
 //  - kOnWallTolerance: how far a 1D element (door, open, window, entrance, interior wall) may be from a
-//    room's boundary and still lie on it: rule 3, which rooms hold an element (RoomsAlongSegment,
-//    RoomsHolding), which elements the floor plan draws red, which windows the annotator counts. Equal to
-//    kTolerance today; widen it here (and only here) to accept numbers written with two decimals.
+//    room's boundary and still lie on it, and how short a stretch of a wall it may leave uncovered: rule 3,
+//    rule 4's cover, which rooms hold an element (RoomsAlongSegment, RoomsHolding), which elements the
+//    floor plan draws red, which windows the annotator counts, which doors the furnishing sees on a room's
+//    edge. The format writes numbers with two decimals, so a point on a wall at an arbitrary angle is
+//    written up to 0.005 m off in x and y (0.0071 m off the wall): 0.01 m accepts every such point and
+//    nothing a person would call "off the wall".
 // Consumers that turn a plan into something else keep their own, documented snaps on top (the building
 // merges points within 1e-4 m; the layout text writes coordinates with two decimals).
 inline constexpr double kTolerance = 1e-6;        // m
-inline constexpr double kOnWallTolerance = kTolerance;  // m
+inline constexpr double kOnWallTolerance = 0.01;  // m
+
+// The building extent (docs/RULES.md, "Extent"): what the reader accepts before any geometry work, so a
+// hostile file cannot make a picture of 1e12 m or a grid of 1e-320 m cells. Far beyond any real villa.
+inline constexpr double kMaxCoordinate = 10000.0;  // m, |x| and |y| of every point
+inline constexpr double kMinRoomSize = 0.01;       // m, a room's bounding box is at least this wide and deep
+inline constexpr int kMaxRooms = 1000;             // rooms in one layout (a valid one has at most 18)
+inline constexpr int kMaxElements = 100000;        // 1D elements of all kinds together in one layout
+inline constexpr int kMaxRingCorners = 1000;       // corners of one room polygon
 inline constexpr double kStairRoomSize = 4.0;  // m, the utility room holding the staircase is 4 x 4
 inline constexpr int kMaxFloors = 3;
 inline constexpr int kMaxRoomsPerFloor = 6;
@@ -127,6 +139,15 @@ struct Layout {
 
 inline constexpr ElementKind kAllElementKinds[] = {ElementKind::kEntrance, ElementKind::kDoor, ElementKind::kOpen,
                                                    ElementKind::kWindow, ElementKind::kInterior};
+
+// Empty when every corner of `ring` lies within the building extent and its bounding box is at least
+// kMinRoomSize wide and deep; otherwise what is wrong, with the value: "x = 1e+12 is outside the building
+// extent (|x| and |y| at most 10000 m)", "zero width (every corner at x = 3)", "0.004 m deep (y from 2 to
+// 2.004); a room is at least 0.01 m wide and deep". The reader refuses such a room; the validator reports
+// it under rule 1 for layouts made in code.
+std::string RoomExtentProblem(const Ring& ring);
+// The same for a 1D element's two points (the extent only: a short element is rule 1's "zero length").
+std::string SegmentExtentProblem(const Segment& segment);
 
 // Plain polygon measures used everywhere (shoelace; positive for counter-clockwise).
 double SignedArea(const Ring& ring);

@@ -5,21 +5,21 @@
 
 #include "layout/shape_codec.h"
 #include "util/atomic_file.h"
+#include "util/excerpt.h"
+#include "util/json_read.h"
 
 namespace villa {
 namespace {
 
 constexpr const char* kTopKeys[] = {"rooms", "entrance", "doors", "opens", "windows", "interiors"};
 
-std::string Quote(std::string_view key) { return "[\"" + std::string(key) + "\"]"; }
+// A member of a named group in an error's JSON path: ["kitchen_0/0"], the name cut to an excerpt.
+std::string Quote(std::string_view key) { return "[\"" + Excerpt(key) + "\"]"; }
 
 std::string Prefix(std::string_view source) { return source.empty() ? std::string() : std::string(source) + ": "; }
 
-std::string Shown(const Json& value) {
-  std::string text = value.dump();
-  if (text.size() > 80) text = text.substr(0, 77) + "...";
-  return text;
-}
+// A JSON value as the file has it, cut to an excerpt (bytes that are not UTF-8 shown as U+FFFD).
+std::string Shown(const Json& value) { return Excerpt(value.dump(-1, ' ', false, Json::error_handler_t::replace)); }
 
 // Reads the element's "level": an integer >= 0, or absent (= every level).
 Result<int> ReadLevel(const Json& element, const std::string& path) {
@@ -33,11 +33,13 @@ Result<int> ReadLevel(const Json& element, const std::string& path) {
   return Error{path + ".level: expected an integer >= 0, got " + Shown(*it)};
 }
 
+// docs/RULES.md, "Reading": a missing "is_panoramic" is 0; a number equal to 0 or 1 (1.0 too, as "level"
+// reads 1.0 as 1) or a JSON boolean is read; anything else is an error naming the value.
 Result<bool> ReadPanoramic(const Json& element, const std::string& path) {
   auto it = element.find("is_panoramic");
   if (it == element.end()) return false;
   if (it->is_boolean()) return it->get<bool>();
-  if (it->is_number_integer() && (it->get<long long>() == 0 || it->get<long long>() == 1)) return it->get<long long>() == 1;
+  if (it->is_number() && (it->get<double>() == 0.0 || it->get<double>() == 1.0)) return it->get<double>() == 1.0;
   return Error{path + ".is_panoramic: expected 0 or 1, got " + Shown(*it)};
 }
 
@@ -48,7 +50,7 @@ Status CheckKeys(const Json& object, const std::string& path, std::initializer_l
     if (!ok) {
       std::string list;
       for (auto key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
-      return Error{path + ": unknown key \"" + it.key() + "\" (expected " + list + ")"};
+      return Error{path + ": unknown key \"" + Excerpt(it.key()) + "\" (expected " + list + ")"};
     }
   }
   return {};
@@ -61,7 +63,7 @@ Status ReadRooms(const Json& rooms, const std::string& prefix, Layout& layout) {
     std::string path = prefix + "rooms" + Quote(it.key());
     auto name = ParseRoomName(it.key());
     if (!name)
-      return Error{path + ": bad room name \"" + it.key() + "\" (expected category_L/i, e.g. kitchen_0/0, with category one of living-room, bedroom, kitchen, bathroom, dining-room, children-room, office, meeting-room, utility-room, balcony, room)"};
+      return Error{path + ": bad room name \"" + Excerpt(it.key()) + "\" (expected category_L/i, e.g. kitchen_0/0, with category one of living-room, bedroom, kitchen, bathroom, dining-room, children-room, office, meeting-room, utility-room, balcony, room)"};
     if (!it->is_object()) return Error{path + ": expected an object {\"shape\": ...}, got " + Shown(*it)};
     if (auto s = CheckKeys(*it, path, {"shape"}); !s) return Error{s.error()};
     auto shape = it->find("shape");
@@ -69,6 +71,10 @@ Status ReadRooms(const Json& rooms, const std::string& prefix, Layout& layout) {
     if (!shape->is_string()) return Error{path + ".shape: expected a string, got " + Shown(*shape)};
     auto ring = ParsePolygonShape(shape->get<std::string>());
     if (!ring) return Error{path + ".shape: " + ring.error()};
+    if (ring->size() > static_cast<std::size_t>(kMaxRingCorners))
+      return Error{path + ".shape: " + std::to_string(ring->size()) + " corners; a room has at most " +
+                   std::to_string(kMaxRingCorners) + " (docs/RULES.md)"};
+    if (std::string problem = RoomExtentProblem(*ring); !problem.empty()) return Error{path + ".shape: " + problem};
     Room room{name->category, name->level, name->index, std::move(*ring)};
     if (!seen.insert(room.name()).second)
       return Error{path + ": duplicate room " + room.name() + " (staircase-room is an alias of utility-room)"};
@@ -92,6 +98,7 @@ Status ReadElements(const Json& group, ElementKind kind, const std::string& pref
     if (!shape->is_string()) return Error{path + ".shape: expected a string, got " + Shown(*shape)};
     auto segment = ParseLineShape(shape->get<std::string>());
     if (!segment) return Error{path + ".shape: " + segment.error()};
+    if (std::string problem = SegmentExtentProblem(*segment); !problem.empty()) return Error{path + ".shape: " + problem};
     auto level = ReadLevel(*it, path);
     if (!level) return Error{level.error()};
     if (kind == ElementKind::kEntrance && *level != 0 && *level != kAllLevels)
@@ -128,25 +135,34 @@ Result<Layout> LayoutFromJson(const Json& json, std::string_view source) {
     bool known = false;
     for (auto key : kTopKeys) known = known || it.key() == key;
     if (!known)
-      return Error{prefix + "unknown key \"" + it.key() + "\" (a layout has exactly rooms, entrance, doors, opens, windows, interiors)"};
+      return Error{prefix + "unknown key \"" + Excerpt(it.key()) + "\" (a layout has exactly rooms, entrance, doors, opens, windows, interiors)"};
   }
   for (auto key : kTopKeys)
     if (!json.contains(key)) return Error{prefix + "missing key \"" + key + "\" (a layout has exactly rooms, entrance, doors, opens, windows, interiors)"};
+  // Absurd counts are refused before any shape is read (docs/RULES.md, "Extent").
+  const Json& rooms = json.at("rooms");
+  if (rooms.is_object() && rooms.size() > static_cast<std::size_t>(kMaxRooms))
+    return Error{prefix + "rooms: " + std::to_string(rooms.size()) + " rooms; a layout has at most " +
+                 std::to_string(kMaxRooms) + " (docs/RULES.md)"};
+  std::size_t elements = 0;
+  for (ElementKind kind : kAllElementKinds) {
+    const Json& group = json.at(std::string(ElementKindKey(kind)));
+    if (group.is_object()) elements += group.size();
+  }
+  if (elements > static_cast<std::size_t>(kMaxElements))
+    return Error{prefix + std::to_string(elements) + " elements (entrance, doors, opens, windows, interiors); a layout has at most " +
+                 std::to_string(kMaxElements) + " (docs/RULES.md)"};
   Layout layout;
-  if (auto s = ReadRooms(json.at("rooms"), prefix, layout); !s) return Error{s.error()};
+  if (auto s = ReadRooms(rooms, prefix, layout); !s) return Error{s.error()};
   for (ElementKind kind : kAllElementKinds)
     if (auto s = ReadElements(json.at(std::string(ElementKindKey(kind))), kind, prefix, layout); !s) return Error{s.error()};
   return layout;
 }
 
 Result<Layout> ParseLayoutText(std::string_view text, std::string_view source) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    return Error{Prefix(source) + "not valid JSON: " + e.what()};
-  }
-  return LayoutFromJson(json, source);
+  Result<Json> json = ParseJson<Json>(text, source);
+  if (!json) return Error{json.error()};
+  return LayoutFromJson(*json, source);
 }
 
 Result<Layout> LoadLayout(const std::filesystem::path& path) {
@@ -185,16 +201,13 @@ Status ReadJsonl(const std::filesystem::path& path, const std::function<bool(con
   while (std::getline(in, line)) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    Json record;
-    try {
-      record = Json::parse(line);
-    } catch (const Json::parse_error& e) {
-      std::string message = path.string() + ":" + std::to_string(number) + ": not valid JSON: " + e.what();
-      if (!on_bad_line) return Error{message};
-      on_bad_line(message);
+    Result<Json> record = ParseJson<Json>(line, path.string() + ":" + std::to_string(number));
+    if (!record) {
+      if (!on_bad_line) return Error{record.error()};
+      on_bad_line(record.error());
       continue;
     }
-    if (!on_record(record, number)) break;
+    if (!on_record(*record, number)) break;
   }
   if (in.bad()) return Error{path.string() + ": read error"};
   return {};

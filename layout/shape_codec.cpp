@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "util/excerpt.h"
+
 namespace villa {
 namespace {
 
@@ -107,7 +109,7 @@ class ShapeReader {
 
   std::string Message(const std::string& what, std::size_t at) const {
     std::string where = at >= text_.size() ? " at the end" : " at column " + std::to_string(at + 1);
-    return what + where + " of \"" + std::string(text_) + "\"";
+    return what + where + " of \"" + Excerpt(text_) + "\"";
   }
   Error Fail(const std::string& what, std::size_t at) const { return Error{Message(what, at)}; }
   std::size_t pos() const { return pos_; }
@@ -211,7 +213,7 @@ Result<Ring> ParsePolygonShape(std::string_view text) {
     return ring;
   }
   if (*name == "LineString") return reader.Fail("expected a polygon (shapely.box or shapely.Polygon), got a LineString", 0);
-  return reader.Fail("unknown shape function '" + *name + "' (expected shapely.box or shapely.Polygon)", 0);
+  return reader.Fail("unknown shape function '" + Excerpt(*name) + "' (expected shapely.box or shapely.Polygon)", 0);
 }
 
 Result<Segment> ParseLineShape(std::string_view text) {
@@ -220,7 +222,7 @@ Result<Segment> ParseLineShape(std::string_view text) {
   if (!name) return Error{name.error()};
   if (*name != "LineString") {
     if (*name == "box" || *name == "Polygon") return reader.Fail("expected a shapely.LineString, got a polygon", 0);
-    return reader.Fail("unknown shape function '" + *name + "' (expected shapely.LineString)", 0);
+    return reader.Fail("unknown shape function '" + Excerpt(*name) + "' (expected shapely.LineString)", 0);
   }
   if (auto s = reader.Expect('('); !s) return Error{s.error()};
   std::size_t list_at = reader.pos();

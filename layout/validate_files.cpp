@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "util/atomic_file.h"
+#include "util/json_read.h"
 
 namespace villa {
 namespace {
@@ -48,9 +49,12 @@ const Json* LastTurn(const Json& turns, const char* role_key, const char* text_k
 }
 
 
-void ReadFileInto(const std::string& file, const ValidateOptions& options, std::vector<CheckedLayout>& out) {
+// Checks every record of `file` into `out`; false when a .jsonl stream holds no record at all (empty, or
+// blank lines only): nothing was checked, which must not pass as "all valid".
+bool ReadFileInto(const std::string& file, const ValidateOptions& options, std::vector<CheckedLayout>& out) {
   std::filesystem::path path(file);
   if (path.extension() == ".jsonl") {
+    const std::size_t before = out.size();
     Status status = ReadJsonl(
         path,
         [&](const Json& record, int line) {
@@ -59,27 +63,27 @@ void ReadFileInto(const std::string& file, const ValidateOptions& options, std::
           return true;
         },
         [&](const std::string& message) {
-          auto at = message.find(": not valid JSON");
+          // The message starts "file:LINE: ".
+          auto at = message.find(": ", file.size());
           std::string source = at == std::string::npos ? file : message.substr(0, at);
           out.push_back(Check(source, "", Error{message}, options));
         });
     if (!status) out.push_back(Check(file, "", Error{status.error()}, options));
-    return;
+    return out.size() > before;
   }
   // A .json file holds one layout, or one record with a "layout" key (and maybe an "id").
   auto text = ReadFile(path);
   if (!text) {
     out.push_back(Check(file, "", Error{text.error()}, options));
-    return;
+    return true;
   }
-  Json json;
-  try {
-    json = Json::parse(*text);
-  } catch (const Json::parse_error& e) {
-    out.push_back(Check(file, "", Error{file + ": not valid JSON: " + e.what()}, options));
-    return;
+  Result<Json> json = ParseJson<Json>(*text, file);
+  if (!json) {
+    out.push_back(Check(file, "", Error{json.error()}, options));
+    return true;
   }
-  out.push_back(Check(file, IdOf(json), LayoutOfRecord(json, file), options));
+  out.push_back(Check(file, IdOf(*json), LayoutOfRecord(*json, file), options));
+  return true;
 }
 
 Json RatioJson(std::optional<double> value) { return value ? Json(*value) : Json(nullptr); }
@@ -115,7 +119,8 @@ Result<Layout> LayoutOfRecord(const Json& record, const std::string& source) {
 
 ValidateFilesSummary ValidateFiles(const std::vector<std::string>& files, const ValidateFilesOptions& options) {
   ValidateFilesSummary summary;
-  for (const auto& file : files) ReadFileInto(file, options.validate, summary.layouts);
+  for (const auto& file : files)
+    if (!ReadFileInto(file, options.validate, summary.layouts)) summary.empty_files.push_back(file);
   for (const auto& c : summary.layouts) {
     summary.metrics.Add(c.metrics);
     summary.valid += c.valid();
@@ -150,6 +155,7 @@ Json ValidateFilesReportJson(const ValidateFilesSummary& s) {
                             {"message", v.message},
                             {"figure", std::round(v.figure * 1e6) / 1e6}});  // to the tolerance: 0.6, not 0.5999999999999996
     entry["violations"] = std::move(violations);
+    if (!c.report.notes.empty()) entry["notes"] = c.report.notes;  // only when there are any: older readers see no change
     entry["metrics"] = {{"format_success", c.metrics.parsed && c.metrics.format_success},
                         {"rooms", c.metrics.rooms},
                         {"rooms_reached_per_floor", c.metrics.rooms_reached_per_floor},
@@ -172,6 +178,7 @@ Json ValidateFilesReportJson(const ValidateFilesSummary& s) {
                     {"rr_entrance", RatioJson(summary.rr_entrance())},
                     {"vcr", RatioJson(summary.vcr())},
                     {"rules", std::move(rules)}};
+  if (!s.empty_files.empty()) out["summary"]["empty_files"] = s.empty_files;
   return out;
 }
 

@@ -39,16 +39,20 @@ struct ValidateFilesSummary {
   int unparsable = 0;
   std::vector<int> layouts_by_rule = std::vector<int>(11, 0);     // [rule]: layouts breaking it (1..10)
   std::vector<int> violations_by_rule = std::vector<int>(11, 0);  // [rule]: its violations (1..10)
+  std::vector<std::string> empty_files;  // .jsonl streams without a single record: nothing checked there
   int count() const { return static_cast<int>(layouts.size()); }
-  bool all_valid() const { return valid == count(); }
+  // Every layout valid, and every file held at least one.
+  bool all_valid() const { return valid == count() && empty_files.empty(); }
 };
 
 // Reads and checks every file (which must exist: the caller says so to the user first). A file that
-// cannot be read or a line that is not JSON becomes an unparsable entry naming it.
+// cannot be read or a line that is not JSON becomes an unparsable entry naming it; a .jsonl stream with
+// no record (empty or blank) is listed in `empty_files`.
 ValidateFilesSummary ValidateFiles(const std::vector<std::string>& files, const ValidateFilesOptions& options = {});
 
 // The machine-readable report of `villa validate --json`: per layout its source, id, validity, violations
-// (rule, elements, message, figure rounded to the tolerance) and metrics, then the summary.
+// (rule, elements, message, figure rounded to the tolerance), notes (only when there are any) and metrics,
+// then the summary (with "empty_files" when a stream held no record).
 Json ValidateFilesReportJson(const ValidateFilesSummary& summary);
 
 }  // namespace villa

@@ -61,7 +61,10 @@ class DomBuilder : public nlohmann::json_sax<J> {
   bool end_array() override { return Close(); }
   bool key(string_t& k) override {
     auto& object = stack_.back()->template get_ref<typename J::object_t&>();
-    if constexpr (std::is_same_v<typename J::object_t, nlohmann::ordered_map<typename J::string_t, J>>) {
+    // ordered_json's object is a std::vector of pairs underneath (nlohmann::ordered_map derives from it).
+    using Object = typename J::object_t;
+    using Members = std::vector<std::pair<const typename J::string_t, J>, typename Object::allocator_type>;
+    if constexpr (std::is_base_of_v<Members, Object>) {
       object.emplace_back(std::move(k), J());  // the list's own append: no search
       member_ = &object.back().second;
     } else {

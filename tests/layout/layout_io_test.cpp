@@ -7,8 +7,10 @@
 #include <unistd.h>
 
 #include "layout/layout_io.h"
+#include "test_support.h"
 
 using namespace villa;
+using villa::test::LayoutError;
 
 namespace {
 const char* kMinimal = R"json({
@@ -20,12 +22,6 @@ const char* kMinimal = R"json({
   "windows": {"w": {"shape": "shapely.LineString([(0, 1), (0, 2)])", "is_panoramic": 1, "level": 0}},
   "interiors": {}
 })json";
-
-std::string ErrorOf(const std::string& text) {
-  auto r = ParseLayoutText(text, "layout.json");
-  REQUIRE_FALSE(r.ok());
-  return r.error();
-}
 
 std::string Replace(std::string text, const std::string& from, const std::string& to) {
   auto at = text.find(from);
@@ -54,30 +50,30 @@ TEST_CASE("a layout reads into rooms and elements, aliases and missing levels re
 
 TEST_CASE("layout errors name the JSON path and the bad value", "[io]") {
   std::string text = kMinimal;
-  CHECK(ErrorOf(Replace(text, "shapely.box(0, 0, 4, 4)", "shapely.box(0, 0, 4")) ==
+  CHECK(LayoutError(Replace(text, "shapely.box(0, 0, 4, 4)", "shapely.box(0, 0, 4")) ==
         "layout.json: rooms[\"kitchen_0/0\"].shape: expected ',' at the end of \"shapely.box(0, 0, 4\"");
-  CHECK_THAT(ErrorOf(Replace(text, "\"kitchen_0/0\"", "\"kitchen_0\"")),
+  CHECK_THAT(LayoutError(Replace(text, "\"kitchen_0/0\"", "\"kitchen_0\"")),
              Catch::StartsWith("layout.json: rooms[\"kitchen_0\"]: bad room name \"kitchen_0\""));
-  CHECK_THAT(ErrorOf(Replace(text, "\"kitchen_0/0\"", "\"pantry_0/0\"")),
+  CHECK_THAT(LayoutError(Replace(text, "\"kitchen_0/0\"", "\"pantry_0/0\"")),
              Catch::StartsWith("layout.json: rooms[\"pantry_0/0\"]: bad room name"));
-  CHECK(ErrorOf(Replace(text, "\"is_panoramic\": 1, \"level\": 0", "\"is_panoramic\": 1, \"level\": -1")) ==
+  CHECK(LayoutError(Replace(text, "\"is_panoramic\": 1, \"level\": 0", "\"is_panoramic\": 1, \"level\": -1")) ==
         "layout.json: windows[\"w\"].level: expected an integer >= 0, got -1");
-  CHECK(ErrorOf(Replace(text, "\"is_panoramic\": 1, \"level\": 0", "\"is_panoramic\": 1, \"level\": \"one\"")) ==
+  CHECK(LayoutError(Replace(text, "\"is_panoramic\": 1, \"level\": 0", "\"is_panoramic\": 1, \"level\": \"one\"")) ==
         "layout.json: windows[\"w\"].level: expected an integer >= 0, got \"one\"");
-  CHECK(ErrorOf(Replace(text, "[(1, 0), (3, 0)])\", \"level\": 0", "[(1, 0), (3, 0)])\", \"level\": 1")) ==
+  CHECK(LayoutError(Replace(text, "[(1, 0), (3, 0)])\", \"level\": 0", "[(1, 0), (3, 0)])\", \"level\": 1")) ==
         "layout.json: entrance[\"main\"].level: the entrance is on level 0, got 1");
-  CHECK(ErrorOf(Replace(text, "\"is_panoramic\": 1", "\"is_panoramic\": 2")) ==
+  CHECK(LayoutError(Replace(text, "\"is_panoramic\": 1", "\"is_panoramic\": 2")) ==
         "layout.json: windows[\"w\"].is_panoramic: expected 0 or 1, got 2");
 }
 
 TEST_CASE("unknown and missing top-level keys are errors", "[io]") {
   std::string text = kMinimal;
-  CHECK(ErrorOf(Replace(text, "\"doors\": {},", "\"doors\": {}, \"stairs\": {},")) ==
+  CHECK(LayoutError(Replace(text, "\"doors\": {},", "\"doors\": {}, \"stairs\": {},")) ==
         "layout.json: unknown key \"stairs\" (a layout has exactly rooms, entrance, doors, opens, windows, interiors)");
-  CHECK(ErrorOf(Replace(text, "\"doors\": {},", "")) ==
+  CHECK(LayoutError(Replace(text, "\"doors\": {},", "")) ==
         "layout.json: missing key \"doors\" (a layout has exactly rooms, entrance, doors, opens, windows, interiors)");
-  CHECK_THAT(ErrorOf("[1, 2]"), Catch::StartsWith("layout.json: expected a JSON object"));
-  CHECK_THAT(ErrorOf("{\"rooms\": "), Catch::StartsWith("layout.json: not valid JSON"));
+  CHECK_THAT(LayoutError("[1, 2]"), Catch::StartsWith("layout.json: expected a JSON object"));
+  CHECK_THAT(LayoutError("{\"rooms\": "), Catch::StartsWith("layout.json: not valid JSON"));
 }
 
 TEST_CASE("JSONL errors carry file and line numbers", "[io]") {

@@ -26,6 +26,13 @@ inline Layout FromText(const std::string& text) {
   return *layout;
 }
 
+// The error of reading `text` as the layout file "layout.json"; the test fails when it reads.
+inline std::string LayoutError(const std::string& text) {
+  auto r = ParseLayoutText(text, "layout.json");
+  REQUIRE_FALSE(r.ok());
+  return r.error();
+}
+
 inline std::set<int> RulesOf(const ValidationReport& report) {
   std::set<int> rules;
   for (const auto& v : report.violations) rules.insert(v.rule);

@@ -147,3 +147,59 @@ TEST_CASE("villa validate reads fine-tuning samples: messages, ShareGPT, Alpaca"
   CHECK_THAT(run.output, Catch::Contains("4 layouts: 2 valid, 2 invalid (1 unparsable)"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("villa validate: an empty or blank JSONL stream fails, since nothing was checked", "[cli][hostile]") {
+  auto dir = std::filesystem::temp_directory_path() / ("villa_validate_cli_empty_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "empty.jsonl").close();
+  std::ofstream(dir / "blank.jsonl") << "\n   \n\t\n";
+  for (const char* name : {"empty.jsonl", "blank.jsonl"}) {
+    const std::string file = (dir / name).string();
+    Run run = Villa("validate " + file);
+    INFO(run.output);
+    CHECK(run.code == 1);
+    CHECK_THAT(run.output, Catch::Contains("villa validate: no layouts in " + file + "\n"));
+    Run json = Villa("validate --json " + file, /*with_stderr=*/false);
+    CHECK(json.code == 1);
+    CHECK(Json::parse(json.output).at("summary").at("empty_files") == Json::array({file}));
+  }
+  // Beside a file with layouts the empty one still fails the run.
+  Run both = Villa("validate " + FixturePath("house_one_floor.json") + " " + (dir / "empty.jsonl").string());
+  CHECK(both.code == 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("villa validate: JSON nested 100,000 deep is an unparsable layout, not a crash", "[cli][hostile]") {
+  auto dir = std::filesystem::temp_directory_path() / ("villa_validate_cli_deep_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "brackets.json") << std::string(100000, '[');
+  std::ofstream(dir / "room.json") << R"J({"rooms": {"kitchen_0/0": )J" << std::string(200000, '[') << std::string(200000, ']')
+                                   << R"J(}, "entrance": {}, "doors": {}, "opens": {}, "windows": {}, "interiors": {}})J";
+  Run run = Villa("validate " + (dir / "brackets.json").string() + " " + (dir / "room.json").string());
+  INFO(run.output);
+  CHECK(run.code == 1);
+  CHECK_THAT(run.output, Catch::Contains((dir / "brackets.json").string() + ": cannot parse: line 1, column 65: nested deeper than 64 levels"));
+  CHECK_THAT(run.output, Catch::Contains((dir / "room.json").string() + ": cannot parse: line 1, column 89: nested deeper than 64 levels"));
+  CHECK_THAT(run.output, Catch::Contains("2 layouts: 0 valid, 2 invalid (2 unparsable)"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("villa validate: numbers with more than two decimals are read and noted, not violations", "[cli][tolerance]") {
+  auto dir = std::filesystem::temp_directory_path() / ("villa_validate_cli_notes_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::string text = OneLine("house_one_floor.json");
+  // The kitchen window, 3 mm off its wall and with three decimals: on the wall, with a note.
+  const std::string from = "shapely.LineString([(7, 0), (8, 0)])", to = "shapely.LineString([(7.001, 0.003), (8, 0.003)])";
+  REQUIRE(text.find(from) != std::string::npos);
+  text.replace(text.find(from), from.size(), to);
+  std::ofstream(dir / "decimals.json") << text;
+  const std::string file = (dir / "decimals.json").string();
+  Run run = Villa("validate " + file);
+  INFO(run.output);
+  CHECK(run.code == 0);
+  CHECK_THAT(run.output, Catch::Contains(file + ": note: 3 numbers have more than two decimals (the first: windows[\"kitchen0_window\"] x = 7.001)"));
+  CHECK_THAT(run.output, Catch::Contains("1 layout: 1 valid, 0 invalid (0 unparsable)"));
+  Run json = Villa("validate --json " + file, /*with_stderr=*/false);
+  CHECK(Json::parse(json.output).at("layouts").at(0).at("notes").size() == 1);
+  std::filesystem::remove_all(dir);
+}
