@@ -46,14 +46,6 @@ std::string Shortest(double value) {
   return buffer;
 }
 
-std::string PointExtentProblem(const Point& p) {
-  for (const auto& [axis, value] : {std::pair{"x", p.x}, std::pair{"y", p.y}})
-    if (!(std::abs(value) <= kMaxCoordinate))
-      return std::string(axis) + " = " + Shortest(value) + " is outside the building extent (|x| and |y| at most " +
-             Shortest(kMaxCoordinate) + " m)";
-  return {};
-}
-
 std::optional<int> ParseNonNegative(std::string_view text) {
   if (text.empty() || (text.size() > 1 && text[0] == '0')) return std::nullopt;
   int value = 0;
@@ -149,6 +141,14 @@ int Layout::FindRoom(std::string_view name) const {
     if (r.category == parsed->category && r.level == parsed->level && r.index == parsed->index) return i;
   }
   return -1;
+}
+
+std::string PointExtentProblem(const Point& p) {
+  for (const auto& [axis, value] : {std::pair{"x", p.x}, std::pair{"y", p.y}})
+    if (!(std::abs(value) <= kMaxCoordinate))
+      return std::string(axis) + " = " + Shortest(value) + " is outside the building extent (|x| and |y| at most " +
+             Shortest(kMaxCoordinate) + " m)";
+  return {};
 }
 
 std::string RoomExtentProblem(const Ring& ring) {

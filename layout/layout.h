@@ -148,6 +148,8 @@ inline constexpr ElementKind kAllElementKinds[] = {ElementKind::kEntrance, Eleme
 std::string RoomExtentProblem(const Ring& ring);
 // The same for a 1D element's two points (the extent only: a short element is rule 1's "zero length").
 std::string SegmentExtentProblem(const Segment& segment);
+// The extent alone, for one point: "y = -1e+12 is outside the building extent (...)", or empty.
+std::string PointExtentProblem(const Point& point);
 
 // Plain polygon measures used everywhere (shoelace; positive for counter-clockwise).
 double SignedArea(const Ring& ring);

@@ -6,15 +6,43 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
+#include "util/excerpt.h"
+#include "util/json_read.h"
+
 namespace villa {
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+// What stands in for the API key wherever a server echoed it.
+constexpr const char* kRedacted = "[redacted]";
+
+// `text` with every occurrence of the key's value replaced, as sent and as a JSON string escapes it (a
+// server that echoes the key in a JSON body may escape it). The client passes everything it hands back or
+// quotes through this (answers, server messages, bodies, errors), so no caller can leak the key: not
+// stderr, not report.json, not a critic's log (client.h).
+std::string WithoutKey(std::string text, const std::string& key) {
+  if (key.empty()) return text;
+  const std::string quoted = Json(key).dump(-1, ' ', false, Json::error_handler_t::replace);
+  const std::string escaped = quoted.substr(1, quoted.size() - 2);
+  for (const std::string* form : {&key, &escaped}) {
+    if (form->empty()) continue;
+    for (std::size_t at = text.find(*form); at != std::string::npos; at = text.find(*form, at + std::strlen(kRedacted)))
+      text.replace(at, form->size(), kRedacted);
+  }
+  return text;
+}
+
+// A JSON value of an answer quoted in an error: without the key, then cut (so no cut leaves half a key).
+std::string Quoted(const Json& value, const std::string& key, std::size_t limit) {
+  return Excerpt(WithoutKey(value.dump(-1, ' ', false, Json::error_handler_t::replace), key), limit);
+}
 
 void GlobalInit() {
   static std::once_flag once;
@@ -97,20 +125,20 @@ Response Post(const LlmOptions& options, const std::string& url, const std::stri
 }
 
 // The server's own words from an error body ({"error": {"message": ...}} or {"error": "..."} or
-// {"detail": ...}), else the body's first 300 bytes.
-std::string ServerMessage(const std::string& body) {
-  try {
-    Json j = Json::parse(body);
-    if (j.contains("error")) {
+// {"detail": ...}), else the body's first 300 bytes; the key taken out before anything is cut.
+std::string ServerMessage(const std::string& raw_body, const std::string& key) {
+  const std::string body = WithoutKey(raw_body, key);
+  if (Result<Json> parsed = ParseJson<Json>(body, ""); parsed.ok()) {
+    const Json& j = *parsed;
+    if (j.is_object() && j.contains("error")) {
       const Json& e = j["error"];
-      if (e.is_string()) return e.get<std::string>();
-      if (e.is_object() && e.contains("message") && e["message"].is_string()) return e["message"].get<std::string>();
+      if (e.is_string()) return Excerpt(e.get<std::string>(), 300);
+      if (e.is_object() && e.contains("message") && e["message"].is_string()) return Excerpt(e["message"].get<std::string>(), 300);
     }
-    if (j.contains("detail")) return j["detail"].is_string() ? j["detail"].get<std::string>() : j["detail"].dump();
-    if (j.contains("message") && j["message"].is_string()) return j["message"].get<std::string>();
-  } catch (const std::exception&) {
+    if (j.is_object() && j.contains("detail")) return j["detail"].is_string() ? Excerpt(j["detail"].get<std::string>(), 300) : Quoted(j["detail"], key, 300);
+    if (j.is_object() && j.contains("message") && j["message"].is_string()) return Excerpt(j["message"].get<std::string>(), 300);
   }
-  std::string text = body.substr(0, 300);
+  std::string text = Excerpt(body, 300);
   std::replace(text.begin(), text.end(), '\n', ' ');
   return text.empty() ? "(empty body)" : text;
 }
@@ -156,6 +184,7 @@ Result<Json> PostJson(const LlmOptions& options, const std::string& url, const s
     }
     ++*attempts;
     Response response = Post(options, url, body);
+    response.curl_error = WithoutKey(response.curl_error, options.api_key);
     if (response.code != CURLE_OK) {
       if (response.code == CURLE_OPERATION_TIMEDOUT) {
         bool connecting = response.curl_error.find("onnect") != std::string::npos;
@@ -171,18 +200,16 @@ Result<Json> PostJson(const LlmOptions& options, const std::string& url, const s
       return Error{last_error};
     }
     if (response.status == 429 || response.status >= 500) {
-      last_error = url + ": HTTP " + std::to_string(response.status) + ": " + ServerMessage(response.body);
+      last_error = url + ": HTTP " + std::to_string(response.status) + ": " + ServerMessage(response.body, options.api_key);
       if (response.retry_after_s) wait = std::min(options.backoff_max_s, *response.retry_after_s);
       continue;
     }
     elapsed();
     if (response.status < 200 || response.status >= 300)
-      return Error{url + ": HTTP " + std::to_string(response.status) + ": " + ServerMessage(response.body)};
-    try {
-      return Json::parse(response.body);
-    } catch (const std::exception& e) {
-      return Error{url + ": the answer is not JSON: " + std::string(e.what())};
-    }
+      return Error{url + ": HTTP " + std::to_string(response.status) + ": " + ServerMessage(response.body, options.api_key)};
+    Result<Json> answer = ParseJson<Json>(response.body, "");
+    if (!answer) return Error{url + ": the answer is " + WithoutKey(answer.error(), options.api_key)};
+    return answer;
   }
   elapsed();
   return Error{last_error + " (gave up after " + std::to_string(*attempts) + " attempts)"};
@@ -274,16 +301,18 @@ Result<ChatAnswer> ChatCompletion(const LlmOptions& options, const std::vector<C
   Result<Json> posted = PostJson(options, url, ChatRequestBody(options, messages, response_format).dump(),
                                  &answer.http_attempts, &answer.seconds);
   if (attempts) *attempts = answer.http_attempts;
-  if (!posted) return Error{posted.error()};
+  if (!posted) return Error{WithoutKey(posted.error(), options.api_key)};
   const Json& j = *posted;
-  if (!j.contains("choices") || !j["choices"].is_array() || j["choices"].empty())
-    return Error{url + ": the answer has no choices: " + j.dump().substr(0, 200)};
+  if (!j.is_object() || !j.contains("choices") || !j["choices"].is_array() || j["choices"].empty())
+    return Error{WithoutKey(url, options.api_key) + ": the answer has no choices: " + Quoted(j, options.api_key, 200)};
   const Json& choice = j["choices"][0];
-  if (choice.contains("finish_reason") && choice["finish_reason"].is_string())
-    answer.finish_reason = choice["finish_reason"].get<std::string>();
-  if (!choice.contains("message") || !choice["message"].is_object()) return Error{url + ": choices[0] has no message"};
+  if (choice.is_object() && choice.contains("finish_reason") && choice["finish_reason"].is_string())
+    answer.finish_reason = WithoutKey(choice["finish_reason"].get<std::string>(), options.api_key);
+  if (!choice.is_object() || !choice.contains("message") || !choice["message"].is_object())
+    return Error{WithoutKey(url, options.api_key) + ": choices[0] has no message"};
   const Json& message = choice["message"];
-  if (message.contains("content") && message["content"].is_string()) answer.content = message["content"].get<std::string>();
+  if (message.contains("content") && message["content"].is_string())
+    answer.content = WithoutKey(message["content"].get<std::string>(), options.api_key);
   return answer;
 }
 
@@ -294,7 +323,9 @@ nlohmann::ordered_json EmbeddingsRequestBody(const LlmOptions& options, const st
   return body;
 }
 
-Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector<std::string>& texts, int* attempts) {
+namespace {
+
+Result<EmbeddingsAnswer> EmbeddingsWithKey(const LlmOptions& options, const std::vector<std::string>& texts, int* attempts) {
   const std::string url = EmbeddingsUrl(options.url);
   EmbeddingsAnswer answer;
   if (texts.empty()) return answer;
@@ -304,7 +335,7 @@ Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector
   if (!posted) return Error{posted.error()};
   const Json& j = *posted;
   if (!j.contains("data") || !j["data"].is_array())
-    return Error{url + ": the answer has no \"data\" array: " + j.dump().substr(0, 200)};
+    return Error{url + ": the answer has no \"data\" array: " + Quoted(j, options.api_key, 200)};
   const Json& data = j["data"];
   if (data.size() != texts.size())
     return Error{url + ": " + std::to_string(data.size()) + " embeddings for " + std::to_string(texts.size()) + " texts"};
@@ -318,7 +349,7 @@ Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector
     if (item.contains("index")) {
       if (!item["index"].is_number_integer() || item["index"].get<long long>() < 0 ||
           item["index"].get<long long>() >= static_cast<long long>(texts.size()))
-        return Error{where + ".index: " + item["index"].dump().substr(0, 80) + " is not an index of the " +
+        return Error{where + ".index: " + Quoted(item["index"], options.api_key, kExcerptLength) + " is not an index of the " +
                      std::to_string(texts.size()) + " texts"};
       index = item["index"].get<std::size_t>();
     }
@@ -330,7 +361,8 @@ Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector
     for (std::size_t i = 0; i < item["embedding"].size(); ++i) {
       const Json& value = item["embedding"][i];
       if (!value.is_number())
-        return Error{where + ".embedding[" + std::to_string(i) + "]: " + value.dump().substr(0, 80) + " is not a number"};
+        return Error{where + ".embedding[" + std::to_string(i) + "]: " + Quoted(value, options.api_key, kExcerptLength) +
+                     " is not a number"};
       vector.push_back(value.get<float>());
     }
   }
@@ -339,6 +371,14 @@ Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector
     if (answer.vectors[i].size() != dimension)
       return Error{url + ": the embedding of text " + std::to_string(i) + " has " + std::to_string(answer.vectors[i].size()) +
                    " numbers, that of text 0 " + std::to_string(dimension)};
+  return answer;
+}
+
+}  // namespace
+
+Result<EmbeddingsAnswer> Embeddings(const LlmOptions& options, const std::vector<std::string>& texts, int* attempts) {
+  Result<EmbeddingsAnswer> answer = EmbeddingsWithKey(options, texts, attempts);
+  if (!answer) return Error{WithoutKey(answer.error(), options.api_key)};
   return answer;
 }
 

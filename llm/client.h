@@ -12,7 +12,10 @@
 //   - Any other 4xx fails at once with the server's own error message ("HTTP 401 from URL: ...").
 //   - A request that runs past `timeout_s` fails at once ("timed out after 30 s"): a slow model stays slow,
 //     so the caller decides (a corrective round, or giving up).
-//   - The API key is sent as "Authorization: Bearer ..." and never appears in errors or reports.
+//   - The API key is sent as "Authorization: Bearer ..." and nothing the client gives back holds its value:
+//     a server that echoes it (in a 401's message, a body, an answer) has it replaced by "[redacted]" in
+//     every error, server message and answer, so no caller can write it to stderr, a report or a log.
+//   - Answers are read as JSON nested at most 64 deep (util/json_read.h).
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -51,8 +51,12 @@ Point PoleOfInaccessibility(const Ring& ring, double precision) {
     min_y = std::min(min_y, p.y);
     max_y = std::max(max_y, p.y);
   }
-  const double cell_size = std::min(max_x - min_x, max_y - min_y);
-  if (cell_size <= 0.0) return average;
+  // Square cells as wide as the room's short side, but never more than kMaxCells along its long side: a
+  // room 1e12 m by 4 m (or 4 m by 1e-320 m) would otherwise need 2.5e11 (or 4e320) of them. The search
+  // below is capped in steps too, so the work is bounded whatever the input's extent.
+  constexpr double kMaxCells = 4096;
+  const double cell_size = std::max(std::min(max_x - min_x, max_y - min_y), std::max(max_x - min_x, max_y - min_y) / kMaxCells);
+  if (!(cell_size > 0.0) || !std::isfinite(cell_size)) return average;
   precision = std::max(precision, cell_size * 1e-6);
 
   struct Cell {

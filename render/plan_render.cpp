@@ -18,6 +18,7 @@
 #include "render/plan_geometry.h"
 #include "render/scene.h"
 #include "util/atomic_file.h"
+#include "util/excerpt.h"
 
 namespace villa {
 namespace {
@@ -246,24 +247,27 @@ struct Content {
   std::vector<std::vector<LegendEntry>> legend_groups;
 };
 
-Status CheckFinite(const Layout& layout) {
+// Every point finite and inside the building extent (layout.h): the reader refuses anything else, and a
+// layout made in code gets the same answer here, before a scale or a label is computed from it.
+Status CheckExtent(const Layout& layout) {
   for (const Room& room : layout.rooms) {
     for (const Point& p : room.polygon) {
       if (!Finite(p)) return Error{"rooms[\"" + room.name() + "\"].shape: a coordinate is not a finite number"};
+      if (std::string problem = PointExtentProblem(p); !problem.empty()) return Error{"rooms[\"" + room.name() + "\"].shape: " + problem};
     }
   }
   for (ElementKind kind : kAllElementKinds) {
     for (const Element& e : layout.elements(kind)) {
-      if (!Finite(e.shape.a) || !Finite(e.shape.b)) {
-        return Error{std::string(ElementKindKey(kind)) + "[\"" + e.name + "\"].shape: a coordinate is not a finite number"};
-      }
+      const std::string where = std::string(ElementKindKey(kind)) + "[\"" + Excerpt(e.name) + "\"].shape: ";
+      if (!Finite(e.shape.a) || !Finite(e.shape.b)) return Error{where + "a coordinate is not a finite number"};
+      if (std::string problem = SegmentExtentProblem(e.shape); !problem.empty()) return Error{where + problem};
     }
   }
   return Status::Ok();
 }
 
 Result<Content> Analyse(const Layout& layout, const PlanRenderOptions& options, const TextMeasure& measure) {
-  if (Status finite = CheckFinite(layout); !finite.ok()) return Error{finite.error()};
+  if (Status extent = CheckExtent(layout); !extent.ok()) return Error{extent.error()};
   Content c;
   c.layout = &layout;
   int level_count = layout.LevelCount();
@@ -1008,7 +1012,8 @@ class PlanPainter {
 
   void DrawLabel(const LevelGeometry& g, int r) {
     const Room& room = layout().rooms[r];
-    const std::string index = " " + std::to_string(room.index);
+    std::string index = " ";  // appended: GCC 12 warns (-Wrestrict, a false alarm) on " " + std::string
+    index += std::to_string(room.index);
     const std::string name = std::string(CategoryDisplayName(room.category)) + index;
     const std::string short_name = std::string(CategoryShortName(room.category)) + index;
     const std::string area = AreaText(Area(room.polygon));

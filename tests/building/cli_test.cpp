@@ -89,3 +89,18 @@ TEST_CASE("villa generate plans and builds: layout, plan, building, preview and 
   CHECK(Villa("generate \"  \" -o " + dir.string() + " --force") == 2);  // empty request
   fs::remove_all(dir);
 }
+
+TEST_CASE("villa build refuses JSON nested 100,000 deep with exit 1 instead of crashing, writing nothing") {
+  fs::path dir = fs::temp_directory_path() / ("villa_build_cli_deep_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // The issue's 200 KB file, and a layout whose room value nests 200,000 deep.
+  std::ofstream(dir / "deep.json") << std::string(100000, '[') << std::string(100000, ']');
+  std::ofstream(dir / "room.json") << R"J({"rooms": {"kitchen_0/0": )J" << std::string(200000, '[') << std::string(200000, ']')
+                                   << R"J(}, "entrance": {}, "doors": {}, "opens": {}, "windows": {}, "interiors": {}})J";
+  for (const char* name : {"deep.json", "room.json"}) {
+    INFO(name);
+    CHECK(Villa("build " + (dir / name).string() + " -o " + (dir / "x.glb").string()) == 1);
+    CHECK_FALSE(fs::exists(dir / "x.glb"));
+  }
+  fs::remove_all(dir);
+}

@@ -162,3 +162,52 @@ TEST_CASE("the JSON inside an answer is found under think blocks, fences and pro
 }
 
 }  // namespace villa
+
+namespace villa {
+
+TEST_CASE("a server that echoes the API key: its value is in no error, message or answer the client gives back", "[llm][secret]") {
+  const std::string key = "sk-live-0123456789abcdefSECRET";
+  auto options = [&](const ScriptedServer& server) {
+    LlmOptions o = OptionsFor(server);
+    o.api_key = key;
+    return o;
+  };
+  auto no_key = [&](const std::string& text) {
+    INFO(text);
+    CHECK(text.find(key) == std::string::npos);
+    CHECK(text.find(key.substr(0, 12)) == std::string::npos);  // nor a piece of it left by a cut
+  };
+  // A 401 whose JSON message quotes the key.
+  ScriptedServer denied({Failure(401, "Incorrect API key provided: " + key + ". Find yours at the dashboard.")});
+  auto chat = ChatCompletion(options(denied), {{"user", "hello", {}}});
+  REQUIRE_FALSE(chat);
+  no_key(chat.error());
+  CHECK_THAT(chat.error(), Catch::Contains("HTTP 401: Incorrect API key provided: [redacted]. Find yours"));
+  REQUIRE(denied.authorization().size() == 1);
+  CHECK(denied.authorization()[0] == "Bearer " + key);
+  // A plain-text body with the key where the 300-byte cut falls, after retried 5xx that echo it too.
+  const std::string padding(290, 'x');
+  ScriptedServer plain({{503, "overloaded for " + key, 0.0, ""}, {403, padding + key + " denied", 0.0, ""}});
+  auto cut = ChatCompletion(options(plain), {{"user", "hello", {}}});
+  REQUIRE_FALSE(cut);
+  no_key(cut.error());
+  // An answer whose content and finish reason carry it.
+  ScriptedServer echo({Completion("{\"note\": \"your key is " + key + "\"}", key)});
+  auto answer = ChatCompletion(options(echo), {{"user", "hello", {}}});
+  REQUIRE(answer);
+  no_key(answer->content);
+  no_key(answer->finish_reason);
+  CHECK(answer->content == "{\"note\": \"your key is [redacted]\"}");
+  // An answer without choices, quoted in the error.
+  ScriptedServer odd({{200, Json{{"object", "error"}, {"key", key}}.dump(), 0.0, ""}});
+  auto quoted = ChatCompletion(options(odd), {{"user", "hello", {}}});
+  REQUIRE_FALSE(quoted);
+  no_key(quoted.error());
+  // Embeddings: the same.
+  ScriptedServer embed({Failure(401, "bad key " + key)});
+  auto vectors = Embeddings(options(embed), {"x"});
+  REQUIRE_FALSE(vectors);
+  no_key(vectors.error());
+}
+
+}  // namespace villa
