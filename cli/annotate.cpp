@@ -10,6 +10,7 @@
 #include "annotator/status_report.h"
 #include "annotator/tui.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "util/atomic_file.h"
 
 namespace {
@@ -151,10 +152,10 @@ villa::cli::Registration registration{40, [](CLI::App& app) {
                 "review who did what: starts on the layouts two people decided differently (else those decided)");
   sub->add_option("--split", args->split,
                   "write N work packages to DIR/packages/part-K-of-N (the layouts no person decided yet)")
-      ->check(CLI::Range(2, 1000));
+      ->transform(villa::cli::WholeIn(2, 1000));
   sub->add_option("--overlap", args->overlap,
                   "with --split: share of layouts put in two packages, to measure agreement (0 to 0.5, default 0.1)")
-      ->check(CLI::Range(0.0, 0.5));
+      ->check(villa::cli::NumberIn(0.0, 0.5));
   sub->add_option("--merge", args->merge, "merge these work packages' journals into DIR's journal")->expected(1, -1);
   sub->callback([args] { villa::cli::SetExitCode(Annotate(*args)); });
 }};

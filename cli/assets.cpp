@@ -13,6 +13,7 @@
 #include "assets/retrieval.h"
 #include "assets/sh3d_import.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "util/progress.h"
 #include "util/text_table.h"
 
@@ -251,9 +252,9 @@ Registration registration{70, [](CLI::App& app) {
   sub->add_option("--library", import->library, "library folder to write");
   sub->add_option("--max-triangles", import->options.max_triangles,
                   "triangle budget per model (default 50000): larger meshes are decimated")
-      ->check(CLI::PositiveNumber);
+      ->transform(WholeIn(1, 100000000));
   sub->add_flag("--skip-over-budget", import->skip_over_budget, "skip models over the budget instead of decimating them");
-  sub->add_option("-j,--threads", import->options.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sub->add_option("-j,--threads", import->options.threads, "worker threads (default: all cores)")->transform(WholeIn(0, 1024));
   sub->callback([import] { RunImport(*import); });
 
   auto list = std::make_shared<ListCommand>();
@@ -278,10 +279,12 @@ Registration registration{70, [](CLI::App& app) {
       "category's usual sizes) plus a bonus for the query's category.");
   sub->add_option("text", search->text, "what to look for, e.g. \"dark leather couch\"")->required();
   sub->add_option("--library", search->library, "library folder");
-  sub->add_option("-k", search->k, "answers to print (default 10)")->check(CLI::PositiveNumber);
+  sub->add_option("-k", search->k, "answers to print (default 10)")->transform(WholeIn(1, 1000000));
   sub->add_option("--category", search->query.category, "vocabulary category (default: read from the text)");
   sub->add_option("--room-type", search->query.room_type, "room type the asset is for (e.g. bedroom)");
-  sub->add_option("--size", search->size, "wanted size W,D,H in m (asset frame)")->delimiter(',');
+  sub->add_option("--size", search->size, "wanted size W,D,H in m (asset frame)")
+      ->delimiter(',')
+      ->check(NumberIn(0.0, 100.0, /*above_min=*/true));
   sub->add_flag("--needs-surface", search->query.needs_surface, "only assets with a support surface");
   sub->add_flag("--needs-cavity", search->query.needs_cavity, "only assets with a cavity");
   sub->add_option("--placement", search->placement, "only assets placed so: floor, wall, ceiling or surface");

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "building/building.h"
 #include "building/export.h"
 #include "building/view_scene.h"
@@ -133,9 +134,11 @@ Registration registration{60, [](CLI::App& app) {
                 "build even when the layout breaks the geometric rules (the builder adapts and warns)");
   sub->add_flag("-q,--quiet", command->quiet, "print nothing on success");
   sub->add_option("--exterior-wall", command->options.exterior_wall_thickness, "exterior wall thickness, m")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NumberIn(0.0, 1.0, /*above_min=*/true));
   sub->add_option("--interior-wall", command->options.interior_wall_thickness, "interior wall thickness, m")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NumberIn(0.0, 0.5, /*above_min=*/true));
   sub->add_flag("!--closed-doors", command->options.door_leaves_open,
                 "hang door leaves closed in their openings (default: swung open 90 degrees)");
   sub->callback([command] { Run(*command); });

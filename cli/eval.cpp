@@ -9,6 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "generator/text/eval.h"
 #include "layout/layout_io.h"
 #include "util/progress.h"
@@ -62,8 +63,9 @@ Registration registration{55, [](CLI::App& app) {
   sub->add_option("prompts", command->prompts, "JSONL file of requests")->required();
   AddBackendFlags(sub, command->backend, command->api_key_env, command->options);
   sub->add_option("-j,--jobs", command->jobs,
-                  "prompts planned at once (default: 8 for llm, the number of cores for procedural)");
-  sub->add_option("--limit", command->limit, "only the first N prompts");
+                  "prompts planned at once (default: 8 for llm, the number of cores for procedural)")
+      ->transform(WholeIn(0, 1024));
+  sub->add_option("--limit", command->limit, "only the first N prompts")->transform(WholeIn(0, 1000000000));
   sub->add_flag("--json", command->json, "print a machine-readable report instead of the tables");
   sub->callback([command] { Run(*command); });
 }};

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "finetune/check.h"
 #include "finetune/export.h"
 
@@ -60,7 +61,7 @@ void Setup(CLI::App& app) {
       ->transform(CLI::CheckedTransformer(std::map<std::string, DescriptionChoice>{{"one", DescriptionChoice::kOne},
                                                                                     {"both", DescriptionChoice::kBoth}}))
       ->default_str("one");
-  exp->add_option("--seed", args->options.seed, "Seed of the split order and the description pick")->default_str("0");
+  exp->add_option("--seed", args->options.seed, "Seed of the split order and the description pick")->default_str("0")->transform(Seed());
   exp->add_option("--base-model", args->options.base_model, "Base model written into the trainer configs")
       ->default_str(args->options.base_model);
   exp->add_option("--name", args->options.dataset_name, "Dataset name: dataset_info.json entries NAME_train, ...")

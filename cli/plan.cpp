@@ -9,6 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 #include "render/plan_render.h"
@@ -64,18 +65,27 @@ void AddBackendFlags(CLI::App* sub, std::string& backend, std::string& api_key_e
   sub->add_option("--model", o.llm.model, "model name sent in requests (e.g. the LoRA adapter's served name)");
   sub->add_option("--api-key-env", api_key_env,
                   "name of the environment variable holding the API key (sent as a Bearer token, never printed)");
-  sub->add_option("--seed", o.seed, "seed of the partitioner (procedural) and of the model's sampling (llm)");
-  sub->add_option("--rounds", o.rounds, "llm: corrective rounds after an invalid answer")->capture_default_str();
-  sub->add_option("--timeout", o.llm.timeout_s, "llm: seconds to wait for one answer")->capture_default_str();
-  sub->add_option("--retries", o.llm.max_retries, "llm: retries on 429, 5xx and connection errors")->capture_default_str();
-  sub->add_option("--temperature", o.llm.temperature, "llm: sampling temperature")->capture_default_str();
-  sub->add_option("--max-tokens", o.llm.max_tokens, "llm: answer budget in tokens")->capture_default_str();
+  sub->add_option("--seed", o.seed, "seed of the partitioner (procedural) and of the model's sampling (llm)")->transform(Seed());
+  sub->add_option("--rounds", o.rounds, "llm: corrective rounds after an invalid answer")
+      ->capture_default_str()
+      ->transform(WholeIn(0, 100));
+  sub->add_option("--timeout", o.llm.timeout_s, "llm: seconds to wait for one answer")
+      ->capture_default_str()
+      ->check(NumberIn(0.0, 86400.0, /*above_min=*/true));
+  sub->add_option("--retries", o.llm.max_retries, "llm: retries on 429, 5xx and connection errors")
+      ->capture_default_str()
+      ->transform(WholeIn(0, 100));
+  sub->add_option("--temperature", o.llm.temperature, "llm: sampling temperature")->capture_default_str()->check(NumberIn(0.0, 2.0));
+  sub->add_option("--max-tokens", o.llm.max_tokens, "llm: answer budget in tokens")
+      ->capture_default_str()
+      ->transform(WholeIn(1, 10000000));
   sub->add_flag("--no-schema", [&o](std::int64_t) { o.json_schema = false; },
                 "llm: do not send response_format json_schema (servers without constrained decoding)");
   sub->add_flag("--no-template-kwargs", [&o](std::int64_t) { o.llm.disable_thinking = false; },
                 "llm: do not send chat_template_kwargs (hosted APIs that reject unknown fields)");
   sub->add_option("--budget", o.time_budget_s, "procedural: seconds to search for a layout meeting the brief")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NumberIn(0.0, 86400.0, /*above_min=*/true));
 }
 
 namespace {

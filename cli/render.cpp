@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "layout/layout_io.h"
 #include "render/plan_render.h"
 
@@ -86,17 +87,21 @@ Registration registration{30, [](CLI::App& app) {
   sub->add_option("file", command->input, "layout (.json), or a JSONL stream (.jsonl) with --line")->required();
   sub->add_option("-o,--output", command->output, "picture to write: .png or .svg (written atomically)")->required();
   sub->add_option("--line", command->line, "for a .jsonl stream: the line of the record to draw (default: the first)")
-      ->check(CLI::PositiveNumber);
+      ->transform(WholeIn(1, std::numeric_limits<int>::max()));
   sub->add_flag("-f,--force", command->force, "overwrite the output file when it exists");
   auto* scale = sub->add_option("--scale", command->options.pixels_per_metre, "pixels per metre (5..400; default 40)")
-                    ->check(CLI::Range(5.0, 400.0));
+                    ->check(NumberIn(5.0, 400.0));
   sub->add_option("--width", command->options.target_width_px,
                   "total picture width in px; the scale is chosen to fill it")
+      ->transform(WholeIn(1, 30000))
       ->excludes(scale);
-  sub->add_option("--levels", command->options.levels, "levels to draw, e.g. --levels 0,2 (default: all)")->delimiter(',');
+  sub->add_option("--levels", command->options.levels, "levels to draw, e.g. --levels 0,2 (default: all)")
+      ->delimiter(',')
+      ->transform(WholeIn(0, 999));
   sub->add_option("--title", command->options.title, "title line (default: file name, floors, rooms, total area)");
   sub->add_option("--font", command->options.font_family, "font family (default \"DejaVu Sans\")");
-  sub->add_option("--font-size", command->options.font_size_px, "size of room names in px (6..48; default 13)");
+  sub->add_option("--font-size", command->options.font_size_px, "size of room names in px (6..48; default 13)")
+      ->check(NumberIn(6.0, 48.0));
   sub->add_flag_callback("--no-legend", [command] { command->options.legend = false; },
                          "leave out the legend and the scale bar");
   sub->callback([command] { Run(*command); });

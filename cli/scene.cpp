@@ -8,6 +8,7 @@
 
 #include "building/building.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "scene/file_digest.h"
@@ -121,14 +122,15 @@ Registration registration{70, [](CLI::App& app) {
   plan->add_option("--text", command->text,
                    "the request: \"two armchairs, bookshelves full of books and a desk by the window\"; objects the text "
                    "gives other rooms (\"a TV in the meeting room\") are left to them");
-  plan->add_option("--seed", command->seed, "seed of the priors' draws")->capture_default_str();
+  plan->add_option("--seed", command->seed, "seed of the priors' draws")->capture_default_str()->transform(Seed());
   plan->add_option("-o,--output", command->output, "the graph file to write (.json)")->required();
   plan->add_flag("--force", command->force, "overwrite an existing output file");
   plan->add_flag("--allow-invalid", command->allow_invalid, "plan even when the layout breaks the geometric rules");
   plan->add_flag("-q,--quiet", command->quiet, "print nothing on success");
   plan->add_option("--floor-share", command->options.floor_share,
                    "share of the furnishable floor the priors' floor objects may cover")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NumberIn(0.0, 1.0, /*above_min=*/true));
   plan->callback([command] { Run(*command); });
 }};
 

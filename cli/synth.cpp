@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "partitioner/dataset.h"
 #include "util/progress.h"
 #ifdef VILLA_HAVE_RENDER
@@ -124,15 +125,16 @@ Registration registration{30, [](CLI::App& app) {
       "(the recipe and tool version) and DIR/stats.json; prints a summary. The same seed and count give\n"
       "byte-identical layouts.jsonl for any --threads, and shards concatenated in order equal the\n"
       "unsharded run. Exit status: 0 done, 1 some seed failed, 2 usage.");
-  sub->add_option("--count", command->count, "layouts in the whole dataset")->required();
+  sub->add_option("--count", command->count, "layouts in the whole dataset")->required()->transform(WholeIn<uint64_t>(1, 1000000000));
   sub->add_option("--out", command->out, "output directory (must be empty unless --force)")->required();
-  sub->add_option("--seed", command->seed, "dataset seed (default 0)");
+  sub->add_option("--seed", command->seed, "dataset seed (default 0)")->transform(Seed());
   sub->add_option("--floors", command->floors,
                   "ratio of single:two:three story buildings, exact by index (default 2:4:4)");
-  sub->add_option("--grid", command->grid, "coordinate grid in metres (default 0.5)");
-  sub->add_option("--threads", command->threads, "worker threads (default 0 = all cores)");
+  sub->add_option("--grid", command->grid, "coordinate grid in metres (default 0.5)")->check(NumberIn(0.01, 1.0));
+  sub->add_option("--threads", command->threads, "worker threads (default 0 = all cores)")->transform(WholeIn(0, 1024));
   sub->add_option("--shard", command->shard, "write only shard i of n, e.g. 3/8 (default 0/1)");
-  sub->add_option("--previews", command->previews, "render the first K layouts to DIR/previews/*.png");
+  sub->add_option("--previews", command->previews, "render the first K layouts to DIR/previews/*.png")
+      ->transform(WholeIn(0, 100000));
   sub->add_flag("--force", command->force, "write into a non-empty directory, replacing its dataset files");
   sub->callback([command] { Run(*command); });
 }};

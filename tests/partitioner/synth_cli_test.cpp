@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "bad_flags.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 
@@ -190,3 +191,34 @@ TEST_CASE("villa synth --previews renders the first layouts of the shard", "[par
   CHECK(manifest.at("files").at("previews").size() == 2);
 }
 #endif
+
+TEST_CASE("villa synth range-checks its numeric flags: exit 2 naming the flag and the range, nothing written",
+          "[synth][cli][flags]") {
+  TempDir dir;
+  const std::string out = " --out '" + (dir.path / "out").string() + "'";
+  villa::test::CheckBadFlags(
+      {
+          {"--count -5", "--count: expected a whole number from 1 to 1000000000, got -5"},
+          {"--count 99999999999999999999", "--count: expected a whole number from 1 to 1000000000, got 99999999999999999999"},
+          {"--count 0", "--count: expected a whole number from 1 to 1000000000, got 0"},
+          {"--count 2 --seed -1", "--seed: expected a whole number from 0 to 18446744073709551615, got -1"},
+          {"--count 2 --seed 18446744073709551616",
+           "--seed: expected a whole number from 0 to 18446744073709551615, got 18446744073709551616"},
+          {"--count 2 --seed 1e3", "--seed: expected a whole number from 0 to 18446744073709551615, got 1e3"},
+          {"--count 2 --threads -1", "--threads: expected a whole number from 0 to 1024, got -1"},
+          {"--count 2 --previews -2", "--previews: expected a whole number from 0 to 100000, got -2"},
+          {"--count 2 --grid 0", "--grid: expected a number from 0.01 to 1, got 0"},
+      },
+      [&](const std::string& args) {
+        Run run = Villa("synth " + args + out);
+        CHECK_FALSE(fs::exists(dir.path / "out" / "layouts.jsonl"));
+        return std::pair{run.code, run.output};
+      });
+  // The largest seed is a seed; a zero-padded number is decimal, not octal.
+  Run top = Villa("synth --count 1 --threads 1 --seed 18446744073709551615" + out);
+  INFO(top.output);
+  CHECK(top.code == 0);
+  Run padded = Villa("synth --count 1 --threads 1 --seed 010 --force --out '" + (dir.path / "padded").string() + "'");
+  REQUIRE(padded.code == 0);
+  CHECK(Slurp(dir.path / "padded" / "manifest.json").find("\"seed\": 10,") != std::string::npos);
+}

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "bad_flags.h"
+
 namespace {
 
 struct Run {
@@ -132,4 +134,22 @@ TEST_CASE("villa render draws one record of a JSONL stream", "[render][cli]") {
   run = box.Villa("render '" + (box.dir() / "set.jsonl").string() + "' --line 5 -o '" + (box.dir() / "x.svg").string() + "'");
   CHECK(run.code == 1);
   CHECK(run.err.find("set.jsonl: no record on line 5") != std::string::npos);
+}
+
+TEST_CASE("villa render range-checks its numeric flags, naming the flag and the range", "[render][cli][flags]") {
+  Sandbox box;
+  const std::string out = " -o '" + (box.dir() / "p.png").string() + "'";
+  villa::test::CheckBadFlags(
+      {
+          {"--width -1", "--width: expected a whole number from 1 to 30000, got -1"},
+          {"--width 99999999999", "--width: expected a whole number from 1 to 30000, got 99999999999"},
+          {"--levels 0,-1", "--levels: expected a whole number from 0 to 999, got -1"},
+          {"--font-size 1e9", "--font-size: expected a number from 6 to 48, got 1e9"},
+          {"--scale nan", "--scale: expected a number from 5 to 400, got nan"},
+      },
+      [&](const std::string& args) {
+        Run run = box.Villa("render " + Example("l-shaped-house.json") + out + " " + args);
+        CHECK_FALSE(std::filesystem::exists(box.dir() / "p.png"));
+        return std::pair{run.code, run.err};
+      });
 }

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "bad_flags.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 #include "llm/scripted_server.h"
@@ -84,6 +85,35 @@ TEST_CASE("villa plan --llm: a 401 that echoes the API key leaves it out of stde
   const std::string report = *ReadFile(dir / "layout.report.json");
   CHECK(report.find(kKey) == std::string::npos);
   CHECK(report.find("HTTP 401") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace villa
+
+namespace villa {
+
+TEST_CASE("villa plan and eval range-check their numeric flags, naming the flag and the range", "[generator][cli][flags]") {
+  const auto dir = Sandbox("flags");
+  const std::string out = " -o " + (dir / "layout.json").string();
+  test::CheckBadFlags(
+      {
+          {"--seed -1", "--seed: expected a whole number from 0 to 18446744073709551615, got -1"},
+          {"--seed 18446744073709551616", "--seed: expected a whole number from 0 to 18446744073709551615, got 18446744073709551616"},
+          {"--rounds -1", "--rounds: expected a whole number from 0 to 100, got -1"},
+          {"--temperature 3", "--temperature: expected a number from 0 to 2, got 3"},
+          {"--budget 0", "--budget: expected a number above 0 and at most 86400, got 0"},
+          {"--max-tokens 0", "--max-tokens: expected a whole number from 1 to 10000000, got 0"},
+      },
+      [&](const std::string& args) {
+        std::string err;
+        const int status = RunVilla(std::string("plan ") + kRequest + out + " " + args, dir, &err);
+        CHECK_FALSE(std::filesystem::exists(dir / "layout.json"));
+        return std::pair{status, err};
+      });
+  std::ofstream(dir / "prompts.jsonl") << "{\"text\": \"a kitchen\"}\n";
+  std::string err;
+  CHECK(RunVilla("eval " + (dir / "prompts.jsonl").string() + " --jobs -2", dir, &err) == 2);
+  CHECK(err.find("--jobs: expected a whole number from 0 to 1024, got -2") != std::string::npos);
   std::filesystem::remove_all(dir);
 }
 
