@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "util/atomic_file.h"
+#include "util/json_read.h"
 
 namespace villa::annotator {
 
@@ -33,11 +34,11 @@ Result<JournalContents> ReadJournal(const std::filesystem::path& path, bool repa
     JournalJson json;
     bool parsed = true;
     std::string why;
-    try {
-      json = JournalJson::parse(line);
-    } catch (const JournalJson::parse_error& e) {
+    if (Result<JournalJson> read = ParseJson<JournalJson>(line, ""); read.ok()) {
+      json = std::move(*read);
+    } else {
       parsed = false;
-      why = e.what();
+      why = read.error();
     }
     if (!parsed && !complete && !repair) {
       out.warnings.push_back(path.string() + ":" + std::to_string(number) + ": torn last line (" +

@@ -12,6 +12,7 @@
 #include "layout/layout_io.h"
 #include "util/atomic_file.h"
 #include "util/hash.h"
+#include "util/json_read.h"
 
 namespace villa::annotator {
 namespace {
@@ -47,11 +48,7 @@ Result<std::vector<std::string>> FileLines(const fs::path& path) {
 Result<JournalJson> ReadJsonFile(const fs::path& path) {
   auto text = ReadFile(path);
   if (!text) return Error{text.error()};
-  try {
-    return JournalJson::parse(*text);
-  } catch (const JournalJson::parse_error& e) {
-    return Error{path.string() + ": not valid JSON: " + e.what()};
-  }
+  return ParseJson<JournalJson>(*text, path.string());
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "annotator/relabel.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
+#include "util/excerpt.h"
 #include "util/hash.h"
 
 namespace villa::annotator {
@@ -33,8 +34,7 @@ std::optional<TextOrigin> ParseOrigin(const std::string& name) {
 
 // A bad value in a message, cut to about 80 characters.
 std::string Shown(const JournalJson& value) {
-  std::string text = value.dump(-1, ' ', false, JournalJson::error_handler_t::replace);
-  return text.size() > 80 ? text.substr(0, 77) + "..." : text;
+  return Excerpt(value.dump(-1, ' ', false, JournalJson::error_handler_t::replace));
 }
 
 // Kinds of journal line a person's key made (as opposed to --auto, a split's seed or a merge).

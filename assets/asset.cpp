@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "util/atomic_file.h"
+#include "util/excerpt.h"
+#include "util/json_read.h"
 
 namespace villa {
 namespace {
@@ -28,8 +30,6 @@ double RoundMatrixEntry(double v) {
   return r == 0.0 ? 0.0 : r;
 }
 
-std::string Cut(const std::string& text) { return text.size() > 80 ? text.substr(0, 77) + "..." : text; }
-
 // A strict reader over one JSON object: every access names its path; unknown keys are errors.
 class Reader {
  public:
@@ -41,7 +41,7 @@ class Reader {
     std::string at = path_.empty() ? key : (key.empty() ? path_ : path_ + "." + key);
     return where_ + ": " + at + ": " + what;
   }
-  std::string Got(const json& value) const { return Cut(value.dump()); }
+  std::string Got(const json& value) const { return Excerpt(value.dump()); }
 
   const json* Find(const std::string& key) {
     seen_.insert(key);
@@ -254,7 +254,7 @@ nlohmann::ordered_json AssetToJson(const AssetRecord& a) {
 
 Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& where) {
   Reader r(j, where, "");
-  if (!r.IsObject()) return Error{where + ": expected an asset record (a JSON object), got " + Cut(j.dump())};
+  if (!r.IsObject()) return Error{where + ": expected an asset record (a JSON object), got " + Excerpt(j.dump())};
   AssetRecord a;
   std::string error;
   r.String("id", &a.id, &error);
@@ -300,7 +300,7 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
   std::string placement;
   if (r.String("placement", &placement, &error) && error.empty()) {
     auto p = ParsePlacement(placement);
-    if (!p) error = r.Fail("placement", "expected floor, wall, ceiling or surface, got \"" + Cut(placement) + "\"");
+    if (!p) error = r.Fail("placement", "expected floor, wall, ceiling or surface, got \"" + Excerpt(placement) + "\"");
     else a.placement = *p;
   }
   std::vector<std::string> affordances;
@@ -323,7 +323,7 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
         s.Number("clear_height", &surface.clear_height, &error);
         s.String("from", &surface.from, &error);
         if (error.empty() && surface.from != "drop_on_top" && surface.from != "mesh" && surface.from != "procedural")
-          error = s.Fail("from", "expected drop_on_top, mesh or procedural, got \"" + Cut(surface.from) + "\"");
+          error = s.Fail("from", "expected drop_on_top, mesh or procedural, got \"" + Excerpt(surface.from) + "\"");
         if (error.empty() && surface.clear_height <= 0)
           error = s.Fail("clear_height", "must be > 0 m, got " + std::to_string(surface.clear_height));
         s.NoUnknownKeys(&error);
@@ -349,7 +349,7 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
           error = c.Fail("", "min must be below max on every axis");
         if (error.empty() && cavity.open != "closed" && cavity.open != "-y" && cavity.open != "+y" &&
             cavity.open != "-x" && cavity.open != "+x" && cavity.open != "+z")
-          error = c.Fail("open", "expected -y, +y, -x, +x, +z or closed, got \"" + Cut(cavity.open) + "\"");
+          error = c.Fail("open", "expected -y, +y, -x, +x, +z or closed, got \"" + Excerpt(cavity.open) + "\"");
         if (error.empty() && (cavity.floor_surface < -1 ||
                               cavity.floor_surface >= static_cast<int>(a.support_surfaces.size())))
           error = c.Fail("floor_surface", "names no support surface: " + std::to_string(cavity.floor_surface));
@@ -368,7 +368,7 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
       z.Number("depth", &spec.depth, &error);
       if (error.empty() && spec.side != "front" && spec.side != "back" && spec.side != "left" &&
           spec.side != "right" && spec.side != "sides")
-        error = z.Fail("side", "expected front, back, left, right or sides, got \"" + Cut(spec.side) + "\"");
+        error = z.Fail("side", "expected front, back, left, right or sides, got \"" + Excerpt(spec.side) + "\"");
       if (error.empty() && !(spec.depth > 0)) error = z.Fail("depth", "must be > 0 m");
       z.NoUnknownKeys(&error);
       a.interaction_zone = spec;
@@ -402,13 +402,13 @@ Result<std::vector<AssetRecord>> ReadAssetRecords(const std::string& path) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     std::string where = path + ":" + std::to_string(number);
-    json j = json::parse(line, nullptr, false);
-    if (j.is_discarded()) return Error{where + ": not valid JSON"};
-    auto asset = AssetFromJson(j, where);
+    Result<json> j = ParseJson<json>(line, where);
+    if (!j) return Error{j.error()};
+    auto asset = AssetFromJson(*j, where);
     if (!asset) return Error{asset.error()};
     auto [it, fresh] = line_of.emplace(asset->id, number);
     if (!fresh)
-      return Error{where + ": id \"" + Cut(asset->id) + "\" already used on line " + std::to_string(it->second)};
+      return Error{where + ": id \"" + Excerpt(asset->id) + "\" already used on line " + std::to_string(it->second)};
     out.push_back(std::move(asset).value());
   }
   return out;

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "mesh/triangulate.h"
+#include "util/excerpt.h"
 
 namespace villa {
 namespace {
@@ -33,10 +34,6 @@ bool Number(std::string_view token, double* out) {
 bool Integer(std::string_view token, long* out) {
   auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), *out);
   return ec == std::errc() && end == token.data() + token.size();
-}
-
-std::string Cut(std::string_view s) {
-  return s.size() > 80 ? std::string(s.substr(0, 77)) + "..." : std::string(s);
 }
 
 // The rest of a line after its keyword (a name that may hold blanks, e.g. a material or file name).
@@ -132,17 +129,17 @@ Result<ObjModel> ParseObj(std::string_view text, const std::string& where) {
   Status read = ForEachStatement(text, where, [&](std::string_view line, const std::vector<std::string_view>& tokens) -> std::string {
     std::string_view key = tokens[0];
     if (key == "v") {
-      if (tokens.size() < 4) return "vertex needs 3 coordinates: " + Cut(line);
+      if (tokens.size() < 4) return "vertex needs 3 coordinates: " + Excerpt(line);
       Vec3 p;
       if (!Number(tokens[1], &p.x) || !Number(tokens[2], &p.y) || !Number(tokens[3], &p.z))
-        return "vertex coordinates must be finite numbers: " + Cut(line);
+        return "vertex coordinates must be finite numbers: " + Excerpt(line);
       model.positions.push_back(p);
     } else if (key == "f") {
       face.clear();
       for (std::size_t i = 1; i < tokens.size(); ++i) {
         std::string_view corner = tokens[i].substr(0, tokens[i].find('/'));
         long index = 0;
-        if (!Integer(corner, &index) || index == 0) return "bad face corner '" + Cut(tokens[i]) + "'";
+        if (!Integer(corner, &index) || index == 0) return "bad face corner '" + Excerpt(tokens[i]) + "'";
         long count = static_cast<long>(model.positions.size());
         long resolved = index > 0 ? index - 1 : count + index;  // negative: relative to the latest vertex
         if (resolved < 0 || resolved >= count)
@@ -190,17 +187,17 @@ Result<std::vector<ObjMaterial>> ParseMtl(std::string_view text, const std::stri
     }
     ObjMaterial& m = materials.back();
     if (key == "Kd") {
-      if (tokens.size() < 2) return "Kd needs a colour: " + Cut(line);
+      if (tokens.size() < 2) return "Kd needs a colour: " + Excerpt(line);
       if (tokens[1] == "spectral" || tokens[1] == "xyz") return "";  // rare forms: keep the default colour
       for (int i = 0; i < 3; ++i) {
         std::string_view t = tokens.size() > static_cast<std::size_t>(i + 1) ? tokens[i + 1] : tokens[1];  // "Kd r" = grey
-        if (!Number(t, &m.diffuse[i])) return "Kd must be numbers: " + Cut(line);
+        if (!Number(t, &m.diffuse[i])) return "Kd must be numbers: " + Excerpt(line);
         m.diffuse[i] = std::clamp(m.diffuse[i], 0.0, 1.0);
       }
     } else if (key == "d" || key == "Tr") {
       double value = 1.0;
       std::string_view t = tokens.size() > 1 ? tokens.back() : std::string_view{};
-      if (!Number(t, &value)) return std::string(key) + " must be a number: " + Cut(line);
+      if (!Number(t, &value)) return std::string(key) + " must be a number: " + Excerpt(line);
       value = std::clamp(value, 0.0, 1.0);
       m.alpha = key == "d" ? value : 1.0 - value;
     } else if (key == "map_Kd") {

@@ -9,11 +9,10 @@
 
 #include "assets/category.h"
 #include "assets/category_phrase.h"
+#include "util/excerpt.h"
 
 namespace villa {
 namespace {
-
-std::string Cut(const std::string& s) { return s.size() > 80 ? s.substr(0, 77) + "..." : s; }
 
 bool Contains(const std::string& text, std::string_view part) { return text.find(part) != std::string::npos; }
 
@@ -127,7 +126,7 @@ Sh3dCatalog ReadSh3dCatalog(const JavaProperties& p, const std::string& archive_
       double value = 0;
       if (!ParseNumber(*v, &value) || (positive && value <= 0)) {
         if (problem.empty())
-          problem = where + ": " + key + suffix + ": expected a number" + (positive ? " of cm > 0" : "") + ", got \"" + Cut(*v) + "\"";
+          problem = where + ": " + key + suffix + ": expected a number" + (positive ? " of cm > 0" : "") + ", got \"" + Excerpt(*v) + "\"";
         return std::nullopt;
       }
       return value;
@@ -160,7 +159,7 @@ Sh3dCatalog ReadSh3dCatalog(const JavaProperties& p, const std::string& archive_
         ++count;
       }
       if (!ok || count != 9) {
-        if (problem.empty()) problem = where + ": modelRotation" + suffix + ": expected 9 numbers, got \"" + Cut(*rotation) + "\"";
+        if (problem.empty()) problem = where + ": modelRotation" + suffix + ": expected 9 numbers, got \"" + Excerpt(*rotation) + "\"";
       } else {
         piece.model_rotation = m;
       }

@@ -14,6 +14,7 @@
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "util/atomic_file.h"
+#include "util/json_read.h"
 #include "util/text_table.h"
 
 namespace villa {
@@ -77,11 +78,11 @@ Result<CheckReport> CheckExport(const fs::path& dir) {
     ++report.dataset_info_problems;
     Note(report, info_text.error());
   } else {
-    try {
-      info = Json::parse(*info_text);
-    } catch (const Json::parse_error& e) {
+    if (Result<Json> parsed = ParseJson<Json>(*info_text, info_path.string()); parsed.ok()) {
+      info = std::move(*parsed);
+    } else {
       ++report.dataset_info_problems;
-      Note(report, info_path.string() + ": not valid JSON: " + e.what());
+      Note(report, parsed.error());
     }
   }
   if (info && info->is_object()) {

@@ -4,6 +4,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "util/excerpt.h"
+
 namespace villa {
 namespace {
 
@@ -46,7 +48,7 @@ Json LevelSchema(bool ground_only) {
 
 Json ElementSchema(bool window, bool ground_only) {
   Json properties = Json::object();
-  properties["shape"] = StringWithPattern("^" + LinePattern() + "$");
+  properties["shape"] = StringWithPattern(std::string("^") + LinePattern() + "$");  // not "^" + ...: GCC 12 -Wrestrict
   if (window) properties["is_panoramic"] = Json{{"type", "integer"}, {"enum", Json::array({0, 1})}};
   properties["level"] = LevelSchema(ground_only);
   Json required = Json::array({"shape"});
@@ -81,13 +83,9 @@ Json BuildSchema() {
 
 // --- The interpreter of the keyword subset above. ---
 
-std::string Quote(const std::string& key) { return "[\"" + key + "\"]"; }
+std::string Quote(const std::string& key) { return "[\"" + Excerpt(key) + "\"]"; }
 
-std::string Shown(const Json& value) {
-  std::string text = value.dump();
-  if (text.size() > 80) text = text.substr(0, 77) + "...";
-  return text;
-}
+std::string Shown(const Json& value) { return Excerpt(value.dump(-1, ' ', false, Json::error_handler_t::replace)); }
 
 const std::regex& CachedRegex(const std::string& pattern) {
   static thread_local std::unordered_map<std::string, std::regex> cache;

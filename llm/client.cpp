@@ -1,8 +1,6 @@
 // OpenAI-compatible chat completions and embeddings over libcurl. The only file of villa that sees curl.
 #include "llm/client.h"
 
-#include <curl/curl.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +9,8 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+
+#include <curl/curl.h>
 
 #include "util/excerpt.h"
 #include "util/json_read.h"

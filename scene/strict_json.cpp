@@ -5,10 +5,11 @@
 #include <cmath>
 #include <set>
 
+#include "util/excerpt.h"
+#include "util/json_read.h"
+
 namespace villa::scene {
 namespace {
-
-std::string Cut(std::string text) { return text.size() > 80 ? text.substr(0, 77) + "..." : text; }
 
 bool IsIdentifier(std::string_view key) {
   if (key.empty() || std::isdigit(static_cast<unsigned char>(key[0]))) return false;
@@ -112,7 +113,7 @@ class StrictSax : public nlohmann::json_sax<Json> {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
   }
   bool Fail(const std::string& path, const std::string& what) {
-    if (error_.empty()) error_ = source_ + ": " + (path.empty() ? "(document)" : path) + ": " + Cut(what);
+    if (error_.empty()) error_ = source_ + ": " + (path.empty() ? "(document)" : path) + ": " + Excerpt(what);
     return false;
   }
 
@@ -127,6 +128,10 @@ class StrictSax : public nlohmann::json_sax<Json> {
 }  // namespace
 
 Result<Json> ParseStrictJson(std::string_view text, const std::string& source, int max_decimals) {
+  // The nesting limit first (util/json_read.h): a value nested 100,000 deep would overflow any recursive
+  // walk over the document; duplicate keys are this reader's own to name, with their JSON path.
+  if (std::string deep = JsonStructureProblem(text, kMaxJsonDepth, /*duplicate_keys=*/false); !deep.empty())
+    return Error{source + ": " + deep};
   Json root;
   StrictSax sax(root, text, source, max_decimals);
   bool ok = Json::sax_parse(text.begin(), text.end(), &sax, nlohmann::detail::input_format_t::json, true, false);
@@ -146,7 +151,7 @@ void FailAt(const std::string& path, const std::string& what) {
   throw JsonReadError((path.empty() ? std::string("(document)") : path) + ": " + what);
 }
 
-std::string Shown(const Json& value) { return Cut(value.dump()); }
+std::string Shown(const Json& value) { return Excerpt(value.dump()); }
 
 ObjectReader::ObjectReader(const Json& value, std::string path) : value_(value), path_(std::move(path)) {
   if (!value_.is_object()) FailAt(path_, "expected an object, got " + Shown(value_));

@@ -22,7 +22,8 @@ using Json = nlohmann::ordered_json;
 
 // Parses `text`. Errors: "<source>: line L, column C: <parser message>" for malformed JSON, and
 // "<source>: <path>: ..." for a duplicate key or a number with an exponent or more than `max_decimals`
-// decimals (SCENE.md: at most 4 decimals, no exponent).
+// decimals (SCENE.md: at most 4 decimals, no exponent), and "<source>: line L, column C: nested deeper
+// than 64 levels" for a document nested past util/json_read.h's limit.
 Result<Json> ParseStrictJson(std::string_view text, const std::string& source, int max_decimals = 4);
 
 // The path of a member below `path` ("pose" + "x" = "pose.x"; keys that are not identifiers are quoted:

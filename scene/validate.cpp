@@ -5,12 +5,14 @@
 #include <map>
 #include <set>
 
+#include "util/excerpt.h"
+
 namespace villa::scene {
 namespace {
 
 std::string Quoted(std::string_view s) {
   std::string out(1, '"');
-  out.append(s.size() > 80 ? s.substr(0, 77) : s);
+  out.append(Excerpt(s));
   out.push_back('"');
   return out;
 }

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <set>
 
+#include "util/excerpt.h"
+
 namespace villa::solver {
 namespace {
 
@@ -13,8 +15,6 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // SCENE.md: numbers in files carry at most 4 decimals.
 double Round4(double v) { return std::round(v * 1e4) / 1e4; }
-
-std::string Cut(const std::string& text) { return text.size() > 80 ? text.substr(0, 77) + "..." : text; }
 
 nlohmann::ordered_json PoseToJson(const Pose& p) {
   nlohmann::ordered_json j;
@@ -64,7 +64,7 @@ class Reader {
     if (!json_.is_object()) return;
     std::set<std::string> allowed(keys.begin(), keys.end());
     for (auto it = json_.begin(); it != json_.end(); ++it) {
-      if (!allowed.count(it.key())) Fail(path_ + ": unknown key \"" + Cut(it.key()) + "\"");
+      if (!allowed.count(it.key())) Fail(path_ + ": unknown key \"" + Excerpt(it.key()) + "\"");
     }
   }
   std::string String(const std::string& key, bool required = true) {
@@ -73,7 +73,7 @@ class Reader {
       return "";
     }
     if (!At(key).is_string()) {
-      Fail(Path(key) + ": must be a string, is " + Cut(At(key).dump()));
+      Fail(Path(key) + ": must be a string, is " + Excerpt(At(key).dump()));
       return "";
     }
     return At(key).get<std::string>();
@@ -84,12 +84,12 @@ class Reader {
       return std::nullopt;
     }
     if (!At(key).is_number() || !std::isfinite(At(key).get<double>())) {
-      Fail(Path(key) + ": must be a number, is " + Cut(At(key).dump()));
+      Fail(Path(key) + ": must be a number, is " + Excerpt(At(key).dump()));
       return std::nullopt;
     }
     const double v = At(key).get<double>();
     if (v < lo || v > hi) {
-      Fail(Path(key) + ": " + Cut(At(key).dump()) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      Fail(Path(key) + ": " + Excerpt(At(key).dump()) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
       return std::nullopt;
     }
     return v;
@@ -97,7 +97,7 @@ class Reader {
   std::optional<int> Index(const std::string& key) {
     auto v = Number(key, false, -1, 1e6);
     if (v && *v != std::floor(*v)) {
-      Fail(Path(key) + ": must be a whole number, is " + Cut(At(key).dump()));
+      Fail(Path(key) + ": must be a whole number, is " + Excerpt(At(key).dump()));
       return std::nullopt;
     }
     return v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
@@ -126,7 +126,7 @@ std::optional<SemanticEdge> EdgeFrom(const nlohmann::json& json, const std::stri
   r.Known({"source", "relation", "target", "params"});
   const std::string relation = r.String("relation");
   auto kind = ParseSemanticRelation(relation);
-  if (r.ok() && !kind) r.Fail(r.Path("relation") + ": unknown relation \"" + Cut(relation) + "\"");
+  if (r.ok() && !kind) r.Fail(r.Path("relation") + ": unknown relation \"" + Excerpt(relation) + "\"");
   if (!r.ok()) return std::nullopt;
   SemanticEdge e = DefaultEdge(r.String("source"), *kind, r.String("target"));
   if (r.Has("params")) {
@@ -207,7 +207,7 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
       known = true;
     }
   }
-  if (r.ok() && !known) r.Fail(r.Path("action") + ": unknown action \"" + Cut(name) + "\"");
+  if (r.ok() && !known) r.Fail(r.Path("action") + ": unknown action \"" + Excerpt(name) + "\"");
   a.reason = r.String("reason", false);
   if (!r.ok()) return Error{error};
 
@@ -230,7 +230,7 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
     const std::string relation = o.String("relation");
     if (o.ok()) {
       auto rel = ParseRelation(relation);
-      if (!rel) return Error{o.Path("relation") + ": unknown relation \"" + Cut(relation) + "\""};
+      if (!rel) return Error{o.Path("relation") + ": unknown relation \"" + Excerpt(relation) + "\""};
       obj.relation = *rel;
     }
     obj.surface = o.Index("surface").value_or(-1);
@@ -239,7 +239,7 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
     if (o.Has("scale_range")) {
       const nlohmann::json& range = o.At("scale_range");
       if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number()) {
-        return Error{o.Path("scale_range") + ": must be [lo, hi], is " + Cut(range.dump())};
+        return Error{o.Path("scale_range") + ": must be [lo, hi], is " + Excerpt(range.dump())};
       }
       obj.scale_min = range[0].get<double>();
       obj.scale_max = range[1].get<double>();
@@ -247,7 +247,7 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
     const std::string priority = o.String("priority", false);
     if (!priority.empty()) {
       auto p = ParsePriority(priority);
-      if (!p) return Error{o.Path("priority") + ": unknown priority \"" + Cut(priority) + "\""};
+      if (!p) return Error{o.Path("priority") + ": unknown priority \"" + Excerpt(priority) + "\""};
       obj.priority = *p;
     }
     if (o.Has("interaction_zone")) {
@@ -260,14 +260,14 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
         const nlohmann::json& ex = z.At("exempt");
         if (!ex.is_array()) return Error{z.Path("exempt") + ": must be an array of ids"};
         for (const auto& id : ex) {
-          if (!id.is_string()) return Error{z.Path("exempt") + ": must hold strings, has " + Cut(id.dump())};
+          if (!id.is_string()) return Error{z.Path("exempt") + ": must hold strings, has " + Excerpt(id.dump())};
           zone.exempt.push_back(id.get<std::string>());
         }
       }
       obj.zone = zone;
     }
     if (!error.empty()) return Error{error};
-    if (!resolve) return Error{o.Path("asset") + ": no asset library to resolve \"" + Cut(asset) + "\""};
+    if (!resolve) return Error{o.Path("asset") + ": no asset library to resolve \"" + Excerpt(asset) + "\""};
     auto resolved = resolve(asset);
     if (!resolved.ok()) return Error{o.Path("asset") + ": " + resolved.error()};
     obj.asset = resolved->first;

@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "util/excerpt.h"
+
 namespace villa::solver {
 namespace {
 
@@ -22,12 +24,6 @@ std::optional<Enum> ParseName(const std::string_view (&names)[N], std::string_vi
     if (names[i] == name) return static_cast<Enum>(i);
   }
   return std::nullopt;
-}
-
-// Cuts a long value for a message (SCENE.md: about 80 characters).
-std::string Cut(std::string text) {
-  if (text.size() > 80) text = text.substr(0, 77) + "...";
-  return text;
 }
 
 bool Finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -82,7 +78,7 @@ std::vector<WallEdge> WallsAlongFloor(const Ring& free_floor) {
 }
 
 Status RoomProblem::Check() const {
-  const std::string where = "room " + Cut(room) + ": ";
+  const std::string where = "room " + Excerpt(room) + ": ";
   auto fail = [&](const std::string& what) { return Status(Error{where + what}); };
 
   if (free_floor.size() < 3) return fail("free_floor: needs at least 3 vertices, has " + std::to_string(free_floor.size()));
@@ -105,7 +101,7 @@ Status RoomProblem::Check() const {
   }
   for (size_t i = 0; i < keep_outs.size(); ++i) {
     const KeepOut& k = keep_outs[i];
-    const std::string at = "keep_outs[" + std::to_string(i) + "] (" + Cut(k.name) + ")";
+    const std::string at = "keep_outs[" + std::to_string(i) + "] (" + Excerpt(k.name) + ")";
     if (k.polygon.size() < 3 || Area(k.polygon) <= 1e-9) return fail(at + ": polygon needs 3 vertices and an area");
     if (!(k.z_max > k.z_min)) return fail(at + ": z_max must exceed z_min");
   }
@@ -113,11 +109,11 @@ Status RoomProblem::Check() const {
   std::set<std::string> ids;
   for (const ProblemObject& o : objects) {
     if (o.id.empty()) return fail("an object has an empty id");
-    if (!ids.insert(o.id).second) return fail("objects: id \"" + Cut(o.id) + "\" appears twice");
+    if (!ids.insert(o.id).second) return fail("objects: id \"" + Excerpt(o.id) + "\" appears twice");
   }
   for (size_t i = 0; i < objects.size(); ++i) {
     const ProblemObject& o = objects[i];
-    const std::string at = "object \"" + Cut(o.id) + "\"";
+    const std::string at = "object \"" + Excerpt(o.id) + "\"";
     const Vec3& s = o.asset.size;
     if (!(s.x > 0.0 && s.y > 0.0 && s.z >= 0.0) || !std::isfinite(s.x + s.y + s.z)) {
       return fail(at + ": asset size must be positive, is [" + std::to_string(s.x) + ", " + std::to_string(s.y) + ", " +
@@ -146,7 +142,7 @@ Status RoomProblem::Check() const {
     if (o.wall >= static_cast<int>(walls.size())) return fail(at + ": wall " + std::to_string(o.wall) + " does not exist");
     if (o.zone) {
       static const std::set<std::string> kSides = {"front", "back", "left", "right", "sides"};
-      if (!kSides.count(o.zone->side)) return fail(at + ": interaction zone side \"" + Cut(o.zone->side) + "\" unknown");
+      if (!kSides.count(o.zone->side)) return fail(at + ": interaction zone side \"" + Excerpt(o.zone->side) + "\" unknown");
       if (!(o.zone->depth >= 0.0 && o.zone->depth <= 3.0)) return fail(at + ": interaction zone depth not in [0, 3]");
     }
     const bool on_floor = o.parent == "floor";
@@ -158,20 +154,20 @@ Status RoomProblem::Check() const {
       continue;
     }
     int p = Find(o.parent);
-    if (p < 0) return fail(at + ": parent \"" + Cut(o.parent) + "\" is not an object of the room");
+    if (p < 0) return fail(at + ": parent \"" + Excerpt(o.parent) + "\" is not an object of the room");
     if (o.relation != Relation::kOnTop && o.relation != Relation::kInside) {
       return fail(at + ": on another object the relation must be ontop or inside, is " + std::string(RelationName(o.relation)));
     }
     const AssetRecord& pa = objects[p].asset;
     if (o.relation == Relation::kOnTop) {
-      if (pa.support_surfaces.empty()) return fail(at + ": parent \"" + Cut(o.parent) + "\" has no support surface");
+      if (pa.support_surfaces.empty()) return fail(at + ": parent \"" + Excerpt(o.parent) + "\" has no support surface");
       if (o.surface >= static_cast<int>(pa.support_surfaces.size())) {
-        return fail(at + ": surface " + std::to_string(o.surface) + " does not exist on \"" + Cut(o.parent) + "\"");
+        return fail(at + ": surface " + std::to_string(o.surface) + " does not exist on \"" + Excerpt(o.parent) + "\"");
       }
     } else {
-      if (pa.cavities.empty()) return fail(at + ": parent \"" + Cut(o.parent) + "\" has no cavity");
+      if (pa.cavities.empty()) return fail(at + ": parent \"" + Excerpt(o.parent) + "\" has no cavity");
       if (o.cavity >= static_cast<int>(pa.cavities.size())) {
-        return fail(at + ": cavity " + std::to_string(o.cavity) + " does not exist on \"" + Cut(o.parent) + "\"");
+        return fail(at + ": cavity " + std::to_string(o.cavity) + " does not exist on \"" + Excerpt(o.parent) + "\"");
       }
     }
     // The parent chain must end at floor, wall or ceiling.
@@ -183,9 +179,9 @@ Status RoomProblem::Check() const {
   for (size_t i = 0; i < edges.size(); ++i) {
     const SemanticEdge& e = edges[i];
     const std::string at = "edges[" + std::to_string(i) + "] (" + std::string(SemanticRelationName(e.relation)) + ")";
-    if (Find(e.source) < 0) return fail(at + ": source \"" + Cut(e.source) + "\" is not an object of the room");
-    if (Find(e.target) < 0) return fail(at + ": target \"" + Cut(e.target) + "\" is not an object of the room");
-    if (e.source == e.target) return fail(at + ": source and target are the same object \"" + Cut(e.source) + "\"");
+    if (Find(e.source) < 0) return fail(at + ": source \"" + Excerpt(e.source) + "\" is not an object of the room");
+    if (Find(e.target) < 0) return fail(at + ": target \"" + Excerpt(e.target) + "\" is not an object of the room");
+    if (e.source == e.target) return fail(at + ": source and target are the same object \"" + Excerpt(e.source) + "\"");
     if (e.min_gap > e.max_gap) return fail(at + ": min_gap exceeds max_gap");
   }
   return Status::Ok();

@@ -132,7 +132,7 @@ std::string Places(std::string_view text, std::size_t first, std::size_t second)
 
 }  // namespace
 
-std::string JsonStructureProblem(std::string_view text, int max_depth) {
+std::string JsonStructureProblem(std::string_view text, int max_depth, bool duplicate_keys) {
   std::vector<Frame> stack;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -159,7 +159,7 @@ std::string JsonStructureProblem(std::string_view text, int max_depth) {
       }
       ++i;
     } else if (c == '"') {
-      if (stack.empty() || !stack.back().object || !stack.back().expect_key) {
+      if (!duplicate_keys || stack.empty() || !stack.back().object || !stack.back().expect_key) {
         i = ReadString(text, i, nullptr);
         continue;
       }

@@ -27,10 +27,11 @@ namespace villa {
 // Containers (objects and arrays) nested inside one another, the outermost counting 1.
 inline constexpr int kMaxJsonDepth = 64;
 
-// Empty when `text` nests at most `max_depth` containers deep and no object repeats a key; otherwise the
-// first such problem, with its place ("line L, column C: nested deeper than N levels", "<path>: duplicate
-// key "K" on lines A and B"). Text that is not JSON is not judged here: the parser names that.
-std::string JsonStructureProblem(std::string_view text, int max_depth = kMaxJsonDepth);
+// Empty when `text` nests at most `max_depth` containers deep and (with `duplicate_keys`) no object repeats
+// a key; otherwise the first such problem, with its place ("line L, column C: nested deeper than N
+// levels", "<path>: duplicate key "K" on lines A and B"). Text that is not JSON is not judged here: the
+// parser names that. Readers with their own duplicate-key message (scene/strict_json.h) pass false.
+std::string JsonStructureProblem(std::string_view text, int max_depth = kMaxJsonDepth, bool duplicate_keys = true);
 
 namespace json_read_detail {
 

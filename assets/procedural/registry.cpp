@@ -1,5 +1,6 @@
 // The generator table, ids (parse, defaults, canonical form) and the asset record of a procedural asset.
 #include <algorithm>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 
 #include "assets/category_phrase.h"
 #include "assets/procedural/generator.h"
+#include "util/excerpt.h"
 
 namespace villa {
 namespace procedural {
@@ -91,10 +93,6 @@ const Entry* FindEntry(std::string_view name) {
   return nullptr;
 }
 
-std::string Cut(std::string_view text) {
-  return text.size() > 80 ? std::string(text.substr(0, 77)) + "..." : std::string(text);
-}
-
 // Numbers in ids: at most 3 decimals, no trailing zeros ("0.45", "2", "1.2").
 std::string FormatNumber(double v) {
   char buffer[64];
@@ -118,10 +116,10 @@ std::string Join(const std::vector<std::string>& items) {
 // One value of an id: digits with at most 3 decimals, in range, whole for integers; words from the list.
 Status ReadValue(const ProceduralParam& p, std::string_view text, const std::string& where, ParamValues* out) {
   const std::string key = p.name;
-  const std::string shown = key + " = " + Cut(text);
+  const std::string shown = key + " = " + Excerpt(text);
   if (p.kind == ProceduralParam::Kind::kChoice) {
     if (std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end())
-      return Error{where + ": " + key + " = \"" + Cut(text) + "\" is not one of " + Join(p.choices)};
+      return Error{where + ": " + key + " = \"" + Excerpt(text) + "\" is not one of " + Join(p.choices)};
     out->words[key] = std::string(text);
     return {};
   }
@@ -145,7 +143,7 @@ Status ReadValue(const ProceduralParam& p, std::string_view text, const std::str
 
 // Parses `proc:<generator>?k=v&...` into the generator and the values given (defaults not yet applied).
 Result<std::pair<const Entry*, ParamValues>> ParseId(std::string_view id) {
-  const std::string where = Cut(id);
+  const std::string where = Excerpt(id);
   if (id.substr(0, kPrefix.size()) != kPrefix) return Error{where + ": a procedural asset id starts with \"proc:\""};
   std::string_view rest = id.substr(kPrefix.size());
   size_t question = rest.find('?');
@@ -154,7 +152,7 @@ Result<std::pair<const Entry*, ParamValues>> ParseId(std::string_view id) {
   if (!entry) {
     std::vector<std::string> names;
     for (const Entry& e : Entries()) names.push_back(e.def.name);
-    return Error{where + ": unknown generator \"" + Cut(name) + "\" (generators: " + Join(names) + ")"};
+    return Error{where + ": unknown generator \"" + Excerpt(name) + "\" (generators: " + Join(names) + ")"};
   }
   ParamValues values;
   if (question == std::string_view::npos) return std::make_pair(entry, values);
@@ -164,14 +162,14 @@ Result<std::pair<const Entry*, ParamValues>> ParseId(std::string_view id) {
     std::string_view pair = query.substr(start, amp - start);
     start = amp + 1;
     size_t eq = pair.find('=');
-    if (eq == std::string_view::npos || eq == 0) return Error{where + ": \"" + Cut(pair) + "\" is not key=value"};
+    if (eq == std::string_view::npos || eq == 0) return Error{where + ": \"" + Excerpt(pair) + "\" is not key=value"};
     std::string_view key = pair.substr(0, eq), text = pair.substr(eq + 1);
     auto param = std::find_if(entry->listing.params.begin(), entry->listing.params.end(),
                               [&](const ProceduralParam& p) { return p.name == key; });
     if (param == entry->listing.params.end()) {
       std::vector<std::string> keys;
       for (const ProceduralParam& p : entry->listing.params) keys.push_back(p.name);
-      return Error{where + ": unknown key \"" + Cut(key) + "\" for generator " + entry->def.name +
+      return Error{where + ": unknown key \"" + Excerpt(key) + "\" for generator " + entry->def.name +
                    " (keys: " + Join(keys) + ")"};
     }
     if (values.Has(key)) return Error{where + ": key \"" + std::string(key) + "\" given twice"};
@@ -217,7 +215,7 @@ Status CheckCategorySize(std::string_view id, const ParamValues& values, const C
   for (auto [key, axis] : axes) {
     const double v = values.Real(key), lo = category.size_min.*axis, hi = category.size_max.*axis;
     if (v < lo || v > hi)
-      return Error{Cut(id) + ": " + key + " = " + FormatNumber(v) + " is out of range [" + FormatNumber(lo) + ", " +
+      return Error{Excerpt(id) + ": " + key + " = " + FormatNumber(v) + " is out of range [" + FormatNumber(lo) + ", " +
                    FormatNumber(hi) + "] for category " + std::string(category.name)};
   }
   return {};
@@ -345,7 +343,7 @@ Result<ProceduralAsset> MakeProceduralAsset(std::string_view id) {
   const Vec3 want_min{-procedural::Snap(gen.w / 2), -procedural::Snap(gen.d / 2), 0.0};
   const Vec3 want_max{procedural::Snap(gen.w / 2), procedural::Snap(gen.d / 2), gen.h};
   if (box.empty() || Norm(box.min - want_min) > 1e-9 || Norm(box.max - want_max) > 1e-9)
-    return Error{procedural::Cut(id) + ": generator " + entry.def.name +
+    return Error{Excerpt(id) + ": generator " + entry.def.name +
                  " built a mesh that is not its w x d x h box (a bug)"};
 
   AssetRecord& r = asset.record;
@@ -395,7 +393,7 @@ std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh) {
 Result<std::string> ProceduralAssetId(std::string_view category_name, Vec3 size, std::string_view style,
                                       std::uint32_t seed) {
   const CategoryInfo* category = FindCategory(category_name);
-  if (!category) return Error{"unknown category \"" + procedural::Cut(category_name) + "\""};
+  if (!category) return Error{"unknown category \"" + Excerpt(category_name) + "\""};
   if (category->generator.empty())
     return Error{"category " + std::string(category_name) + " has no procedural generator"};
   const Entry* entry = procedural::FindEntry(category->generator);
@@ -405,7 +403,7 @@ Result<std::string> ProceduralAssetId(std::string_view category_name, Vec3 size,
                  "\", which does not make it"};
   const auto& styles = ProceduralStyles();
   if (std::find(styles.begin(), styles.end(), style) == styles.end())
-    return Error{"style \"" + procedural::Cut(style) + "\" is not one of " + procedural::Join(styles)};
+    return Error{"style \"" + Excerpt(style) + "\" is not one of " + procedural::Join(styles)};
   if (!std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z))
     return Error{"size of a " + std::string(category_name) + " must be finite numbers (m)"};
   procedural::ParamValues values;

@@ -26,7 +26,7 @@ std::string SlantedRoom(const std::string& window) {
 
 }  // namespace
 
-TEST_CASE("a bow-tie room is self-intersecting at its crossing point; clockwise rooms stay valid", "[validate][rule1]") {
+TEST_CASE("a bow-tie room is self-intersecting at its crossing point, clockwise rooms stay valid", "[validate][rule1]") {
   Layout layout = Fixture("house_one_floor.json");
   RoomNamed(layout, "office_0/0").polygon = {{8, 5}, {12, 9}, {12, 5}, {8, 9}};  // crosses at (10, 7)
   ValidationReport report = ValidateLayout(layout);
@@ -52,7 +52,7 @@ TEST_CASE("a room without width is reported as zero width, naming it", "[validat
   CHECK(RingProblem({{0, 0}, {2, 2}, {5, 5}}) == "zero width (every corner on one line)");
 }
 
-TEST_CASE("a window 0.25 mm off a slanted wall lies on it; one 2 cm off does not", "[validate][rule3][tolerance]") {
+TEST_CASE("a window 0.25 mm off a slanted wall lies on it, one 2 cm off does not", "[validate][rule3][tolerance]") {
   // (6.06, 5.2) and (4.43, 5.66) are the two-decimal points nearest the wall there: 0.257 and 0.235 mm off.
   Layout on = FromText(SlantedRoom("[(6.06, 5.2), (4.43, 5.66)]"));
   ValidationReport report = ValidateLayout(on);

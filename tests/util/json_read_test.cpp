@@ -49,7 +49,7 @@ TEST_CASE("a duplicate key is an error naming the key, its object and both place
   CHECK(ParseJson<OJson>(R"({"a": {"x": 1}, "b": {"x": 2}})", "ok").ok());
 }
 
-TEST_CASE("syntax errors keep the parser's words; values and member order come through", "[util][json]") {
+TEST_CASE("syntax errors keep the parser's words, values and member order come through", "[util][json]") {
   auto bad = ParseJson<OJson>("{\"a\": tru}", "x.json");
   REQUIRE_FALSE(bad.ok());
   CHECK(bad.error().rfind("x.json: not valid JSON: [json.exception.parse_error.101] parse error at line 1, column 10", 0) == 0);
