@@ -23,9 +23,10 @@
 namespace villa::solver {
 
 // What a keep-out zone protects: one kind per kind of the room context's zones (scene/room_context.h), so
-// the furnish pipeline maps them one to one; only names in messages depend on it.
+// the furnish pipeline maps them one to one, and the walkway the reachability feedback keeps free for a
+// person (solver/reach_feedback.h; floor coverings may lie on it). Names in messages depend on it.
 enum class KeepOutKind {
-  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther
+  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther, kWalkway
 };
 std::string_view KeepOutKindName(KeepOutKind kind);  // "door_sweep", "door_strip", "open_passage", ...
 

@@ -76,7 +76,7 @@ bool SolveOptions::IsValid(std::string* message) const {
 }
 
 struct RoomSolver::Impl {
-  const RoomProblem& problem;
+  RoomProblem problem;  // the solver's own copy: AddKeepOut extends it
   SolveOptions options;
   ExactCheckOptions check_options;
   RoomState state;
@@ -736,6 +736,27 @@ void RoomSolver::RunAgent() {
   if (!im.initialised) return;
   im.RunAgent();
   im.summary.seconds = Since(im.start);
+}
+
+const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
+
+Status RoomSolver::AddKeepOut(KeepOut zone) {
+  Impl& im = *impl_;
+  if (!im.initialised) return Error{"room " + im.problem.room + ": the solver is not initialised"};
+  im.problem.keep_outs.push_back(std::move(zone));
+  if (Status s = im.problem.Check(); !s.ok()) {
+    im.problem.keep_outs.pop_back();
+    return s;
+  }
+  // The arrangement is judged anew against the zone: every remedy may be tried again on what stands in it,
+  // and the best state so far is the present one (the old best never saw the zone).
+  im.tries.clear();
+  im.semantic_tried.clear();
+  im.have_best = false;
+  im.Check();
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  return Status::Ok();
 }
 
 RoomSolution RoomSolver::Solution() const {
