@@ -70,6 +70,22 @@ int RoomProblem::Find(std::string_view id) const {
   return -1;
 }
 
+OrientedBox StandingBox(const ProblemObject& object, const Pose& pose) {
+  const Vec3& s = object.asset.size;
+  OrientedBox b;
+  b.c = {pose.x, pose.y};
+  b.yaw = pose.yaw;
+  b.hx = 0.5 * s.x * pose.scale;
+  b.hy = 0.5 * s.y * pose.scale;
+  b.z0 = pose.z;
+  b.z1 = pose.z + s.z * pose.scale;
+  return b;
+}
+
+bool IsFloorCovering(const ProblemObject& object) {
+  return object.parent == "floor" && object.relation == Relation::kOnTop && object.asset.size.z <= 0.03;
+}
+
 std::vector<WallEdge> WallsAlongFloor(const Ring& free_floor) {
   std::vector<WallEdge> walls;
   for (size_t i = 0; i < free_floor.size(); ++i) {

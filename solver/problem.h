@@ -18,6 +18,8 @@
 #include "assets/asset_mesh.h"
 #include "layout/layout.h"
 #include "mesh/mesh.h"
+#include "solver/box.h"
+#include "solver/placement.h"
 #include "util/result.h"
 
 namespace villa::solver {
@@ -147,6 +149,11 @@ struct RoomProblem {
   // value: unique ids, known parents (no cycles), surfaces and cavities that exist, scale ranges, meshes.
   Status Check() const;
 };
+
+// The object's box where it stands (world: footprint centre, yaw, half sizes and heights, all scaled).
+OrientedBox StandingBox(const ProblemObject& object, const Pose& pose);
+// A flat floor object (a rug, <= 3 cm high, on the floor): part of the floor, walked on, no collisions.
+bool IsFloorCovering(const ProblemObject& object);
 
 // One wall along every edge of the free floor (edge i = vertex i -> i+1), no openings: for tests, benches
 // and rooms whose context has no wall list.

@@ -356,10 +356,19 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
     for (size_t k = 0; k < input.targets.size(); ++k) {
       TargetResult& res = report.targets[k];
       if (res.reachable) continue;
+      // The way's end: the nearest cell of the target, for a room one well inside it (clear of its walls by
+      // kGoalRoom), so the walkway the feedback lays leads into the room, not just over its threshold.
       const long off = graph.offset[res.level];
+      const LevelCells& lc = levels[res.level].cells;
       long best = -1;
+      bool best_inside = false;
       for (long c : target_cells[k]) {
-        if (std::isfinite(through.dist[off + c]) && (best < 0 || through.dist[off + c] < through.dist[off + best])) best = c;
+        if (!std::isfinite(through.dist[off + c])) continue;
+        const bool inside = res.kind == TargetKind::kRoom && lc.clearance_fixed[c] >= r + kGoalRoom;
+        if (best < 0 || (inside && !best_inside) || (inside == best_inside && through.dist[off + c] < through.dist[off + best])) {
+          best = c;
+          best_inside = inside;
+        }
       }
       if (best < 0) {
         res.structural = true;

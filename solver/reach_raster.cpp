@@ -191,7 +191,7 @@ LevelCells ClassifyCells(const FreeSpace& building, const FreeSpace& full, Point
   g.nx = std::max(1, static_cast<int>(std::ceil((hi.x - lo.x) / cell)));
   g.ny = std::max(1, static_cast<int>(std::ceil((hi.y - lo.y) / cell)));
   const std::vector<float> d_full = DistanceTransform(Draw(full, g, z0, z1), g);
-  const std::vector<float> d_building = DistanceTransform(Draw(building, g, z0, z1), g);
+  std::vector<float> d_building = DistanceTransform(Draw(building, g, z0, z1), g);
   const double band = 1.5 * cell + 0.005;  // > the transform's error bound, with room for rounding
   auto decide = [&](const FreeSpace& space, float d, long i) {
     if (d > radius + band) return true;
@@ -201,10 +201,11 @@ LevelCells ClassifyCells(const FreeSpace& building, const FreeSpace& full, Point
   };
   out.cell.assign(g.size(), Cell::kBuilding);
   out.clearance = d_full;
+  out.clearance_fixed = std::move(d_building);
   for (long i = 0; i < g.size(); ++i) {
     if (decide(full, d_full[i], i)) {
       out.cell[i] = Cell::kFree;
-    } else if (decide(building, d_building[i], i)) {
+    } else if (decide(building, out.clearance_fixed[i], i)) {
       out.cell[i] = Cell::kObjects;
     }
   }

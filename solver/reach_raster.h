@@ -40,6 +40,7 @@ struct LevelCells {
   Grid grid;
   std::vector<Cell> cell;
   std::vector<float> clearance;  // m from the centre to the nearest obstacle, objects included (transform)
+  std::vector<float> clearance_fixed;  // the same without objects and door leaves
   long exact = 0;                // cells the query decided itself
 };
 

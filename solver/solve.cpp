@@ -740,16 +740,17 @@ void RoomSolver::RunAgent() {
 
 const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
 
-Status RoomSolver::AddKeepOut(KeepOut zone) {
+Status RoomSolver::AddKeepOuts(const std::vector<KeepOut>& zones) {
   Impl& im = *impl_;
   if (!im.initialised) return Error{"room " + im.problem.room + ": the solver is not initialised"};
-  im.problem.keep_outs.push_back(std::move(zone));
+  const size_t before = im.problem.keep_outs.size();
+  im.problem.keep_outs.insert(im.problem.keep_outs.end(), zones.begin(), zones.end());
   if (Status s = im.problem.Check(); !s.ok()) {
-    im.problem.keep_outs.pop_back();
+    im.problem.keep_outs.resize(before);
     return s;
   }
-  // The arrangement is judged anew against the zone: every remedy may be tried again on what stands in it,
-  // and the best state so far is the present one (the old best never saw the zone).
+  // The arrangement is judged anew against the zones: every remedy may be tried again on what stands in
+  // them, and the best state so far is the present one (the old best never saw them).
   im.tries.clear();
   im.semantic_tried.clear();
   im.have_best = false;

@@ -72,7 +72,7 @@ Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& o
 // The same solver as a session a critic can drive: Initialise() places everything, Apply() takes one
 // action through the path the rule agent uses (repaired or refused when it would break a hard
 // constraint), RunAgent() lets the rule agent finish. The solver keeps its own copy of the problem;
-// AddKeepOut() extends it (the reachability feedback's walkways, solver/reach_feedback.h).
+// AddKeepOuts() extends it (the reachability feedback's walkways, solver/reach_feedback.h).
 class RoomSolver {
  public:
   RoomSolver(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check = {});
@@ -84,10 +84,10 @@ class RoomSolver {
   Status Initialise();
   ActionResult Apply(const Action& action);
   void RunAgent();
-  // Adds a zone no object may enter (checked like the problem's own), checks the arrangement against it
-  // and lets the agent's remedies (move, shrink, remove) apply anew to what stands in it; call RunAgent()
-  // next. An error (nothing changed) when the zone is malformed or the solver is not initialised.
-  Status AddKeepOut(KeepOut zone);
+  // Adds zones no object may enter (checked like the problem's own), checks the arrangement against them
+  // and lets the agent's remedies (move, shrink, remove) apply anew to what stands in them; call RunAgent()
+  // next. An error (nothing changed) when a zone is malformed or the solver is not initialised.
+  Status AddKeepOuts(const std::vector<KeepOut>& zones);
   const RoomProblem& Problem() const;
   RoomSolution Solution() const;
 

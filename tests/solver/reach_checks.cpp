@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <catch2/catch.hpp>
+
+#include "layout/layout_io.h"
+
 namespace villa::solver {
 namespace {
 
@@ -79,6 +83,17 @@ void ForEachWalk(const ReachPath& path, Visit visit) {
 }
 
 }  // namespace
+
+Built BuildFixture(const std::string& file, const ReachOptions& options) {
+  auto layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/" + file);
+  REQUIRE(layout.ok());
+  const BuildOptions build_options;
+  auto building = BuildBuilding(*layout, build_options);
+  REQUIRE(building.ok());
+  auto input = BuildingReachInput(*layout, *building, build_options, options);
+  REQUIRE(input.ok());
+  return {std::move(*building), std::move(*input)};
+}
 
 double PathClearance(const ReachPath& path, const ReachInput& input, int level) {
   double best = 1e300;

@@ -37,22 +37,6 @@ ReachInput Corridor(double width) {
   return in;
 }
 
-// A fixture layout built with the default options, and its reachability input.
-struct Built {
-  BuildingMesh building;
-  ReachInput input;
-};
-Built Build(const std::string& file, const ReachOptions& options) {
-  auto layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/" + file);
-  REQUIRE(layout.ok());
-  const BuildOptions build_options;
-  auto building = BuildBuilding(*layout, build_options);
-  REQUIRE(building.ok());
-  auto input = BuildingReachInput(*layout, *building, build_options, options);
-  REQUIRE(input.ok());
-  return {std::move(*building), std::move(*input)};
-}
-
 TEST_CASE("plan clearance: discs, capsules and polygons, apart and overlapping", "[reach]") {
   const PlanShape box = PlanShape::Polygon(Box(0, 0, 2, 1));
   CHECK(PlanClearance(PlanShape::Disc({3, 0.5}, 0.2), box) == Approx(0.8));
@@ -116,7 +100,7 @@ TEST_CASE("a corridor 0.35 m wide is impassable at radius 0.2 and passable at 0.
 
 TEST_CASE("a room sealed by a wardrobe across its door is unreachable, and the wardrobe is named", "[reach]") {
   const ReachOptions options;
-  const Built built = Build("house_one_floor.json", options);
+  const Built built = BuildFixture("house_one_floor.json", options);
   const BuildingMesh* building = &built.building;
   const ReachInput* input = &built.input;
   // The bedroom's only door is (1.5, 5)-(2.5, 5); a 2 m wardrobe stands against that wall inside.
@@ -157,7 +141,7 @@ TEST_CASE("a room sealed by a wardrobe across its door is unreachable, and the w
 
 TEST_CASE("rooms upstairs are reached from the entrance only through the staircase", "[reach]") {
   const ReachOptions options;
-  const Built built = Build("house_two_floors.json", options);
+  const Built built = BuildFixture("house_two_floors.json", options);
   const BuildingMesh* building = &built.building;
   const ReachInput* input = &built.input;
   REQUIRE(input->stairs.size() == 1);
