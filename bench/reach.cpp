@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,8 @@ double ThreadSeconds() {
 }
 
 struct Totals {
-  int villas = 0, levels = 0, rooms = 0, rooms_reached = 0, paths = 0, structural = 0;
+  int villas = 0, levels = 0, rooms = 0, rooms_reached = 0, paths = 0, structural = 0, leaves = 0;
+  int stair_caused = 0;  // closed by walls, stairs or holes, but reached once stairs and holes are floor
   double raster = 0, roadmap = 0, queries = 0, villa_cpu = 0, worst_villa = 0;
 };
 
@@ -60,12 +62,29 @@ void Run(const std::string& name, const villa::Layout& layout, const villa::solv
     t.roadmap += l.seconds_roadmap;
     t.queries += l.seconds_queries;
   }
+  // Diagnosis of what the building closes: the same check with the staircases and their holes as floor.
+  std::set<std::string> open_without_stairs;
+  if (report->rooms_reachable < report->rooms) {
+    villa::solver::ReachInput flat = *input;
+    std::erase_if(flat.obstacles, [](const villa::solver::ReachObstacle& o) {
+      return o.kind == villa::solver::ObstacleKind::kStair || o.kind == villa::solver::ObstacleKind::kStairHole;
+    });
+    villa::solver::ReachOptions quick = options;
+    quick.paths = false;
+    if (auto r = villa::solver::CheckReach(flat, quick); r.ok()) {
+      for (const auto& target : r->targets) {
+        if (target.reachable) open_without_stairs.insert(target.name);
+      }
+    }
+  }
   if (report->rooms_reachable < report->rooms) {
     std::printf("  %s: %d/%d rooms reached;", name.c_str(), report->rooms_reachable, report->rooms);
     for (const auto& r : report->targets) {
       if (r.reachable) continue;
       t.structural += r.structural;
-      std::printf(" %s%s", r.name.c_str(), r.structural ? " (building)" : "");
+      t.leaves += !r.structural && r.blockers.empty();
+      t.stair_caused += r.structural && open_without_stairs.count(r.name);
+      std::printf(" %s%s", r.name.c_str(), r.structural ? " (walls/stairs)" : r.blockers.empty() ? " (door leaves)" : "");
     }
     std::printf("\n");
   }
@@ -97,8 +116,10 @@ int main(int argc, char** argv) {
     const villa::PartitionSummary s = villa::GenerateLayout(popts, villa::DatasetLayoutSeed(1, i));
     if (s.ok()) Run("synth " + std::to_string(i) + " (" + std::to_string(floors[i]) + " floors)", s.layout, options, t);
   }
-  std::printf("  villas %d, levels %d: rooms reached %d/%d (%d blocked by the building itself), paths drawn %d\n", t.villas,
-              t.levels, t.rooms_reached, t.rooms, t.structural, t.paths);
+  std::printf("  villas %d, levels %d: rooms reached %d/%d, paths drawn %d\n", t.villas, t.levels, t.rooms_reached, t.rooms, t.paths);
+  std::printf("  unreached: %d closed by walls, stairs or holes (%d of them reached when stairs and holes are floor), %d by open "
+              "door leaves\n",
+              t.structural, t.stair_caused, t.leaves);
   std::printf("  per level: raster %.3f s, roadmap %.3f s, queries %.3f s\n", t.raster / t.levels, t.roadmap / t.levels,
               t.queries / t.levels);
   std::printf("  per villa: %.3f s (worst %.3f s)\n", t.villa_cpu / t.villas, t.worst_villa);
