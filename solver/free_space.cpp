@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "mesh/triangulate.h"
 #include "solver/box.h"
@@ -54,13 +55,13 @@ double HullDistance(const std::vector<Point>& a, const std::vector<Point>& b) {
   for (const Point& p : a) {
     for (size_t i = 0; i < EdgeCount(b); ++i) {
       const auto [q0, q1] = EdgeOf(b, i);
-      best = std::min(best, DistToSegment(p, q0, q1));
+      best = std::min(best, PointSegmentDistance(p, {q0, q1}));
     }
   }
   for (const Point& p : b) {
     for (size_t i = 0; i < EdgeCount(a); ++i) {
       const auto [q0, q1] = EdgeOf(a, i);
-      best = std::min(best, DistToSegment(p, q0, q1));
+      best = std::min(best, PointSegmentDistance(p, {q0, q1}));
     }
   }
   return best;
@@ -228,7 +229,7 @@ void FreeSpace::Candidates(const Index& index, Point lo, Point hi, std::vector<i
 bool FreeSpace::InRegion(Point p) const {
   if (region_.empty()) return true;
   bool inside = false;
-  for (const Ring& r : region_) inside ^= Inside(p, r);
+  for (const Ring& r : region_) inside ^= PointInRing(p, r, 0);
   return inside;
 }
 
@@ -252,7 +253,7 @@ FreeSpace::Nearest FreeSpace::RegionClearance(const PlanShape& shape, double rea
   if (region_.empty() || shape.points.empty()) return {reach, kNone};
   if (!InRegion(shape.points[0])) {
     double d = 1e300;
-    for (const auto& [a, b] : edges_) d = std::min(d, DistToSegment(shape.points[0], a, b));
+    for (const auto& [a, b] : edges_) d = std::min(d, PointSegmentDistance(shape.points[0], {a, b}));
     return {-d - shape.radius, kRegion};
   }
   Point lo, hi;

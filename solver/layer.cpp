@@ -11,6 +11,7 @@
 
 #include "mesh/geometry2d.h"
 #include "solver/residuals.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -381,8 +382,8 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     for (const Prism& prism : layer.prisms) {
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
       if (body.covering && !prism.binds_coverings) continue;
-      if (slack >= 0.0 && !geo::Inside({body.p[0], body.p[1]}, prism.polygon) &&
-          geo::DistToRing({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
+      if (slack >= 0.0 && !PointInRing({body.p[0], body.p[1]}, prism.polygon, 0) &&
+          DistanceToBoundary({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
         continue;
       add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), o.object_gap, o.weight_keep_out),
           {b}, true);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 
+#include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "solver/free_space.h"
 #include "solver/reach_paths.h"
@@ -130,8 +131,8 @@ std::vector<long> TargetCells(const LevelCells& lc, const ReachTarget& t, double
       for (int i = i0; i <= i1; ++i) {
         const long c = static_cast<long>(j) * g.nx + i;
         const Point p = g.Centre(c);
-        const bool in = Inside(p, a.polygon);
-        if (in || (a.mode == TargetArea::Mode::kTouch && DistToRing(p, a.polygon) <= grow)) cells.push_back(c);
+        const bool in = PointInRing(p, a.polygon, 0);
+        if (in || (a.mode == TargetArea::Mode::kTouch && DistanceToBoundary(p, a.polygon) <= grow)) cells.push_back(c);
       }
     }
   }
@@ -151,7 +152,7 @@ long GoalCell(const LevelCells& lc, const ReachTarget& t, const std::vector<long
     const Point p = lc.grid.Centre(c);
     double outside = 1e300, to_centroid = 1e300;
     for (const TargetArea& a : t.areas) {
-      const double d = Inside(p, a.polygon) ? 0.0 : DistToRing(p, a.polygon);
+      const double d = PointInRing(p, a.polygon, 0) ? 0.0 : DistanceToBoundary(p, a.polygon);
       outside = std::min(outside, d);
       Point m{0, 0};
       for (const Point& q : a.polygon) m = Add(m, q);
@@ -179,7 +180,7 @@ std::vector<Point> Corners(const std::vector<Point>& p, double tolerance) {
     double worst = 0.0;
     size_t at = a;
     for (size_t k = a + 1; k < b; ++k) {
-      const double d = DistToSegment(p[k], p[a], p[b]);
+      const double d = PointSegmentDistance(p[k], {p[a], p[b]});
       if (d > worst) worst = d, at = k;
     }
     if (worst > tolerance) {

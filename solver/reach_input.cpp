@@ -144,7 +144,7 @@ bool ShutInOpening(const MeshPart& leaf, const Layout& layout) {
   }
   const Point along = Unit(Sub(door->shape.b, door->shape.a));
   const double across = std::abs(Cross(along, Unit(Sub(b, a))));
-  return across < 0.2 && DistToSegment(Lerp(a, b, 0.5), door->shape.a, door->shape.b) < 0.2;
+  return across < 0.2 && PointSegmentDistance(Lerp(a, b, 0.5), {door->shape.a, door->shape.b}) < 0.2;
 }
 
 }  // namespace
@@ -240,7 +240,7 @@ Result<ReachInput> BuildingReachInput(const Layout& layout, const BuildingMesh& 
   const Point mid = Lerp(e.shape.a, e.shape.b, 0.5);
   const Point n = Left(Unit(Sub(e.shape.b, e.shape.a)));
   bool in_left = false;
-  for (const Ring& r : input.levels[0].floor) in_left ^= Inside(Add(mid, Scale(n, 0.05)), r);
+  for (const Ring& r : input.levels[0].floor) in_left ^= PointInRing(Add(mid, Scale(n, 0.05)), r, 0);
   input.inside = in_left ? n : Scale(n, -1.0);
   input.depth = options.exterior_wall_thickness;
   for (const auto* list : {&layout.doors, &layout.opens, &layout.entrances}) {
