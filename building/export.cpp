@@ -345,7 +345,8 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
       node.extras = named(o.name);
       for (auto it = o.extras.begin(); it != o.extras.end(); ++it)
         if (it.key() != "name") node.extras[it.key()] = it.value();
-      doc.nodes[room->second].children.push_back(add_node(std::move(node)));
+      const int index = add_node(std::move(node));  // may grow doc.nodes: take the room's node after it
+      doc.nodes[room->second].children.push_back(index);
     }
     doc.asset_extras = furniture->asset_extras;
   }
