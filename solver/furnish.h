@@ -103,7 +103,8 @@ struct RoomReport {
   std::string outcome;               // "converged" / "budget" / "infeasible"
   std::string reason;                // why, in words
   int objects = 0;                   // NO: objects placed
-  double seconds_plan = 0.0, seconds_acquire = 0.0, seconds_solve = 0.0, seconds = 0.0;
+  double seconds_plan = 0.0, seconds_acquire = 0.0, seconds_solve = 0.0, seconds = 0.0;  // wall
+  double cpu_seconds = 0.0;  // the room's thread CPU time (a room runs on one thread): load-independent
 };
 
 struct FurnishSummary {

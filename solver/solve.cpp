@@ -522,13 +522,27 @@ struct RoomSolver::Impl {
       if (A.priority != B.priority) return A.priority < B.priority ? a : b;
       return Volume(A, state.placements[a].pose.scale) <= Volume(B, state.placements[b].pose.scale) ? a : b;
     };
+    // Objects in trouble with the building (a wall, a door leaf or sweep, the stairs): a child there because
+    // its parent is there gives way only through its parent (books in a bookcase that stands in a door's
+    // sweep cannot leave it by moving along their shelf).
+    std::set<int> with_building;
+    for (const CollisionPair& pair : metrics.pairs)
+      if (pair.building) with_building.insert(state.Find(pair.a));
+    for (const auto& [a_id, b_id] : energy.overlaps)
+      if (state.Find(b_id) < 0) with_building.insert(state.Find(a_id));
+    auto carrier = [&](int i) {
+      int top = i;
+      for (int p = state.parent[i]; p >= 0; p = state.parent[p])
+        if (with_building.count(p)) top = p;
+      return top;
+    };
     for (const CollisionPair& pair : metrics.pairs) {
       const int a = state.Find(pair.a), b = pair.building ? -1 : state.Find(pair.b);
-      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : carrier(a));
     }
     for (const auto& [a_id, b_id] : energy.overlaps) {
       const int a = state.Find(a_id), b = state.Find(b_id);
-      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : carrier(a));
     }
     for (size_t i = 0; i < state.objects.size(); ++i) {
       const ObjectCheck& c = metrics.per_object[i];

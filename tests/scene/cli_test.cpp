@@ -11,6 +11,7 @@
 #include "scene/file_digest.h"
 #include "scene/scene.h"
 #include "scene/validate.h"
+#include "villa_cli.h"
 
 using namespace villa;
 using namespace villa::scene;
@@ -18,19 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
-Run Villa(const std::string& args) {
-  fs::path log = fs::temp_directory_path() / ("villa_scene_cli_" + std::to_string(::getpid()) + ".log");
-  int status = std::system((std::string(VILLA_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  Run run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, std::string((std::istreambuf_iterator<char>(in)), {})};
-  fs::remove(log);
-  return run;
-}
+using Run = testing::CliRun;
+Run Villa(const std::string& args) { return testing::RunVilla(args); }
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
