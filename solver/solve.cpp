@@ -630,6 +630,17 @@ struct RoomSolver::Impl {
         a.id = state.objects[victim].id;
         a.reason = victim == i ? "no free slot even at its smallest scale: remove it (least important of its conflict)"
                                : "no room for both: remove the least important object of the conflict with " + id;
+        if (victim == i) ++n;  // nothing is left to try for it
+        return a;
+      }
+      if (n == 3) {
+        // Its conflict gave way and it is still in trouble (a thing on a surface its shrunk parent no longer
+        // holds): it goes itself, so the room ends physically valid.
+        ++n;
+        Action a;
+        a.kind = ActionKind::kRemoveEntity;
+        a.id = id;
+        a.reason = "still colliding, floating or out of bounds after its conflict gave way: remove it";
         return a;
       }
     }
