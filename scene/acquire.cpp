@@ -17,6 +17,10 @@ namespace {
 
 // m left between a child and the sides of its surface or cavity (the solver's child gap, both sides).
 constexpr double kChildMargin = 0.01;
+// m kept between a low object's top and the window sill above it (the solver's object gap).
+constexpr double kSillClearance = 0.02;
+// Objects up to this much (m) taller than what passes under a sill are meant to pass under it.
+constexpr double kUnderSillReach = 0.1;
 
 struct Extent {
   double x = 0, y = 0, z = 0;
@@ -204,6 +208,13 @@ Result<RoomAssets> AssetAcquirer::Acquire(const RoomContext& room, std::vector<S
   for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
 
+  // The height that passes under the lowest window sill of the room (0 when it has no window).
+  double lowest_sill = 0.0;
+  for (const WallEdge& w : room.walls)
+    for (const WallWindow& win : w.windows)
+      if (!win.panoramic && (lowest_sill == 0.0 || win.sill < lowest_sill)) lowest_sill = win.sill;
+  const double under_sill = lowest_sill > 0.0 ? lowest_sill - kSillClearance : 0.0;
+
   RoomAssets out;
   out.choices.resize(objects.size());
   // One asset per (category, parent, relation): the chairs round a table share a mesh.
@@ -233,6 +244,11 @@ Result<RoomAssets> AssetAcquirer::Acquire(const RoomContext& room, std::vector<S
         }
       }
       const CategoryInfo* category = FindCategory(o.category);
+      // Low furniture against a wall (counters, a dishwasher) is made to pass under the room's windows
+      // when its category allows it: a counter as high as the sill cannot stand under the window.
+      if (o.relation == Relation::kAgainstWall && category && under_sill > 0.0 && wanted.z > under_sill &&
+          wanted.z < under_sill + kUnderSillReach && category->size_min.z <= under_sill)
+        wanted.z = under_sill;
       const bool structural = options_.structural_procedural && category && category->has_cavity &&
                               (needs[i].surface || needs[i].cavity);
       const AssetRecord* chosen = nullptr;

@@ -567,10 +567,21 @@ struct RoomSolver::Impl {
   int LeastImportant(int i) const {
     std::vector<int> set = {i};
     const std::string& id = state.objects[i].id;
+    bool with_objects = false;
     for (const CollisionPair& pair : metrics.pairs) {
       if (pair.building) continue;
       if (pair.a == id) set.push_back(state.Find(pair.b));
       if (pair.b == id) set.push_back(state.Find(pair.a));
+      with_objects = with_objects || pair.a == id || pair.b == id;
+    }
+    // In trouble with the building alone (a window's zone above the sill): what stands on it and rises
+    // above it is part of the conflict (a counter under a window is low enough once the bottle on it goes).
+    if (!with_objects) {
+      const double top = state.placements[i].pose.z + state.objects[i].asset.size.z * state.placements[i].pose.scale;
+      for (int c : state.children[i]) {
+        const double child_top = state.placements[c].pose.z + state.objects[c].asset.size.z * state.placements[c].pose.scale;
+        if (state.objects[c].relation == Relation::kOnTop && child_top > top + 1e-6) set.push_back(c);
+      }
     }
     const int p = state.parent[i];
     if (p >= 0) {

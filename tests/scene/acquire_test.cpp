@@ -208,3 +208,32 @@ TEST_CASE("Acquisition options are checked", "[scene][acquire]") {
 }
 
 }  // namespace villa::scene
+
+namespace villa::scene {
+
+TEST_CASE("Low furniture against a wall is made to pass under the room's window sills", "[scene][acquire]") {
+  AssetLibrary empty = AssetLibrary::FromRecords({});
+  auto acquirer = AssetAcquirer::Make(empty, {}, 0, "");
+  REQUIRE(acquirer.ok());
+  RoomContext kitchen;
+  kitchen.name = "kitchen_0/0";
+  kitchen.category = Category::kKitchen;
+  WallEdge wall;
+  wall.windows.push_back({"kitchen0_window", {1.0, 2.0}, 0.9, 2.1, false});
+  kitchen.walls.push_back(wall);
+  std::vector<SceneObject> objects = {Object("counter-0", "counter", {1.2, 0.6, 0.92}, "floor", Relation::kAgainstWall),
+                                      Object("fridge-0", "fridge", {0.7, 0.65, 1.8}, "floor", Relation::kAgainstWall),
+                                      Object("sideboard-0", "sideboard", {1.4, 0.45, 0.9})};
+  for (SceneObject& o : objects) o.room = kitchen.name;
+  REQUIRE((*acquirer)->Acquire(kitchen, objects).ok());
+  CHECK(objects[0].size.z == Approx(0.88));  // the sill (0.9) less 2 cm
+  CHECK(objects[1].size.z == Approx(1.8));   // a fridge is meant to be tall
+  CHECK(objects[2].size.z == Approx(0.9));   // free-standing: it does not go under a window
+  // Without a window nothing changes.
+  kitchen.walls.clear();
+  std::vector<SceneObject> again = {Object("counter-0", "counter", {1.2, 0.6, 0.92}, "floor", Relation::kAgainstWall)};
+  REQUIRE((*acquirer)->Acquire(kitchen, again).ok());
+  CHECK(again[0].size.z == Approx(0.92));
+}
+
+}  // namespace villa::scene
