@@ -120,7 +120,11 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
   for (const std::string& d : mapped->dropped) dropped_ids.push_back(d.substr(0, d.find(": ")));
 
   std::vector<scene::SceneObject> placed;
-  if (mapped->problem.objects.empty()) {
+  if (mapped->problem.free_floor.size() < 3 && !mapped->problem.objects.empty()) {
+    settle(scene::SolveOutcome::kInfeasible, "the room has no free floor inside its walls: nothing placed");
+    out.entry.solve->removed = dropped_ids;
+    for (const ProblemObject& o : mapped->problem.objects) out.entry.solve->removed.push_back(o.id);
+  } else if (mapped->problem.objects.empty()) {
     std::string why = "nothing to place";
     if (!plan->record.notes.empty()) why += ": " + plan->record.notes.front();
     settle(scene::SolveOutcome::kConverged, why);

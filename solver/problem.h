@@ -147,6 +147,11 @@ struct RoomProblem {
   Status Check() const;
 };
 
+// Empty when `mesh` lies within the box of `asset`'s size (origin at the bottom centre; 1 cm or 1 % of a side
+// of slack), else which side it leaves and by how much. The optimiser's boxes are the record's size: a mesh
+// reaching outside them would collide where the optimiser sees nothing, so RoomProblem::Check refuses it.
+std::string MeshOutsideAssetBox(const AssetRecord& asset, const AssetMesh& mesh);
+
 // One wall along every edge of the free floor (edge i = vertex i -> i+1), no openings: for tests, benches
 // and rooms whose context has no wall list.
 std::vector<WallEdge> WallsAlongFloor(const Ring& free_floor);

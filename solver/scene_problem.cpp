@@ -136,6 +136,16 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
     }
     auto resolved = resolve(o.asset);
     if (!resolved.ok()) return Error{o.id + ": " + resolved.error()};
+    if (!resolved->second || resolved->second->TriangleCount() == 0) {
+      out.dropped.push_back(o.id + ": asset " + o.asset + " has no mesh");
+      dropped.insert(o.id);
+      continue;
+    }
+    if (std::string outside = MeshOutsideAssetBox(resolved->first, *resolved->second); !outside.empty()) {
+      out.dropped.push_back(o.id + ": asset " + o.asset + ": " + outside);
+      dropped.insert(o.id);
+      continue;
+    }
     ProblemObject po;
     po.id = o.id;
     po.category = o.category;
