@@ -130,7 +130,7 @@ TEST_CASE("A room's context, objects and building become the solver's problem", 
   CHECK(p.edges[2].max_angle == Approx(20.0 * std::numbers::pi / 180.0));
 }
 
-TEST_CASE("A solved arrangement becomes posed scene objects; removed ones leave zones and edges", "[solver][scene_problem]") {
+TEST_CASE("A solved arrangement becomes posed scene objects, and removed ones leave zones and edges", "[solver][scene_problem]") {
   House h = LoadHouse();
   std::vector<scene::SceneObject> objects = {Planned("sofa-0", "proc:sofa", "floor", scene::Relation::kAgainstWall),
                                              Planned("coffee-table-0", "proc:table?category=coffee-table"),
