@@ -2,6 +2,7 @@
 
 #include <unordered_map>
 
+#include "layout/footprint.h"
 #include "layout/layout_io.h"
 
 namespace villa::annotator {
@@ -20,9 +21,8 @@ std::filesystem::path LayoutsPath(const std::filesystem::path& dir) { return dir
 std::filesystem::path JournalPath(const std::filesystem::path& dir) { return dir / "annotations.journal.jsonl"; }
 
 bool IsShapeClass(const std::string& shape) {
-  for (const char* name : {"rectangle", "L", "U", "T", "H", "irregular"})
-    if (shape == name) return true;
-  return false;
+  const std::optional<ShapeClass> parsed = ParseShapeClass(shape);
+  return parsed && ShapeClassName(*parsed) == shape;  // the exact name only, not the lower-case letters
 }
 
 Result<Dataset> LoadDataset(const std::filesystem::path& dir) {

@@ -5,29 +5,26 @@
 #include <map>
 #include <sstream>
 
-#include "annotator/plan_geometry.h"
+#include "layout/geometry.h"
 #include "layout/topology.h"
+#include "util/hash.h"
 
 namespace villa::annotator {
 namespace {
 
-// splitmix64: small, fast, identical on every platform (std::*_distribution is not).
+// The describer's draws: util's SplitMix64 stream with its own seed offset and a modulo pick, so the
+// drafted texts stay what they were.
 class Rng {
  public:
-  explicit Rng(std::uint64_t seed) : state_(seed ^ 0x5851f42d4c957f2dULL) {}
-  std::uint64_t Next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
+  explicit Rng(std::uint64_t seed) : stream_(seed ^ 0x5851f42d4c957f2dULL) {}
+  std::uint64_t Next() { return stream_.Next(); }
   int Below(int n) { return n <= 1 ? 0 : static_cast<int>(Next() % static_cast<std::uint64_t>(n)); }
   bool Chance(int percent) { return Below(100) < percent; }
   template <class T>
   const T& Pick(const std::vector<T>& items) { return items[Below(static_cast<int>(items.size()))]; }
 
  private:
-  std::uint64_t state_;
+  SplitMix64 stream_;
 };
 
 const char* kNumberWords[] = {"zero", "one", "two", "three", "four", "five", "six", "seven",
@@ -243,7 +240,7 @@ Links FindLinks(const Layout& layout, const Analysis& an) {
     if (layout.rooms[b].category != Category::kBalcony) continue;
     bool panoramic = false;
     for (const Element& w : layout.windows)
-      if (w.panoramic && w.OnLevel(layout.rooms[b].level) && SegmentOnRing(w.shape, layout.rooms[b].polygon))
+      if (w.panoramic && w.OnLevel(layout.rooms[b].level) && RingHoldsSegment(layout.rooms[b].polygon, w.shape, kOnWallTolerance))
         panoramic = true;
     if (!panoramic) continue;
     for (const Connection& c : an.connections) {
@@ -261,7 +258,7 @@ Links FindLinks(const Layout& layout, const Analysis& an) {
     const Room& room = layout.rooms[r];
     if (room.category == Category::kRoom || room.category == Category::kUtilityRoom) continue;
     if (!UniqueOnLevel(layout, an, r)) continue;
-    Bounds bounds = LevelBounds(layout, room.level);
+    Box2 bounds = LevelBounds(layout, room.level);
     if (bounds.width() <= 0 || bounds.height() <= 0) continue;
     Point c = Centroid(room.polygon);
     double fx = (c.x - bounds.min_x) / bounds.width();

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "annotator/plan_geometry.h"
 #include "annotator/relabel.h"
 #include "layout/shape_codec.h"
 #include "layout/topology.h"
 #include "layout/validate.h"
+#include "layout/walls.h"
 
 namespace villa::annotator {
 namespace {
@@ -22,7 +22,8 @@ std::vector<int> WindowsOf(const Layout& layout, int room) {
   std::vector<int> out;
   for (int i = 0; i < static_cast<int>(layout.windows.size()); ++i) {
     const Element& w = layout.windows[i];
-    if (w.OnLevel(layout.rooms[room].level) && SegmentOnRing(w.shape, layout.rooms[room].polygon)) out.push_back(i);
+    if (w.OnLevel(layout.rooms[room].level) && RingHoldsSegment(layout.rooms[room].polygon, w.shape, kOnWallTolerance))
+      out.push_back(i);
   }
   return out;
 }
@@ -42,11 +43,21 @@ std::vector<Link> LinksOf(const std::vector<Connection>& connections, int room) 
   return out;
 }
 
+// The wall pieces of `room` that are exterior (other < 0) or shared with room `other`.
+std::vector<Segment> Stretches(const Layout& layout, int room, int other) {
+  std::vector<Segment> out;
+  for (const WallPiece& piece : RoomWallPieces(layout, room))
+    if (piece.neighbour == (other < 0 ? kExterior : other)) out.push_back(piece.segment);
+  return out;
+}
+std::vector<Segment> ExteriorStretches(const Layout& layout, int room) { return Stretches(layout, room, -1); }
+std::vector<Segment> SharedStretches(const Layout& layout, int room, int other) { return Stretches(layout, room, other); }
+
 // The intervals along `stretch` (metres from its start) not covered by the given elements.
-std::vector<std::pair<double, double>> FreeIntervals(const Stretch& stretch, const std::vector<const Element*>& blockers) {
-  const Point& a = stretch.segment.a;
-  const Point& b = stretch.segment.b;
-  double len = stretch.length();
+std::vector<std::pair<double, double>> FreeIntervals(const Segment& stretch, const std::vector<const Element*>& blockers) {
+  const Point& a = stretch.a;
+  const Point& b = stretch.b;
+  double len = Length(stretch);
   std::vector<std::pair<double, double>> cuts;
   for (const Element* e : blockers) {
     Segment s = e->shape;
@@ -71,10 +82,10 @@ std::vector<std::pair<double, double>> FreeIntervals(const Stretch& stretch, con
 
 // A point of `stretch` at distance t from its start, on the 2-decimal grid and exactly on the stretch's
 // line (within 1e-7 m), or nothing when rounding would move it off the wall.
-std::optional<Point> GridPointAt(const Stretch& stretch, double t) {
-  const Point& a = stretch.segment.a;
-  const Point& b = stretch.segment.b;
-  double len = stretch.length();
+std::optional<Point> GridPointAt(const Segment& stretch, double t) {
+  const Point& a = stretch.a;
+  const Point& b = stretch.b;
+  double len = Length(stretch);
   Point p{RoundToFormat(a.x + (b.x - a.x) * t / len), RoundToFormat(a.y + (b.y - a.y) * t / len)};
   double off = std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / len;
   if (off > 1e-7) return std::nullopt;
@@ -82,21 +93,19 @@ std::optional<Point> GridPointAt(const Stretch& stretch, double t) {
 }
 
 // Places a segment of width in [min_width, want] centred in the widest free interval of the stretches.
-std::optional<Segment> Place(const std::vector<Stretch>& stretches, const std::vector<const Element*>& blockers,
+std::optional<Segment> Place(const std::vector<Segment>& stretches, const std::vector<const Element*>& blockers,
                              double min_width, double want) {
   struct Candidate {
-    const Stretch* stretch;
+    const Segment* stretch;
     double lo, hi;
   };
   std::vector<Candidate> candidates;
-  for (const Stretch& s : stretches)
+  for (const Segment& s : stretches)
     for (auto [lo, hi] : FreeIntervals(s, blockers))
       if (hi - lo >= min_width + 0.02) candidates.push_back({&s, lo, hi});
   // Axis-aligned walls first (their points round exactly), then the widest room.
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    auto axis = [](const Stretch* s) {
-      return std::abs(s->segment.a.x - s->segment.b.x) < 1e-9 || std::abs(s->segment.a.y - s->segment.b.y) < 1e-9;
-    };
+    auto axis = [](const Segment* s) { return std::abs(s->a.x - s->b.x) < 1e-9 || std::abs(s->a.y - s->b.y) < 1e-9; };
     if (axis(x.stretch) != axis(y.stretch)) return axis(x.stretch);
     return (x.hi - x.lo) > (y.hi - y.lo);
   });
@@ -184,7 +193,7 @@ std::vector<Fix> FindFixes(const Layout& layout) {
         for (int o : layout.RoomsOnLevel(room.level)) {
           if (o == r || layout.rooms[o].category == Category::kBalcony) continue;
           double len = 0;
-          for (const Stretch& s : SharedStretches(layout, r, o)) len = std::max(len, s.length());
+          for (const Segment& s : SharedStretches(layout, r, o)) len = std::max(len, Length(s));
           if (len > best_len && CanPlaceShared(layout, r, o, 0.8, kDoorWidth)) {
             best = o;
             best_len = len;

@@ -5,8 +5,8 @@
 #include <functional>
 #include <limits>
 
-#include "annotator/plan_geometry.h"
 #include "annotator/utf8.h"
+#include "layout/geometry.h"
 
 namespace villa::annotator {
 namespace {
@@ -50,7 +50,7 @@ Canvas DrawFloorPlan(const Layout& layout, int level, const CanvasOptions& o) {
   canvas.width = std::max(o.width, 1);
   canvas.height = std::max(o.height, 1);
   canvas.cells.assign(static_cast<std::size_t>(canvas.width) * canvas.height, CanvasCell{});
-  Bounds b = LayoutBounds(layout);
+  Box2 b = LayoutBounds(layout);
   if (b.width() <= 0 || b.height() <= 0) return canvas;
 
   // Scale: rows per metre sy, columns per metre sx = aspect * sy; the plan's corners land on cells.

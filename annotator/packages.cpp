@@ -11,26 +11,15 @@
 
 #include "layout/layout_io.h"
 #include "util/atomic_file.h"
+#include "util/hash.h"
 
 namespace villa::annotator {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::uint64_t Mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-std::uint64_t HashText(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ULL;
-  }
-  return Mix(h);
-}
+// FNV-1a of the text, finished with SplitMix64's mixer (util/hash.h).
+std::uint64_t HashText(const std::string& text) { return SplitMix64Mix(Fnv1a64(text)); }
 
 std::string Hex(std::uint64_t v, int digits) {
   char buffer[24];

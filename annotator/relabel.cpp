@@ -4,18 +4,11 @@
 #include <map>
 #include <set>
 
-#include "annotator/plan_geometry.h"
+#include "layout/geometry.h"
 #include "layout/topology.h"
 
 namespace villa::annotator {
 namespace {
-
-std::string ShortCategory(Category category) {
-  std::string name(CategoryName(category));
-  const std::string suffix = "-room";
-  if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
-  return name;
-}
 
 // A name not used by another element of the same kind (`self` is the element being renamed).
 std::string UniqueName(const std::vector<Element>& elements, const Element* self, const std::string& base) {
@@ -33,14 +26,14 @@ std::string UniqueName(const std::vector<Element>& elements, const Element* self
 
 bool HasWindow(const Layout& layout, int room) {
   for (const Element& w : layout.windows)
-    if (w.OnLevel(layout.rooms[room].level) && SegmentOnRing(w.shape, layout.rooms[room].polygon)) return true;
+    if (w.OnLevel(layout.rooms[room].level) && RingHoldsSegment(layout.rooms[room].polygon, w.shape, kOnWallTolerance)) return true;
   return false;
 }
 
 }  // namespace
 
 std::string RoomToken(const Room& room) {
-  std::string token = ShortCategory(room.category) + std::to_string(room.level);
+  std::string token = std::string(CategoryToken(room.category)) + std::to_string(room.level);
   if (room.index > 0) token += "." + std::to_string(room.index);
   return token;
 }

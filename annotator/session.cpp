@@ -13,18 +13,10 @@
 #include "annotator/relabel.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
+#include "util/hash.h"
 
 namespace villa::annotator {
 namespace {
-
-std::uint64_t Fnv1a(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ULL;
-  }
-  return h;
-}
 
 std::optional<AnnotationStatus> ParseStatus(const std::string& name) {
   for (auto s : {AnnotationStatus::kPending, AnnotationStatus::kVerified, AnnotationStatus::kRejected,
@@ -148,7 +140,7 @@ const std::vector<std::string>& PresetRejectReasons() {
 }
 
 std::uint64_t DraftSeed(const DatasetRecord& record, int draft) {
-  return (record.seed * 0x9e3779b97f4a7c15ULL) ^ Fnv1a(record.id) ^ (static_cast<std::uint64_t>(draft) * 0xd1b54a32d192ed03ULL);
+  return (record.seed * kSplitMix64Gamma) ^ Fnv1a64(record.id) ^ (static_cast<std::uint64_t>(draft) * 0xd1b54a32d192ed03ULL);
 }
 
 JournalJson StateToJson(const AnnotationState& state) {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <clocale>
 #include <cmath>
@@ -29,10 +30,8 @@
 #include "layout/layout_io.h"
 #include "layout/topology.h"
 #include "layout/validate.h"
-#include "util/atomic_file.h"
-#ifdef VILLA_ANNOTATOR_HAS_PALETTE
 #include "render/palette.h"
-#endif
+#include "util/atomic_file.h"
 
 namespace villa::annotator {
 namespace {
@@ -44,14 +43,12 @@ using Clock = std::chrono::steady_clock;
 struct CategoryKey {
   int key;
   Category category;
-  const char* shortname;  // for the legend and tight labels
 };
 const CategoryKey kCategoryKeys[] = {
-    {'l', Category::kLivingRoom, "living"}, {'b', Category::kBedroom, "bed"},
-    {'k', Category::kKitchen, "kitchen"},   {'w', Category::kBathroom, "bath"},
-    {'d', Category::kDiningRoom, "dining"}, {'c', Category::kChildrenRoom, "child"},
-    {'o', Category::kOffice, "office"},     {'m', Category::kMeetingRoom, "meeting"},
-    {'s', Category::kUtilityRoom, "stair"}, {'y', Category::kBalcony, "balcony"},
+    {'l', Category::kLivingRoom}, {'b', Category::kBedroom},      {'k', Category::kKitchen},
+    {'w', Category::kBathroom},   {'d', Category::kDiningRoom},   {'c', Category::kChildrenRoom},
+    {'o', Category::kOffice},     {'m', Category::kMeetingRoom},  {'s', Category::kUtilityRoom},
+    {'y', Category::kBalcony},
 };
 
 // The filters offered by F, with their keys.
@@ -71,10 +68,11 @@ const FilterKey kFilterKeys[] = {
     {'D', Filter::kDisagreements, "disagreements: two people decided differently"},
 };
 
-const char* ShortName(Category c) {
-  for (const auto& k : kCategoryKeys)
-    if (k.category == c) return k.shortname;
-  return "room";
+// layout.h's short name in lower case, for the legend and tight labels ("bed", "child", "utility").
+std::string ShortName(Category c) {
+  std::string name(CategoryShortName(c));
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return name;
 }
 
 std::string Seconds(int seconds) {
@@ -186,13 +184,8 @@ void InitColours() {
     Category c = static_cast<Category>(i);
     short bg = COLOR_WHITE;
     if (rich) {
-#ifdef VILLA_ANNOTATOR_HAS_PALETTE
       Rgb rgb = CategoryColor(c);
       bg = Xterm256(rgb.r, rgb.g, rgb.b);
-#else
-      static const short soft[] = {255, 223, 153, 222, 116, 216, 218, 151, 183, 250, 157};
-      bg = soft[i];
-#endif
     } else {
       static const short basic[] = {COLOR_WHITE, COLOR_YELLOW, COLOR_BLUE,  COLOR_RED,   COLOR_CYAN, COLOR_MAGENTA,
                                     COLOR_MAGENTA, COLOR_GREEN, COLOR_BLUE, COLOR_WHITE, COLOR_GREEN};
@@ -671,7 +664,7 @@ void App::DrawStatus(int h, int w) {
     counts += " [" + std::string(FilterName(filter_)) + ": " + std::to_string(s_.CountMatching(filter_)) + "] ";
   std::string keys = " ?:help a:accept x:reject f:fix u:undo n/p space:next to do g:go F:filter q:quit";
   std::string legend;
-  for (const auto& k : kCategoryKeys) legend += std::string(1, static_cast<char>(k.key)) + ":" + k.shortname + " ";
+  for (const auto& k : kCategoryKeys) legend += std::string(1, static_cast<char>(k.key)) + ":" + ShortName(k.category) + " ";
   // Line h-2: the last message; line h-1: counts and keys.
   Put(h - 2, 0, PadToWidth(Shown(message_.empty() ? " " + legend : " " + message_), w), message_bad_ ? kPairBad : kPairDim,
       message_bad_ ? A_BOLD : A_NORMAL);

@@ -8,7 +8,7 @@
 
 #include "building/building.h"
 #include "building/export.h"
-#include "building/render_view.h"
+#include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "tests/building/test_layouts.h"
 
@@ -48,10 +48,11 @@ int main() {
   double vcr = MedianMs(50, [&] { (void)MeasureVcr(*building); });
   size_t glb_bytes = 0;
   double glb = MedianMs(20, [&] { glb_bytes = BuildingToGlb(*building)->size(); });
-  Camera cam = FramingCamera(*building, -35, 38, 800, 600);
+  const ViewScene scene = ViewSceneOf(*building);
+  Camera cam = FramingCamera(scene.Bounds(), -35, 38, 800, 600);
   RenderOptions one;
-  double view = MedianMs(3, [&] { (void)RenderView(*building, cam, one); });
-  double preview = MedianMs(3, [&] { (void)RenderPreview(*building); });
+  double view = MedianMs(3, [&] { (void)RenderView(scene, cam, one); });
+  double preview = MedianMs(3, [&] { (void)RenderPreview(scene); });
   std::printf("build (layout -> meshes)      median %8.2f ms  (50 runs)\n", build);
   std::printf("VCR on the built geometry     median %8.3f ms  (50 runs)\n", vcr);
   std::printf("glb export (assimp, in memory) median %7.2f ms  (20 runs, %zu bytes)\n", glb, glb_bytes);

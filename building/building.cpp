@@ -1,4 +1,4 @@
-// Layout -> building volume. Per level: the footprint (from the rooms' edges), exterior walls along it
+// Layout -> building volume. Per level: the footprint (layout/footprint.h), exterior walls along it
 // (mitred at every corner), interior walls along `interiors` (cut at junctions by the bisectors between
 // neighbouring walls, so any angle and any number of walls meet without overlap), openings cut through
 // them, door leaves and glass, staircases in the utility rooms and slabs with their stair holes.
@@ -10,6 +10,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "layout/door_swing.h"
+#include "layout/footprint.h"
+#include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "mesh/solids.h"
 
@@ -18,7 +21,9 @@ namespace {
 
 using namespace geo;
 
-constexpr double kOnLine = 1e-4;  // m: a point this close to a line or node is on it
+// m: a point this close to a line or node is on it. The building snaps more generously than the rules
+// (layout.h's tolerance policy) so that nearly-valid input (--allow-invalid) still becomes solids.
+constexpr double kOnLine = 1e-4;
 
 std::string Fmt(double v) {
   std::ostringstream out;
@@ -27,132 +32,8 @@ std::string Fmt(double v) {
   return out.str();
 }
 
-// ---------------------------------------------------------------------------------------------------
-// Regions from directed edges: the boundary of a union of CCW polygons (or of a difference, with the
-// subtracted one given CW) is what is left after cancelling every edge against its reverse.
-
-struct Edge {
-  Point a;
-  Point b;
-};
-
 using Key = std::pair<long long, long long>;
 Key KeyOf(Point p) { return {std::llround(p.x * 1e5), std::llround(p.y * 1e5)}; }
-
-// Splits every edge at the given points lying strictly inside it.
-std::vector<Edge> SplitAtPoints(const std::vector<Edge>& edges, const std::vector<Point>& points) {
-  std::vector<Edge> out;
-  for (const Edge& e : edges) {
-    double len = Dist(e.a, e.b);
-    if (len < kOnLine) continue;
-    Point d = Scale(Sub(e.b, e.a), 1.0 / len);
-    std::vector<double> cuts;
-    for (Point p : points) {
-      double s = Dot(Sub(p, e.a), d);
-      if (s > kOnLine && s < len - kOnLine && std::abs(Cross(d, Sub(p, e.a))) < kOnLine) cuts.push_back(s);
-    }
-    std::sort(cuts.begin(), cuts.end());
-    Point from = e.a;
-    for (double s : cuts) {
-      Point to = Add(e.a, Scale(d, s));
-      if (Dist(from, to) > kOnLine) out.push_back({from, to});
-      from = to;
-    }
-    out.push_back({from, e.b});
-  }
-  return out;
-}
-
-struct Region {
-  Ring outer;
-  std::vector<Ring> holes;
-};
-
-std::vector<Region> RegionsFromEdges(std::vector<Edge> edges) {
-  std::vector<Point> points;
-  for (const Edge& e : edges) {
-    points.push_back(e.a);
-    points.push_back(e.b);
-  }
-  edges = SplitAtPoints(edges, points);
-  std::map<std::pair<Key, Key>, int> count;
-  for (const Edge& e : edges) ++count[{KeyOf(e.a), KeyOf(e.b)}];
-  std::vector<Edge> kept;
-  for (const Edge& e : edges) {
-    auto forward = count.find({KeyOf(e.a), KeyOf(e.b)});
-    auto backward = count.find({KeyOf(e.b), KeyOf(e.a)});
-    if (backward != count.end() && backward->second > 0 && forward->second > 0) {
-      --backward->second;
-      --forward->second;
-      continue;
-    }
-    if (forward->second > 0) {
-      --forward->second;
-      kept.push_back(e);
-    }
-  }
-  std::multimap<Key, int> outgoing;
-  for (int i = 0; i < static_cast<int>(kept.size()); ++i) outgoing.emplace(KeyOf(kept[i].a), i);
-  std::vector<bool> used(kept.size(), false);
-  std::vector<Ring> loops;
-  for (size_t start = 0; start < kept.size(); ++start) {
-    if (used[start]) continue;
-    Ring loop;
-    int current = static_cast<int>(start);
-    while (current >= 0 && !used[current]) {
-      used[current] = true;
-      loop.push_back(kept[current].a);
-      Point dir = Sub(kept[current].b, kept[current].a);
-      // At a vertex shared by two loops, take the sharpest left turn: each loop stays simple.
-      int next = -1;
-      double best = -10.0;
-      auto [lo, hi] = outgoing.equal_range(KeyOf(kept[current].b));
-      for (auto it = lo; it != hi; ++it) {
-        if (used[it->second]) continue;
-        Point out = Sub(kept[it->second].b, kept[it->second].a);
-        double turn = std::atan2(Cross(dir, out), Dot(dir, out));
-        if (turn > best) {
-          best = turn;
-          next = it->second;
-        }
-      }
-      current = next;
-    }
-    if (loop.size() >= 3) loops.push_back(loop);
-  }
-  std::vector<Region> regions;
-  std::vector<Ring> holes;
-  for (Ring& loop : loops) {
-    bool is_hole = SignedArea(loop) < 0.0;
-    Ring clean = CleanRing(loop);
-    if (clean.empty()) continue;
-    if (is_hole)
-      holes.push_back(clean);
-    else
-      regions.push_back({clean, {}});
-  }
-  for (Ring& hole : holes) {
-    // The smallest outer ring holding the hole's first vertex nudged inward.
-    int best = -1;
-    for (int i = 0; i < static_cast<int>(regions.size()); ++i) {
-      Point probe = hole[0];
-      bool inside = Inside(Lerp(probe, hole[1 % hole.size()], 0.5), regions[i].outer) ||
-                    Inside(probe, regions[i].outer);
-      if (inside && (best < 0 || Area(regions[i].outer) < Area(regions[best].outer))) best = i;
-    }
-    if (best >= 0) regions[best].holes.push_back(hole);
-  }
-  return regions;
-}
-
-std::vector<Edge> RingEdges(const Ring& ring, bool reversed = false) {
-  std::vector<Edge> out;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    Point a = ring[i], b = ring[(i + 1) % ring.size()];
-    out.push_back(reversed ? Edge{b, a} : Edge{a, b});
-  }
-  return out;
-}
 
 // Starts the ring at its lowest, then leftmost vertex: wall names do not depend on room order.
 Ring Canonical(Ring ring) {
@@ -245,8 +126,8 @@ std::vector<WallPiece> InteriorWalls(const Layout& layout, int level, const Ring
     double len = Dist(a, b);
     if (len < 0.02) continue;
     Point d = Scale(Sub(b, a), 1.0 / len);
-    if (DistToRing(Lerp(a, b, 0.5), footprint) < kOnLine && DistToRing(a, footprint) < kOnLine &&
-        DistToRing(b, footprint) < kOnLine) {
+    if (DistanceToBoundary(Lerp(a, b, 0.5), footprint) < kOnLine && DistanceToBoundary(a, footprint) < kOnLine &&
+        DistanceToBoundary(b, footprint) < kOnLine) {
       warnings.push_back("interior " + base + ": lies on the exterior boundary; the exterior wall stands there");
       continue;
     }
@@ -344,7 +225,7 @@ std::vector<WallPiece> InteriorWalls(const Layout& layout, int level, const Ring
     double extend[2];
     for (int e = 0; e < 2; ++e) {
       int node = span_nodes[i][e];
-      on_boundary[e] = DistToRing(nodes[node], footprint) < kOnLine;
+      on_boundary[e] = DistanceToBoundary(nodes[node], footprint) < kOnLine;
       // A junction needs room for the bisector cuts; an end on the facade needs none: the inner
       // face of the exterior wall lies inside the footprint, so clipping to it trims the piece there.
       extend[e] = on_boundary[e] ? 0.0 : at_node[node].size() > 1 ? 2.0 : 0.0;
@@ -476,7 +357,7 @@ std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const
   Point side_mid[4] = {at((u0 + u1) / 2, v0), at(u1, (v0 + v1) / 2), at((u0 + u1) / 2, v1), at(u0, (v0 + v1) / 2)};
   double inset[4];
   for (int k = 0; k < 4; ++k)
-    inset[k] = (DistToRing(side_mid[k], footprint) < kOnLine ? options.exterior_wall_thickness
+    inset[k] = (DistanceToBoundary(side_mid[k], footprint) < kOnLine ? options.exterior_wall_thickness
                                                              : options.interior_wall_thickness / 2.0) + 0.02;
   double fu0 = u0 + inset[3], fu1 = u1 - inset[1], fv0 = v0 + inset[0], fv1 = v1 - inset[2];
   // Arrive (and leave) beside the room's opening: on the level above, else this one.
@@ -485,7 +366,7 @@ std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const
     for (const auto* list : {&layout.opens, &layout.doors}) {
       for (const Element& e : *list) {
         Point mid = Lerp(e.shape.a, e.shape.b, 0.5);
-        if (e.OnLevel(l) && DistToRing(mid, poly) < kOnLine) access = mid;
+        if (e.OnLevel(l) && DistanceToBoundary(mid, poly) < kOnLine) access = mid;
         if (access) break;
       }
       if (access) break;
@@ -550,7 +431,7 @@ std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const
 
 bool RingInside(const Ring& inner, const Ring& outer) {
   for (Point p : inner)
-    if (!Inside(p, outer) && DistToRing(p, outer) > kOnLine) return false;
+    if (!PointInRing(p, outer, 0) && DistanceToBoundary(p, outer) > kOnLine) return false;
   return true;
 }
 
@@ -622,24 +503,23 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
   std::vector<Ring> room_rings(layout.rooms.size());
   std::vector<Ring> footprints(levels);
   for (int level = 0; level < levels; ++level) {
-    std::vector<Edge> edges;
+    std::vector<Ring> rings;
     for (int i : layout.RoomsOnLevel(level)) {
       const Room& room = layout.rooms[i];
       room_rings[i] = CleanRing(room.polygon);
       if (room_rings[i].empty() || Area(room_rings[i]) < 1e-4)
         return Error{"rooms[\"" + room.name() + "\"].shape: degenerate polygon (area " + Fmt(Area(room.polygon)) + " m2)"};
-      auto e = RingEdges(room_rings[i]);
-      edges.insert(edges.end(), e.begin(), e.end());
+      rings.push_back(room_rings[i]);
       building.rooms.push_back({room.name(), room.category, level, Area(room_rings[i])});
     }
-    if (edges.empty()) return Error{"level " + std::to_string(level) + " has no rooms (levels must stack from 0)"};
-    auto regions = RegionsFromEdges(edges);
+    if (rings.empty()) return Error{"level " + std::to_string(level) + " has no rooms (levels must stack from 0)"};
+    auto regions = FootprintOf(rings, kOnLine);
     size_t holes = 0;
-    for (const Region& r : regions) holes += r.holes.size();
+    for (const PolygonWithHoles& r : regions) holes += r.holes.size();
     if (regions.size() != 1 || holes != 0)
       return Error{"level " + std::to_string(level) + ": rooms do not tile one polygon (" + std::to_string(regions.size()) +
                    " outline(s), " + std::to_string(holes) + " hole(s)); run `villa validate`"};
-    footprints[level] = Canonical(regions[0].outer);
+    footprints[level] = Canonical(CleanRing(regions[0].outer));
   }
 
   // Staircases: one in each utility room below the top level, with the hole it needs in the slab above.
@@ -702,18 +582,17 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
       building.parts.push_back(std::move(part));
     }
     if (level > 0) {
-      auto edges = RingEdges(footprints[level - 1]);
-      auto minus = RingEdges(footprints[level], true);
-      edges.insert(edges.end(), minus.begin(), minus.end());
+      // The roof terraces: what this level leaves open of the one below.
       int k = 0;
-      for (const Region& region : RegionsFromEdges(edges)) {
-        std::vector<Ring> holes = region.holes;
+      for (const PolygonWithHoles& region : FootprintOf({footprints[level - 1], footprints[level]}, kOnLine, {false, true})) {
+        std::vector<Ring> holes;
+        for (const Ring& h : region.holes) holes.push_back(CleanRing(h));
         for (Ring& h : holes_in(region.outer)) holes.push_back(h);
         MeshPart part;
         part.name = "terrace_" + std::to_string(level) + (k > 0 ? ":" + std::to_string(k + 1) : "");
         part.kind = PartKind::kTerrace;
         part.level = level;
-        part.mesh = ExtrudePlan(region.outer, holes, z0, z0 + ts);
+        part.mesh = ExtrudePlan(CleanRing(region.outer), holes, z0, z0 + ts);
         building.parts.push_back(std::move(part));
         ++k;
       }
@@ -826,31 +705,35 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         part.kind = PartKind::kDoorLeaf;
         double lt = options.door_leaf_thickness;
         double width = p.cut.s1 - p.cut.s0 - 2 * gap;
-        // Swung 90 degrees open: hinged at either jamb, to the +normal side first (inward for exterior
-        // walls, which only swing inward), whichever way the leaf's sweep hits no wall and no staircase;
-        // closed in its opening when none is free.
+        // Swung 90 degrees open as layout/door_swing.h's rule says (the floor plan draws the same swing):
+        // into its room, hinged at the jamb nearer that room's corner. Hung closed in its opening when the
+        // leaf's sweep would hit a wall or a staircase.
         bool placed_open = false;
         if (options.door_leaves_open) {
-          bool exterior = walls[p.piece].exterior;
-          for (int side : {1, -1}) {
-            if (exterior && side < 0) continue;
-            for (int hinge = 0; hinge < 2 && !placed_open; ++hinge) {
-              double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt;
-              double q0 = side > 0 ? half + gap : -half - gap - width;
-              // The swept quarter disc lies within this square beside the opening.
-              double sweep_s0 = hinge == 0 ? p.cut.s0 : p.cut.s1 - width - 2 * gap;
-              Ring sweep = CleanRing({f.ToPlan(sweep_s0, q0), f.ToPlan(sweep_s0 + width + 2 * gap, q0),
-                                      f.ToPlan(sweep_s0 + width + 2 * gap, q0 + width),
-                                      f.ToPlan(sweep_s0, q0 + width)}, 1e-9);
-              bool blocked = false;
-              for (const WallPiece& w : walls) blocked = blocked || ConvexOverlapArea(w.plan, sweep) > 1e-4;
-              for (const BuiltStair& st : building.stairs)
-                blocked = blocked || (st.level == level && ConvexOverlapArea(st.footprint, sweep) > 1e-4);
-              if (blocked) continue;
-              part.mesh = BoxInFrame(f, s0, s0 + lt, q0, q0 + width, p.cut.z0 + 0.01, p.cut.z1 - gap);
-              placed_open = true;
-            }
-            if (placed_open) break;
+          const DoorSwing swing = SwingOfDoor(layout, *p.element, level);
+          const int side = Dot(swing.leaf_side, f.normal) >= 0.0 ? 1 : -1;
+          const double s_hinge = f.S(swing.hinge);
+          const int hinge = std::abs(s_hinge - p.cut.s0) <= std::abs(s_hinge - p.cut.s1) ? 0 : 1;
+          double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt;
+          double q0 = side > 0 ? half + gap : -half - gap - width;
+          // The swept quarter disc lies within this square beside the opening.
+          double sweep_s0 = hinge == 0 ? p.cut.s0 : p.cut.s1 - width - 2 * gap;
+          Ring sweep = CleanRing({f.ToPlan(sweep_s0, q0), f.ToPlan(sweep_s0 + width + 2 * gap, q0),
+                                  f.ToPlan(sweep_s0 + width + 2 * gap, q0 + width), f.ToPlan(sweep_s0, q0 + width)},
+                                 1e-9);
+          std::string blocker;
+          for (const WallPiece& w : walls)
+            if (blocker.empty() && ConvexOverlapArea(w.plan, sweep) > 1e-4) blocker = "wall " + w.name;
+          for (const BuiltStair& st : building.stairs)
+            if (blocker.empty() && st.level == level && ConvexOverlapArea(st.footprint, sweep) > 1e-4)
+              blocker = "the staircase in " + st.room;
+          if (blocker.empty()) {
+            part.mesh = BoxInFrame(f, s0, s0 + lt, q0, q0 + width, p.cut.z0 + 0.01, p.cut.z1 - gap);
+            placed_open = true;
+          } else {
+            building.warnings.push_back(std::string(ElementKindKey(p.element->kind)) + " " + p.name + ": its swing" +
+                                        (swing.into >= 0 ? " into " + layout.rooms[swing.into].name() : "") + " would hit " +
+                                        blocker + "; hung closed");
           }
         }
         if (!placed_open)

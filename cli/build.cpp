@@ -11,7 +11,7 @@
 #include "cli/command.h"
 #include "building/building.h"
 #include "building/export.h"
-#include "building/render_view.h"
+#include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 
@@ -86,7 +86,7 @@ void Run(BuildCommand& command) {
   double preview_s = 0.0;
   if (!command.preview.empty()) {
     start = std::chrono::steady_clock::now();
-    auto image = RenderPreview(*building);
+    auto image = RenderPreview(ViewSceneOf(*building));
     if (!image) return Fail(command.preview + ": " + image.error());
     if (Status s = WritePng(*image, command.preview); !s) return Fail(s.error());
     preview_s = Seconds(start);

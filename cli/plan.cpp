@@ -70,7 +70,7 @@ void AddBackendFlags(CLI::App* sub, std::string& backend, std::string& api_key_e
   sub->add_option("--retries", o.llm.max_retries, "llm: retries on 429, 5xx and connection errors")->capture_default_str();
   sub->add_option("--temperature", o.llm.temperature, "llm: sampling temperature")->capture_default_str();
   sub->add_option("--max-tokens", o.llm.max_tokens, "llm: answer budget in tokens")->capture_default_str();
-  sub->add_flag("--no-schema", [&o](std::int64_t) { o.llm.json_schema = false; },
+  sub->add_flag("--no-schema", [&o](std::int64_t) { o.json_schema = false; },
                 "llm: do not send response_format json_schema (servers without constrained decoding)");
   sub->add_flag("--no-template-kwargs", [&o](std::int64_t) { o.llm.disable_thinking = false; },
                 "llm: do not send chat_template_kwargs (hosted APIs that reject unknown fields)");

@@ -4,19 +4,16 @@
 // DIR/stats.json and optional preview pictures. Byte-identical for any --threads; shards concatenated in
 // order equal the unsharded run.
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/command.h"
 #include "partitioner/dataset.h"
-#include "util/atomic_file.h"
 #include "util/progress.h"
-#include "util/version.h"
 #ifdef VILLA_HAVE_RENDER
 #include "render/plan_render.h"
 #endif
@@ -76,16 +73,12 @@ void ParseShard(const std::string& text, uint64_t* index, uint64_t* count) {
     throw UsageError("synth: --shard \"" + text + "\": expected i/n, e.g. 0/4");
 }
 
-uint64_t Fnv1a(uint64_t hash, const std::string& text) {
-  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001B3ull;
-  return hash;
-}
-
 void Run(const SynthCommand& command) {
   SynthOptions options;
   options.count = command.count;
   options.seed = command.seed;
   ParseFloors(command.floors, options.floor_weights);
+  options.floors_text = command.floors;
   ParseShard(command.shard, &options.shard_index, &options.shard_count);
   options.threads = command.threads;
   options.previews = command.previews;
@@ -94,103 +87,32 @@ void Run(const SynthCommand& command) {
   options.out = command.out;
   std::string problem;
   if (!options.IsValid(&problem)) throw UsageError("synth: " + problem);
-#ifndef VILLA_HAVE_RENDER
+  if (Status output = CheckSynthOutput(options); !output) throw UsageError("synth: " + output.error());
+
+  // Previews are floor plans (render/): the partitioner itself draws nothing.
+  PreviewWriter preview;
+#ifdef VILLA_HAVE_RENDER
+  preview = [](const Layout& layout, const std::string& title, const std::filesystem::path& png) {
+    PlanRenderOptions render;
+    render.source_name = title;
+    return RenderPlan(layout, png, render);
+  };
+#else
   if (options.previews > 0) throw UsageError("synth: --previews needs the render component, which this build lacks");
 #endif
-
-  namespace fs = std::filesystem;
-  const fs::path dir(command.out);
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw UsageError("synth: --out " + command.out + ": exists and is not a directory");
-    if (!fs::is_empty(dir, ec) && !options.force)
-      throw UsageError("synth: --out " + command.out + ": directory is not empty (use --force to write into it)");
-  }
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(command.out + ": cannot create directory: " + ec.message());
-
   const uint64_t first = options.count * options.shard_index / options.shard_count;
   const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
-  AtomicFileWriter layouts(dir / "layouts.jsonl");
-  if (!layouts.ok()) throw std::runtime_error(layouts.error());
-  uint64_t checksum = 0xCBF29CE484222325ull;
-  std::vector<std::string> preview_lines;
-  std::vector<std::string> failures;
-  SynthStats stats;
-  {
-    ProgressBar bar("synth", last - first);
-    stats = SynthesizeShard(
-        options,
-        [&](const std::string& line) {
-          layouts.Write(line);
-          layouts.Write("\n");
-          checksum = Fnv1a(checksum, line + "\n");
-          if (static_cast<int>(preview_lines.size()) < options.previews) preview_lines.push_back(line);
-        },
-        [&](std::size_t n) { bar.Advance(n); }, &failures);
-    bar.Finish();
-  }
+  ProgressBar bar("synth", last - first);
+  Result<SynthSummary> summary = SynthesizeDataset(options, preview, [&](std::size_t n) { bar.Advance(n); });
+  bar.Finish();
+  if (!summary) throw std::runtime_error(summary.error());
 
-  std::vector<std::string> preview_files;
-#ifdef VILLA_HAVE_RENDER
-  if (!preview_lines.empty()) {
-    fs::create_directories(dir / "previews", ec);
-    if (ec) throw std::runtime_error((dir / "previews").string() + ": cannot create directory: " + ec.message());
-    for (const std::string& line : preview_lines) {
-      const Json record = Json::parse(line);
-      const std::string id = record.at("id").get<std::string>();
-      Result<Layout> layout = LayoutFromRecord(record, id);
-      if (!layout) throw std::runtime_error(layout.error());
-      PlanRenderOptions render;
-      render.source_name = id + " (" + record.at("shape").get<std::string>() + ")";
-      const fs::path png = dir / "previews" / (id + ".png");
-      Status written = RenderPlan(*layout, png, render);
-      if (!written) throw std::runtime_error(written.error());
-      preview_files.push_back("previews/" + id + ".png");
-    }
-  }
-#endif
-
-  Status committed = layouts.Commit();
-  if (!committed) throw std::runtime_error(committed.error());
-  Json stats_json = stats.ToJson();
-  if (!WriteFileAtomic(dir / "stats.json", stats_json.dump(2) + "\n"))
-    throw std::runtime_error((dir / "stats.json").string() + ": cannot write");
-
-  Json manifest = Json::object();
-  manifest["tool"] = "villa";
-  manifest["version"] = kVersion;
-  manifest["command"] = "synth";
-  char hex[32];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum));
-  std::string floors_text = command.floors;
-  Json recipe = Json::object();
-  recipe["count"] = options.count;
-  recipe["seed"] = options.seed;
-  recipe["floors"] = {options.floor_weights[0], options.floor_weights[1], options.floor_weights[2]};
-  recipe["grid"] = options.partition.grid;
-  recipe["shard"] = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
-  recipe["index_range"] = {first, last};
-  recipe["layout_seed"] = "DatasetLayoutSeed(seed, index); floors by index from DatasetFloorPlan(count, floors)";
-  manifest["recipe"] = recipe;
-  std::ostringstream grid_text;
-  grid_text << options.partition.grid;
-  manifest["regenerate"] = "villa synth --count " + std::to_string(options.count) + " --seed " +
-                           std::to_string(options.seed) + " --floors " + floors_text + " --grid " + grid_text.str() +
-                           " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
-  manifest["record"] = "{\"id\", \"seed\", \"shape\", \"floors\", \"layout\"} one a line (layout: FORMAT.md JSON)";
-  manifest["files"] = {{"layouts.jsonl", {{"records", stats.layouts}, {"fnv1a64", hex}}},
-                       {"stats.json", Json::object()},
-                       {"previews", preview_files}};
-  if (!WriteFileAtomic(dir / "manifest.json", manifest.dump(2) + "\n"))
-    throw std::runtime_error((dir / "manifest.json").string() + ": cannot write");
-
-  std::cout << stats.Report();
-  for (const std::string& f : failures) std::cerr << "villa synth: no valid layout: " << f << "\n";
-  std::cout << "wrote " << (dir / "layouts.jsonl").string() << ", manifest.json, stats.json";
-  if (!preview_files.empty()) std::cout << ", " << preview_files.size() << " previews";
+  std::cout << summary->stats.Report();
+  for (const std::string& f : summary->failures) std::cerr << "villa synth: no valid layout: " << f << "\n";
+  std::cout << "wrote " << (options.out / "layouts.jsonl").string() << ", manifest.json, stats.json";
+  if (!summary->preview_files.empty()) std::cout << ", " << summary->preview_files.size() << " previews";
   std::cout << "\n";
-  SetExitCode(stats.failures == 0 ? kExitOk : kExitFailure);
+  SetExitCode(summary->ok() ? kExitOk : kExitFailure);
 }
 
 Registration registration{30, [](CLI::App& app) {

@@ -15,9 +15,11 @@
 #include "finetune/sample_format.h"
 #include "finetune/system_prompt.h"
 #include "finetune/trainer_configs.h"
+#include "layout/footprint.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "util/atomic_file.h"
+#include "util/hash.h"
 #include "util/text_table.h"
 
 namespace villa {
@@ -266,7 +268,7 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
       if (!coarse.empty()) texts.push_back({"coarse", coarse});
       if (!fine.empty()) texts.push_back({"fine", fine});
     } else {
-      bool pick_fine = (MixHash(StableHash(id) ^ MixHash(options.seed)) & 1) != 0;
+      bool pick_fine = (SplitMix64Hash(StableHash(id) ^ SplitMix64Hash(options.seed)) & 1) != 0;
       if (pick_fine && fine.empty()) pick_fine = false;
       if (!pick_fine && coarse.empty()) pick_fine = true;
       const std::string& text = pick_fine ? fine : coarse;
@@ -287,10 +289,14 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
     Candidate c;
     c.id = id;
     c.status = status;
-    c.shape = record.contains("shape") && record["shape"].is_string() ? record["shape"].get<std::string>()
-                                                                       : ClassifyFootprint(*layout);
+    if (record.contains("shape") && record["shape"].is_string()) {
+      c.shape = record["shape"].get<std::string>();
+    } else {
+      std::optional<ShapeClass> shape = ClassifyFootprint(*layout);
+      c.shape = shape ? std::string(ShapeClassName(*shape)) : "none";
+    }
     c.floors = layout->LevelCount();
-    c.order = MixHash(StableHash(geometry) ^ MixHash(options.seed));
+    c.order = SplitMix64Hash(StableHash(geometry) ^ SplitMix64Hash(options.seed));
     c.geometry = std::move(geometry);
     c.answer = std::move(answer);
     c.samples = std::move(texts);

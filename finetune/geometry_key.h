@@ -1,12 +1,10 @@
 #pragma once
-// What makes two layouts "the same" for the fine-tune export, and what a layout's footprint looks like.
+// What makes two layouts "the same" for the fine-tune export.
 //   GeometryKey: the layout's geometry as text, independent of names and labels: every room polygon and
 //   every 1D element (kind, level, segment with its endpoints ordered, panoramic flag), in canonical
 //   shapely strings, sorted. Two layouts with equal keys differ at most in names and room categories; the
 //   export keeps one of them, and splits are decided by the key's hash, so nothing of one geometry can
 //   land in two splits.
-//   ClassifyFootprint: the ground floor's outline (the union of its rooms) named as the paper does:
-//   rectangle, L, T, U, H, or irregular (any other outline, slanted edges included).
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -18,17 +16,8 @@ namespace villa {
 
 std::string GeometryKey(const Layout& layout);
 
-// 64-bit FNV-1a of `text`, finished with the splitmix64 mixer: stable across machines and standard
-// libraries (std::hash is not), so splits are the same everywhere.
+// 64-bit FNV-1a of `text`, finished with the SplitMix64 mixer (util/hash.h): stable across machines and
+// standard libraries (std::hash is not), so splits are the same everywhere.
 std::uint64_t StableHash(std::string_view text);
-std::uint64_t MixHash(std::uint64_t value);
-
-// The outer boundary of the rooms of `level`, counter-clockwise, collinear vertices merged. Coordinates on
-// the format's 0.01 m grid. Empty when the level has no rooms or its rooms do not form one outline.
-Ring FootprintOutline(const Layout& layout, int level);
-
-// "rectangle", "L", "T", "U", "H" or "irregular", from FootprintOutline(layout, 0); "none" for a layout
-// without ground-floor rooms.
-std::string ClassifyFootprint(const Layout& layout);
 
 }  // namespace villa

@@ -161,6 +161,25 @@ Box2 BoundingBox(const Segment& s) {
   return {std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)};
 }
 
+namespace {
+Box2 RoomsBounds(const Layout& layout, int level) {
+  Box2 box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  bool any = false;
+  for (const Room& room : layout.rooms) {
+    if (level != kAllLevels && room.level != level) continue;
+    for (const Point& p : room.polygon) {
+      any = true;
+      box.min_x = std::min(box.min_x, p.x), box.max_x = std::max(box.max_x, p.x);
+      box.min_y = std::min(box.min_y, p.y), box.max_y = std::max(box.max_y, p.y);
+    }
+  }
+  return any ? box : Box2{};
+}
+}  // namespace
+
+Box2 LevelBounds(const Layout& layout, int level) { return RoomsBounds(layout, level); }
+Box2 LayoutBounds(const Layout& layout) { return RoomsBounds(layout, kAllLevels); }
+
 double Distance(const Point& a, const Point& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 
 double PointSegmentDistance(const Point& p, const Segment& s) {
@@ -205,6 +224,17 @@ std::vector<Interval> IntersectIntervals(const std::vector<Interval>& a, const s
   return MergeIntervals(std::move(out), tolerance);
 }
 
+std::vector<Interval> ComplementIntervals(const std::vector<Interval>& covered, double length, double tolerance) {
+  std::vector<Interval> gaps;
+  double at = 0.0;
+  for (const Interval& iv : covered) {
+    if (iv.first - at > tolerance) gaps.push_back({at, iv.first});
+    at = std::max(at, iv.second);
+  }
+  if (length - at > tolerance) gaps.push_back({at, length});
+  return gaps;
+}
+
 Point PointAt(const Segment& s, double t) {
   double len = Len(s);
   if (len == 0) return s.a;
@@ -215,6 +245,25 @@ Point PointAt(const Segment& s, double t) {
 bool CollinearOverlapInterval(const Segment& s, const Segment& edge, double tolerance, Interval* out) {
   return Overlap(Frame(s), edge.a, edge.b, tolerance, out);
 }
+
+std::vector<Interval> IntervalsOnSegments(const Segment& s, const std::vector<Segment>& segments, double tolerance) {
+  std::vector<Interval> found;
+  const Frame frame(s);
+  for (const Segment& other : segments) {
+    Interval iv;
+    if (Overlap(frame, other.a, other.b, tolerance, &iv)) found.push_back(iv);
+  }
+  return MergeIntervals(std::move(found), tolerance);
+}
+
+bool SegmentsCover(const std::vector<Segment>& segments, const Segment& s, double tolerance) {
+  const double length = Length(s);
+  if (length <= tolerance) return false;
+  const std::vector<Interval> on = IntervalsOnSegments(s, segments, tolerance);
+  return on.size() == 1 && on[0].first <= tolerance && on[0].second >= length - tolerance;
+}
+
+Segment SubSegment(const Segment& s, const Interval& along) { return {PointAt(s, along.first), PointAt(s, along.second)}; }
 
 std::vector<Interval> CollinearOverlap(const Segment& s, const Segment& edge, double tolerance) {
   Interval iv;
@@ -282,6 +331,11 @@ double LengthOnBoundary(const Segment& s, const Ring& ring, double tolerance) {
   }
   if (to - from > tolerance) total += to - from;
   return total;
+}
+
+bool RingHoldsSegment(const Ring& ring, const Segment& s, double tolerance) {
+  const double on = LengthOnBoundary(s, ring, tolerance);
+  return on > tolerance && on >= Length(s) - tolerance;
 }
 
 std::vector<Segment> SharedBoundaries(const Ring& a, const Ring& b, double tolerance) {
@@ -400,6 +454,13 @@ bool PointOnBoundary(const Point& p, const Ring& ring, double tolerance) {
   return false;
 }
 
+double DistanceToBoundary(const Point& p, const Ring& ring) {
+  double best = INFINITY;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    best = std::min(best, PointSegmentDistance(p, {ring[i], ring[(i + 1) % ring.size()]}));
+  return best;
+}
+
 std::string RingProblem(const Ring& ring) {
   if (ring.size() < 3) return "has fewer than 3 corners";
   // Fast path: a convex ring without repeated points or spikes, turning once, is valid; so is a ring whose
@@ -482,10 +543,11 @@ std::vector<PolygonWithHoles> UnionOfRings(const std::vector<Ring>& rings) {
 
 namespace {
 // Chains directed exterior pieces into rings. At a vertex where several pieces start (a hole or a separate
-// piece touching at a point), takes the first one counter-clockwise from the way back: the ring keeps the
-// same outside region on its right, so a hole touching the outline still comes out as its own ring.
+// piece touching at a point), kKeepHolesApart takes the first one counter-clockwise from the way back: the
+// ring keeps the same outside region on its right, so a hole touching the outline still comes out as its
+// own ring; kKeepRegionsApart takes the last one (the sharpest left turn) among those not used yet.
 // False when some piece has no continuation.
-bool ChainRings(const std::vector<Segment>& pieces, const std::vector<int>& owners, double tolerance,
+bool ChainRings(const std::vector<Segment>& pieces, const std::vector<int>& owners, double tolerance, PinchRule pinch,
                 std::vector<BoundaryRing>& rings) {
   const std::size_t n = pieces.size();
   const double match = 4 * tolerance;
@@ -511,7 +573,11 @@ bool ChainRings(const std::vector<Segment>& pieces, const std::vector<int>& owne
         double dx = c.b.x - c.a.x, dy = c.b.y - c.a.y;
         double ccw = std::atan2(Cross(bx, by, dx, dy), bx * dx + by * dy);
         if (ccw <= 0) ccw += 2 * std::numbers::pi;
-        if (best == n || ccw < best_angle) best = k, best_angle = ccw;
+        if (pinch == PinchRule::kKeepHolesApart) {
+          if (best == n || ccw < best_angle) best = k, best_angle = ccw;
+        } else if ((!used[k] || k == start) && (best == n || ccw > best_angle)) {
+          best = k, best_angle = ccw;
+        }
       }
       if (best == start) break;
       if (best == n || used[best]) {
@@ -526,7 +592,8 @@ bool ChainRings(const std::vector<Segment>& pieces, const std::vector<int>& owne
 }
 }  // namespace
 
-ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double tolerance) {
+ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double tolerance, const std::vector<bool>& subtract,
+                                    PinchRule pinch) {
   ExteriorBoundary result;
   std::vector<Ring> reversed;  // copies only of rings given clockwise
   reversed.reserve(input.size());
@@ -582,8 +649,11 @@ ExteriorBoundary ExteriorBoundaryOf(const std::vector<Ring>& input, double toler
     }
   }
 
-  // 2. Chain the pieces into rings.
-  result.closed = ChainRings(result.pieces, result.owners, tolerance, result.rings);
+  // 2. Chain the pieces into rings, those of subtracted rings turned round.
+  for (std::size_t k = 0; k < result.pieces.size(); ++k)
+    if (static_cast<std::size_t>(result.owners[k]) < subtract.size() && subtract[result.owners[k]])
+      std::swap(result.pieces[k].a, result.pieces[k].b);
+  result.closed = ChainRings(result.pieces, result.owners, tolerance, pinch, result.rings);
   return result;
 }
 

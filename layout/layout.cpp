@@ -7,24 +7,35 @@
 namespace villa {
 namespace {
 
+// Every word villa uses for a category, in one table: the format's name, the token of element names, the
+// name a person reads and its short form.
 struct CategoryEntry {
   Category category;
-  std::string_view name;
+  std::string_view name;     // FORMAT.md
+  std::string_view token;    // element names: "living0_kitchen0"
+  std::string_view display;  // legends and labels
+  std::string_view shorter;  // labels in small rooms, terminal cells
 };
 
 constexpr std::array<CategoryEntry, kCategoryCount> kCategories = {{
-    {Category::kRoom, "room"},
-    {Category::kLivingRoom, "living-room"},
-    {Category::kBedroom, "bedroom"},
-    {Category::kKitchen, "kitchen"},
-    {Category::kBathroom, "bathroom"},
-    {Category::kDiningRoom, "dining-room"},
-    {Category::kChildrenRoom, "children-room"},
-    {Category::kOffice, "office"},
-    {Category::kMeetingRoom, "meeting-room"},
-    {Category::kUtilityRoom, "utility-room"},
-    {Category::kBalcony, "balcony"},
+    {Category::kRoom, "room", "room", "Room", "Room"},
+    {Category::kLivingRoom, "living-room", "living", "Living room", "Living"},
+    {Category::kBedroom, "bedroom", "bedroom", "Bedroom", "Bed"},
+    {Category::kKitchen, "kitchen", "kitchen", "Kitchen", "Kitchen"},
+    {Category::kBathroom, "bathroom", "bathroom", "Bathroom", "Bath"},
+    {Category::kDiningRoom, "dining-room", "dining", "Dining room", "Dining"},
+    {Category::kChildrenRoom, "children-room", "children", "Children's room", "Child"},
+    {Category::kOffice, "office", "office", "Office", "Office"},
+    {Category::kMeetingRoom, "meeting-room", "meeting", "Meeting room", "Meeting"},
+    {Category::kUtilityRoom, "utility-room", "utility", "Utility room", "Utility"},
+    {Category::kBalcony, "balcony", "balcony", "Balcony", "Balcony"},
 }};
+
+const CategoryEntry& EntryOf(Category category) {
+  for (const auto& entry : kCategories)
+    if (entry.category == category) return entry;
+  return kCategories[0];
+}
 
 std::optional<int> ParseNonNegative(std::string_view text) {
   if (text.empty() || (text.size() > 1 && text[0] == '0')) return std::nullopt;
@@ -36,11 +47,10 @@ std::optional<int> ParseNonNegative(std::string_view text) {
 
 }  // namespace
 
-std::string_view CategoryName(Category category) {
-  for (const auto& entry : kCategories)
-    if (entry.category == category) return entry.name;
-  return "room";
-}
+std::string_view CategoryName(Category category) { return EntryOf(category).name; }
+std::string_view CategoryToken(Category category) { return EntryOf(category).token; }
+std::string_view CategoryDisplayName(Category category) { return EntryOf(category).display; }
+std::string_view CategoryShortName(Category category) { return EntryOf(category).shorter; }
 
 std::optional<Category> ParseCategory(std::string_view name) {
   for (const auto& entry : kCategories)

@@ -10,7 +10,19 @@
 namespace villa {
 
 inline constexpr double kLevelHeight = 2.8;    // m between floors
-inline constexpr double kTolerance = 1e-6;     // m, geometric tolerance of every rule
+
+// The tolerance policy (docs/RULES.md, "Tolerances"). Every plan-geometry question is answered with one
+// of these two, so the validator, the renderer, the annotator, the building and the furnishing agree:
+//  - kTolerance: two lengths or distances within it are equal, an area (m2) within it is zero, a point
+//    within it of a line lies on the line. Every rule of FORMAT.md.
+//  - kOnWallTolerance: how far a 1D element (door, open, window, entrance, interior wall) may be from a
+//    room's boundary and still lie on it: rule 3, which rooms hold an element (RoomsAlongSegment,
+//    RoomsHolding), which elements the floor plan draws red, which windows the annotator counts. Equal to
+//    kTolerance today; widen it here (and only here) to accept numbers written with two decimals.
+// Consumers that turn a plan into something else keep their own, documented snaps on top (the building
+// merges points within 1e-4 m; the layout text writes coordinates with two decimals).
+inline constexpr double kTolerance = 1e-6;        // m
+inline constexpr double kOnWallTolerance = kTolerance;  // m
 inline constexpr double kStairRoomSize = 4.0;  // m, the utility room holding the staircase is 4 x 4
 inline constexpr int kMaxFloors = 3;
 inline constexpr int kMaxRoomsPerFloor = 6;
@@ -49,6 +61,13 @@ inline constexpr int kCategoryCount = 11;
 
 // "living-room", "utility-room", "room", ...
 std::string_view CategoryName(Category category);
+// "living", "children", "utility": the category in element names ("living0_kitchen0"), the format's name
+// without "-room".
+std::string_view CategoryToken(Category category);
+// "Living room", "Children's room", "Utility room", "Room": the category as a person reads it.
+std::string_view CategoryDisplayName(Category category);
+// "Living", "Bed", "Child", "Bath": a short form for labels in small rooms and narrow terminal cells.
+std::string_view CategoryShortName(Category category);
 // Accepts every CategoryName and the alias "staircase-room" (= utility-room).
 std::optional<Category> ParseCategory(std::string_view name);
 // The ten labelled categories in a fixed order (without kRoom).

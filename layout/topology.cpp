@@ -22,6 +22,15 @@ SegmentRooms RoomsAlongSegment(const Layout& layout, int level, const Segment& s
   return out;
 }
 
+std::vector<int> RoomsHolding(const Layout& layout, const Element& element, double tolerance) {
+  std::vector<int> out;
+  for (int level = 0; level < layout.LevelCount(); ++level)
+    if (element.OnLevel(level))
+      for (int room : RoomsAlongSegment(layout, level, element.shape, tolerance).holding) out.push_back(room);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 std::vector<Connection> RoomConnections(const Layout& layout, double tolerance) {
   std::vector<Connection> out;
   const int levels = layout.LevelCount();

@@ -102,7 +102,7 @@ struct LevelInfo {
 class Validator {
  public:
   Validator(const Layout& layout, const ValidateOptions& options)
-      : layout_(layout), options_(options), tol_(options.tolerance) {}
+      : layout_(layout), options_(options), tol_(options.tolerance), on_wall_(options.on_wall_tolerance) {}
 
   ValidationReport Run() {
     Prepare();
@@ -174,11 +174,11 @@ class Validator {
     double length = Length(e.shape);
     Box2 box = BoundingBox(e.shape);
     for (int r : levels_[level].rooms) {
-      if (!rooms_[r].box.Touches(box, tol_)) continue;
-      double on = LengthOnBoundary(e.shape, layout_.rooms[r].polygon, tol_);
-      if (on <= tol_) continue;
+      if (!rooms_[r].box.Touches(box, on_wall_)) continue;
+      double on = LengthOnBoundary(e.shape, layout_.rooms[r].polygon, on_wall_);
+      if (on <= on_wall_) continue;
       out.touching.push_back(r);
-      if (on >= length - tol_) out.holding.push_back(r);
+      if (on >= length - on_wall_) out.holding.push_back(r);
     }
     return out;
   }
@@ -738,6 +738,7 @@ class Validator {
   const Layout& layout_;
   ValidateOptions options_;
   double tol_;
+  double on_wall_;  // rule 3's "lies on the boundary" (layout.h's kOnWallTolerance by default)
   int levels_count_ = 0;
   std::vector<RoomInfo> rooms_;
   std::vector<LevelInfo> levels_;

@@ -16,7 +16,8 @@ struct Violation {
 };
 
 struct ValidateOptions {
-  double tolerance = kTolerance;  // m
+  double tolerance = kTolerance;  // m, lengths, distances and areas (layout.h's tolerance policy)
+  double on_wall_tolerance = kOnWallTolerance;  // m, how far a 1D element may be off a boundary (rule 3)
   // Rules to check; the geometric rules 1-5 decide FSR, all ten decide validity.
   bool check_architecture = true;  // rules 6-10
 };

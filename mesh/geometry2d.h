@@ -1,5 +1,7 @@
 #pragma once
-// Small plane-geometry helpers shared by the building's .cpp files (x, y in metres, rings CCW).
+// Small plane-vector helpers for building solids (x, y in metres, rings CCW): arithmetic, half-plane and
+// convex clipping, ring cleaning. Questions about the plan (point in polygon, distances, footprints) are
+// layout/geometry.h's.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -21,32 +23,6 @@ inline Point Unit(Point a) {
 }
 inline Point Left(Point d) { return {-d.y, d.x}; }  // d rotated +90 degrees
 inline Point Lerp(Point a, Point b, double t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; }
-
-// Distance from p to the segment [a, b].
-inline double DistToSegment(Point p, Point a, Point b) {
-  Point ab = Sub(b, a);
-  double l2 = Dot(ab, ab);
-  double t = l2 > 0.0 ? std::clamp(Dot(Sub(p, a), ab) / l2, 0.0, 1.0) : 0.0;
-  return Dist(p, Lerp(a, b, t));
-}
-
-// Distance from p to the boundary of a ring.
-inline double DistToRing(Point p, const Ring& ring) {
-  double best = 1e300;
-  for (size_t i = 0; i < ring.size(); ++i) best = std::min(best, DistToSegment(p, ring[i], ring[(i + 1) % ring.size()]));
-  return best;
-}
-
-// Even-odd point in polygon (boundary points may go either way).
-inline bool Inside(Point p, const Ring& ring) {
-  bool inside = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Point& a = ring[i];
-    const Point& b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-  }
-  return inside;
-}
 
 // Keeps the part of `ring` where Dot(x - origin, normal) >= 0 (Sutherland-Hodgman, one plane).
 inline Ring ClipHalfPlane(const Ring& ring, Point origin, Point normal) {

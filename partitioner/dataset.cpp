@@ -9,7 +9,10 @@
 #include <sstream>
 #include <thread>
 
+#include "util/atomic_file.h"
+#include "util/hash.h"
 #include "util/text_table.h"
+#include "util/version.h"
 
 namespace villa {
 
@@ -223,6 +226,94 @@ SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
+}
+
+Status CheckSynthOutput(const SynthOptions& options) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const std::string dir = options.out.string();
+  if (fs::exists(options.out, ec)) {
+    if (!fs::is_directory(options.out, ec)) return Error{"--out " + dir + ": exists and is not a directory"};
+    if (!fs::is_empty(options.out, ec) && !options.force)
+      return Error{"--out " + dir + ": directory is not empty (use --force to write into it)"};
+  }
+  return Status{};
+}
+
+Result<SynthSummary> SynthesizeDataset(const SynthOptions& options, const PreviewWriter& preview,
+                                       const std::function<void(std::size_t)>& on_progress) {
+  namespace fs = std::filesystem;
+  const fs::path& dir = options.out;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return Error{dir.string() + ": cannot create directory: " + ec.message()};
+
+  const uint64_t first = options.count * options.shard_index / options.shard_count;
+  const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
+  AtomicFileWriter layouts(dir / "layouts.jsonl");
+  if (!layouts.ok()) return Error{layouts.error()};
+  uint64_t checksum = kFnv1a64Offset;
+  std::vector<std::string> preview_lines;
+  SynthSummary summary;
+  summary.stats = SynthesizeShard(
+      options,
+      [&](const std::string& line) {
+        layouts.Write(line);
+        layouts.Write("\n");
+        checksum = Fnv1a64("\n", Fnv1a64(line, checksum));
+        if (static_cast<int>(preview_lines.size()) < options.previews) preview_lines.push_back(line);
+      },
+      on_progress, &summary.failures);
+
+  if (!preview_lines.empty()) {
+    if (!preview) return Error{"previews asked for, but no preview writer given"};
+    fs::create_directories(dir / "previews", ec);
+    if (ec) return Error{(dir / "previews").string() + ": cannot create directory: " + ec.message()};
+    for (const std::string& line : preview_lines) {
+      const Json record = Json::parse(line);
+      const std::string id = record.at("id").get<std::string>();
+      Result<Layout> layout = LayoutFromRecord(record, id);
+      if (!layout) return Error{layout.error()};
+      Status written = preview(*layout, id + " (" + record.at("shape").get<std::string>() + ")",
+                               dir / "previews" / (id + ".png"));
+      if (!written) return Error{written.error()};
+      summary.preview_files.push_back("previews/" + id + ".png");
+    }
+  }
+
+  Status committed = layouts.Commit();
+  if (!committed) return Error{committed.error()};
+  if (!WriteFileAtomic(dir / "stats.json", summary.stats.ToJson().dump(2) + "\n"))
+    return Error{(dir / "stats.json").string() + ": cannot write"};
+
+  Json& manifest = summary.manifest;
+  manifest = Json::object();
+  manifest["tool"] = "villa";
+  manifest["version"] = kVersion;
+  manifest["command"] = "synth";
+  char hex[32];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum));
+  Json recipe = Json::object();
+  recipe["count"] = options.count;
+  recipe["seed"] = options.seed;
+  recipe["floors"] = {options.floor_weights[0], options.floor_weights[1], options.floor_weights[2]};
+  recipe["grid"] = options.partition.grid;
+  recipe["shard"] = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
+  recipe["index_range"] = {first, last};
+  recipe["layout_seed"] = "DatasetLayoutSeed(seed, index); floors by index from DatasetFloorPlan(count, floors)";
+  manifest["recipe"] = recipe;
+  std::ostringstream grid_text;
+  grid_text << options.partition.grid;
+  manifest["regenerate"] = "villa synth --count " + std::to_string(options.count) + " --seed " +
+                           std::to_string(options.seed) + " --floors " + options.floors_text + " --grid " +
+                           grid_text.str() + " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
+  manifest["record"] = "{\"id\", \"seed\", \"shape\", \"floors\", \"layout\"} one a line (layout: FORMAT.md JSON)";
+  manifest["files"] = {{"layouts.jsonl", {{"records", summary.stats.layouts}, {"fnv1a64", hex}}},
+                       {"stats.json", Json::object()},
+                       {"previews", summary.preview_files}};
+  if (!WriteFileAtomic(dir / "manifest.json", manifest.dump(2) + "\n"))
+    return Error{(dir / "manifest.json").string() + ": cannot write"};
+  return summary;
 }
 
 }  // namespace villa

@@ -34,6 +34,7 @@ struct SynthOptions {
   bool force = false;          // write into a non-empty directory
   PartitionOptions partition;  // grid and priors; floors and shape are set per layout
   std::filesystem::path out;
+  std::string floors_text = "2:4:4";  // floor_weights as the user wrote them, for the manifest's recipe
 
   bool IsValid(std::string* message) const;
 };
@@ -63,5 +64,31 @@ struct SynthStats {
 SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void(const std::string&)>& write_line,
                            const std::function<void(std::size_t)>& on_progress,
                            std::vector<std::string>* failures = nullptr);
+
+// Why `options.out` cannot take a dataset ("exists and is not a directory", "directory is not empty (use
+// --force to write into it)"), or OK. A usage problem: nothing is written.
+Status CheckSynthOutput(const SynthOptions& options);
+
+// Draws the preview of one layout into a PNG file (the CLI passes the floor-plan renderer; the
+// partitioner does not depend on render/).
+using PreviewWriter =
+    std::function<Status(const Layout& layout, const std::string& title, const std::filesystem::path& png)>;
+
+// What SynthesizeDataset wrote.
+struct SynthSummary {
+  SynthStats stats;
+  std::vector<std::string> failures;       // seeds with no valid layout, as SynthesizeShard lists them
+  std::vector<std::string> preview_files;  // relative to the folder: "previews/villa-000000.png"
+  Json manifest;                           // manifest.json as written
+  bool ok() const { return stats.failures == 0; }
+};
+
+// The whole of `villa synth`: creates options.out and writes layouts.jsonl (atomically, with its FNV-1a
+// checksum in the manifest), previews/ID.png of the first options.previews layouts through `preview`
+// (required when previews > 0), stats.json and manifest.json (the recipe, the tool version and the
+// command that regenerates the shard). `on_progress` as for SynthesizeShard. Fails (naming the file) when
+// a file cannot be written or a preview cannot be drawn; options must be valid.
+Result<SynthSummary> SynthesizeDataset(const SynthOptions& options, const PreviewWriter& preview,
+                                       const std::function<void(std::size_t)>& on_progress);
 
 }  // namespace villa

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "layout/geometry.h"
+
 namespace villa::partition {
 namespace {
 
@@ -133,24 +135,18 @@ bool SplitVertical(const IRing& ring, int64_t k, std::vector<IRing>* low, std::v
   }
   std::sort(events.begin(), events.end());
   events.erase(std::unique(events.begin(), events.end()), events.end());
-  // 3. Intervals of the line inside the ring become boundary of both sides.
+  // 3. Intervals of the line inside the ring become boundary of both sides. The midpoint (k, (y0 + y1) / 2)
+  // of an interval is tested in doubled coordinates, where it is a grid point; it is on no edge, so
+  // PointInRing's crossing parity decides.
+  IRing doubled;
+  doubled.reserve(q.size());
+  for (const IPoint& p : q) doubled.push_back({2 * p.x, 2 * p.y});
   for (std::size_t i = 0; i + 1 < events.size(); ++i) {
     const int64_t y0 = events[i], y1 = events[i + 1];
     bool covered = false;
     for (const auto& [a, b] : on_line) covered |= (a <= y0 && y1 <= b);
     if (covered) continue;
-    // Midpoint (k, (y0 + y1) / 2) in doubled coordinates; it is on no edge, so crossing parity decides.
-    const int64_t mx = 2 * k, my = y0 + y1;
-    bool inside = false;
-    for (std::size_t e = 0; e < q.size(); ++e) {
-      const IPoint p = q[e], r = q[(e + 1) % q.size()];
-      const int64_t py = 2 * p.y, ry = 2 * r.y;
-      if ((py > my) == (ry > my)) continue;
-      const int64_t px = 2 * p.x, rx = 2 * r.x;
-      const int64_t num = (my - py) * (rx - px) + (px - mx) * (ry - py);
-      if ((ry - py > 0) ? num > 0 : num < 0) inside = !inside;
-    }
-    if (!inside) continue;
+    if (PointInRing(doubled, {2 * k, y0 + y1}) <= 0) continue;
     low_edges.push_back({{k, y0}, {k, y1}});
     high_edges.push_back({{k, y1}, {k, y0}});
   }
@@ -481,20 +477,11 @@ DPoint ClosestOnSegment(DPoint p, DPoint a, DPoint b) {
   t = std::clamp(t, 0.0, 1.0);
   return {a.x + t * dx, a.y + t * dy};
 }
-double Dist(DPoint a, DPoint b) { return std::hypot(a.x - b.x, a.y - b.y); }
 DPoint D(IPoint p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
 
-bool StrictlyInside(const IRing& ring, DPoint p) {
-  bool inside = false;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const DPoint a = D(ring[i]), b = D(ring[(i + 1) % ring.size()]);
-    const DPoint q = ClosestOnSegment(p, a, b);
-    if ((q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) < 1e-18) return false;
-    if ((a.y > p.y) == (b.y > p.y)) continue;
-    const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-    if (x > p.x) inside = !inside;
-  }
-  return inside;
+// Inside `ring` (grid units as doubles) and more than 1e-9 from its boundary: layout's point in polygon.
+bool StrictlyInside(const Ring& ring, DPoint p) {
+  return DistanceToBoundary({p.x, p.y}, ring) >= 1e-9 && villa::PointInRing(Point{p.x, p.y}, ring, 0);
 }
 }  // namespace
 
@@ -520,6 +507,9 @@ double MinWidthSquaredBelow(const IRing& ring, double limit) {
   }
   // Non-adjacent edges whose closest approach runs through the interior (a thin arm or sliver; gaps
   // across a notch or a bite outside the ring do not count).
+  Ring as_doubles;
+  as_doubles.reserve(n);
+  for (const IPoint& p : ring) as_doubles.push_back({static_cast<double>(p.x), static_cast<double>(p.y)});
   for (std::size_t i = 0; i < n; ++i) {
     const IPoint a = ring[i], b = ring[(i + 1) % n];
     for (std::size_t j = i + 2; j < n; ++j) {
@@ -536,7 +526,7 @@ double MinWidthSquaredBelow(const IRing& ring, double limit) {
       for (const auto& pq : pairs) {
         const double dist2 = (pq[0].x - pq[1].x) * (pq[0].x - pq[1].x) + (pq[0].y - pq[1].y) * (pq[0].y - pq[1].y);
         if (dist2 >= best) continue;
-        if (StrictlyInside(ring, {(pq[0].x + pq[1].x) / 2, (pq[0].y + pq[1].y) / 2})) best = dist2;
+        if (StrictlyInside(as_doubles, {(pq[0].x + pq[1].x) / 2, (pq[0].y + pq[1].y) / 2})) best = dist2;
       }
     }
   }

@@ -41,7 +41,8 @@ IRing Normalize(const IRing& ring);
 bool IsSimple(const IRing& ring);
 // True when some edge is neither horizontal nor vertical.
 bool HasAngledEdge(const IRing& ring);
-// 1 inside, 0 on the boundary, -1 outside.
+// 1 inside, 0 on the boundary, -1 outside, exactly (integer grid units, no tolerance: the partitioner's
+// tiling must be exact). Plans in metres use layout/geometry.h's PointInRing.
 int PointInRing(const IRing& ring, IPoint point);
 
 // True when the line (axis, k) crosses every edge it cuts at a grid point (so a split is exact).

@@ -22,33 +22,6 @@ using partition::ISegment;
 using partition::Rng;
 using partition::Scale;
 
-std::string_view ShapeClassName(ShapeClass shape) {
-  switch (shape) {
-    case ShapeClass::kRectangle: return "rectangle";
-    case ShapeClass::kL: return "L";
-    case ShapeClass::kU: return "U";
-    case ShapeClass::kT: return "T";
-    case ShapeClass::kH: return "H";
-    case ShapeClass::kIrregular: return "irregular";
-  }
-  return "rectangle";
-}
-
-std::optional<ShapeClass> ParseShapeClass(std::string_view name) {
-  for (ShapeClass s : AllShapeClasses()) {
-    const std::string_view n = ShapeClassName(s);
-    if (name == n) return s;
-    if (n.size() == 1 && name.size() == 1 && (name[0] | 0x20) == (n[0] | 0x20)) return s;
-  }
-  return std::nullopt;
-}
-
-const std::vector<ShapeClass>& AllShapeClasses() {
-  static const std::vector<ShapeClass> all{ShapeClass::kRectangle, ShapeClass::kL, ShapeClass::kU,
-                                           ShapeClass::kT,         ShapeClass::kH, ShapeClass::kIrregular};
-  return all;
-}
-
 std::string_view PartitionOutcomeName(PartitionOutcome outcome) {
   switch (outcome) {
     case PartitionOutcome::kSuccess: return "success";
@@ -139,23 +112,6 @@ bool IsPublic(Category c) {
 bool IsLeaf(Category c) { return c == Category::kBathroom || c == Category::kBalcony; }
 bool NeedsWindow(Category c) {
   return c == Category::kKitchen || c == Category::kBathroom || c == Category::kBalcony;
-}
-
-std::string_view ShortName(Category c) {
-  switch (c) {
-    case Category::kLivingRoom: return "living";
-    case Category::kBedroom: return "bedroom";
-    case Category::kKitchen: return "kitchen";
-    case Category::kBathroom: return "bathroom";
-    case Category::kDiningRoom: return "dining";
-    case Category::kChildrenRoom: return "children";
-    case Category::kOffice: return "office";
-    case Category::kMeetingRoom: return "meeting";
-    case Category::kUtilityRoom: return "utility";
-    case Category::kBalcony: return "balcony";
-    case Category::kRoom: return "room";
-  }
-  return "room";
 }
 
 // Search order of the labeller: the most constrained categories first.
@@ -881,7 +837,7 @@ Layout BuildLayout(const Building& b, double grid) {
         if (ring[k].x < ring[first].x || (ring[k].x == ring[first].x && ring[k].y < ring[first].y)) first = k;
       room.polygon.reserve(ring.size());
       for (std::size_t k = 0; k < ring.size(); ++k) room.polygon.push_back(ToPoint(ring[(first + k) % ring.size()], grid));
-      token[i] = std::string(ShortName(c)) + std::to_string(l) + (room.index > 0 ? "-" + std::to_string(room.index) : "");
+      token[i] = std::string(CategoryToken(c)) + std::to_string(l) + (room.index > 0 ? "-" + std::to_string(room.index) : "");
       layout.rooms.push_back(std::move(room));
     }
     const FloorElements& e = b.elements[l];

@@ -15,27 +15,10 @@
 #include <string_view>
 #include <vector>
 
+#include "layout/footprint.h"
 #include "layout/layout.h"
 
 namespace villa {
-
-// The footprint classes. Their names (ShapeClassName) go into dataset records ("shape") and the
-// annotator's descriptions: exactly "rectangle", "L", "U", "T", "H", "irregular".
-//   rectangle: the sampled rectangle itself.
-//   L: one rectangular notch at one corner.
-//   U: one rectangular notch in the middle of one side.
-//   T: two rectangular notches at the two corners of the same side.
-//   H: rectangular notches in the middle of two opposite sides.
-//   irregular: cuts at arbitrary angles (chamfers, slanted edges, triangular bites; slopes such as 1:1,
-//              1:2, 2:3 with grid end points), possibly combined with a rectangular notch.
-enum class ShapeClass { kRectangle, kL, kU, kT, kH, kIrregular };
-inline constexpr int kShapeClassCount = 6;
-
-std::string_view ShapeClassName(ShapeClass shape);
-// Accepts exactly the names above (and lower-case "l", "u", "t", "h").
-std::optional<ShapeClass> ParseShapeClass(std::string_view name);
-// The six classes in the order of the enum.
-const std::vector<ShapeClass>& AllShapeClasses();
 
 inline constexpr int kAnyLevel = -1;  // a requirement for the whole building, not one floor
 

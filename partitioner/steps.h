@@ -7,42 +7,12 @@
 
 #include "partitioner/geometry.h"
 #include "partitioner/partitioner.h"
+#include "util/hash.h"
 
 namespace villa::partition {
 
-// Deterministic PRNG (SplitMix64) with its own helpers: the same stream on every standard library.
-class Rng {
- public:
-  explicit Rng(uint64_t seed) : state_(seed) {}
-  uint64_t Next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [lo, hi] (inclusive); lo when hi < lo.
-  int64_t Int(int64_t lo, int64_t hi) {
-    if (hi <= lo) return lo;
-    const unsigned __int128 span = static_cast<unsigned __int128>(hi - lo) + 1;
-    return lo + static_cast<int64_t>((static_cast<unsigned __int128>(Next()) * span) >> 64);
-  }
-  double Unit() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  bool Chance(double p) { return Unit() < p; }
-  // Index drawn with probability proportional to weights (all >= 0, some > 0).
-  int Weighted(const double* weights, int n) {
-    double total = 0.0;
-    for (int i = 0; i < n; ++i) total += weights[i];
-    double x = Unit() * total;
-    for (int i = 0; i < n; ++i) {
-      if (x < weights[i]) return i;
-      x -= weights[i];
-    }
-    return n - 1;
-  }
-
- private:
-  uint64_t state_;
-};
+// The partitioner's random stream: util's SplitMix64, the same numbers on every standard library.
+using Rng = SplitMix64;
 
 uint64_t MixSeed(uint64_t a, uint64_t b);
 

@@ -38,40 +38,6 @@ Rgb CategoryInk(Category category) {
 
 Rgb InvalidElementColor() { return Hex(0xDB1C17); }
 
-std::string_view CategoryDisplayName(Category category) {
-  switch (category) {
-    case Category::kLivingRoom: return "Living room";
-    case Category::kBedroom: return "Bedroom";
-    case Category::kKitchen: return "Kitchen";
-    case Category::kBathroom: return "Bathroom";
-    case Category::kDiningRoom: return "Dining room";
-    case Category::kChildrenRoom: return "Children's room";
-    case Category::kOffice: return "Office";
-    case Category::kMeetingRoom: return "Meeting room";
-    case Category::kUtilityRoom: return "Utility room";
-    case Category::kBalcony: return "Balcony";
-    case Category::kRoom: return "Room";
-  }
-  return "Room";
-}
-
-std::string_view CategoryShortName(Category category) {
-  switch (category) {
-    case Category::kLivingRoom: return "Living";
-    case Category::kBedroom: return "Bed";
-    case Category::kKitchen: return "Kitchen";
-    case Category::kBathroom: return "Bath";
-    case Category::kDiningRoom: return "Dining";
-    case Category::kChildrenRoom: return "Child";
-    case Category::kOffice: return "Office";
-    case Category::kMeetingRoom: return "Meeting";
-    case Category::kUtilityRoom: return "Utility";
-    case Category::kBalcony: return "Balcony";
-    case Category::kRoom: return "Room";
-  }
-  return "Room";
-}
-
 int ToByte(double channel) { return static_cast<int>(std::lround(std::clamp(channel, 0.0, 1.0) * 255.0)); }
 
 }  // namespace villa

@@ -1,6 +1,6 @@
 #pragma once
-// The category palette shared by every picture villa makes: floor plans, the annotator's terminal
-// colours and the glTF materials. Fill colours are light enough for dark text on top and far enough
+// The category palette shared by every picture villa makes: floor plans, the 3D view, the annotator's
+// terminal colours and the glTF materials (the words for a category are layout.h's). Fill colours are light enough for dark text on top and far enough
 // apart (hue and lightness) to tell the ten categories and `room` apart side by side.
 #include <string_view>
 
@@ -24,12 +24,6 @@ Rgb CategoryInk(Category category);
 
 // The colour of what is wrong: elements that are not where the format puts them.
 Rgb InvalidElementColor();
-
-// "Living room", "Children's room", "Utility room", "Room": the category as a person reads it.
-std::string_view CategoryDisplayName(Category category);
-
-// "Living", "Children", "Bath": a short form for labels in small rooms.
-std::string_view CategoryShortName(Category category);
 
 // 0..255 channel value of a [0, 1] channel, rounded (what an 8-bit PNG stores).
 int ToByte(double channel);

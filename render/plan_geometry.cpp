@@ -5,18 +5,13 @@
 #include <limits>
 #include <queue>
 
+#include "layout/geometry.h"
+
 namespace villa::plan {
 namespace {
 
 Point Sub(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
-double Dot(Point a, Point b) { return a.x * b.x + a.y * b.y; }
 double Cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
-
-// Distance from `p` to the infinite line through a-b (a != b).
-double LineDistance(Point p, Point a, Point b) {
-  const Point d = Sub(b, a);
-  return std::abs(Cross(d, Sub(p, a))) / std::hypot(d.x, d.y);
-}
 
 // Segments p1-p2 and q1-q2 cross at a single point strictly inside both.
 bool ProperlyCross(Point p1, Point p2, Point q1, Point q2) {
@@ -27,39 +22,14 @@ bool ProperlyCross(Point p1, Point p2, Point q1, Point q2) {
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+bool Inside(Point p, const Ring& ring) { return PointInRing(p, ring, 0); }
+
 }  // namespace
-
-double Distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-double PointSegmentDistance(Point p, Point a, Point b) {
-  const Point d = Sub(b, a);
-  const double len2 = Dot(d, d);
-  if (len2 <= 0.0) return Distance(p, a);
-  const double t = std::clamp(Dot(Sub(p, a), d) / len2, 0.0, 1.0);
-  return Distance(p, {a.x + t * d.x, a.y + t * d.y});
-}
-
-bool PointInRing(Point p, const Ring& ring) {
-  bool inside = false;
-  const size_t n = ring.size();
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Point& a = ring[i];
-    const Point& b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < x) inside = !inside;
-    }
-  }
-  return inside;
-}
 
 double SignedDistanceToRing(Point p, const Ring& ring) {
   if (ring.empty()) return -std::numeric_limits<double>::infinity();
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    best = std::min(best, PointSegmentDistance(p, ring[j], ring[i]));
-  }
-  return PointInRing(p, ring) ? best : -best;
+  const double best = DistanceToBoundary(p, ring);
+  return Inside(p, ring) ? best : -best;
 }
 
 Point PoleOfInaccessibility(const Ring& ring, double precision) {
@@ -132,67 +102,6 @@ Point PoleOfInaccessibility(const Ring& ring, double precision) {
     queue.push(make_cell({cell.centre.x + h, cell.centre.y + h}, h));
   }
   return best.centre;
-}
-
-std::vector<Segment> RingEdges(const Ring& ring) {
-  std::vector<Segment> edges;
-  if (ring.size() < 2) return edges;
-  edges.reserve(ring.size());
-  for (size_t i = 0; i < ring.size(); ++i) edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
-  return edges;
-}
-
-std::vector<Interval> CollinearOverlaps(const Segment& s, const std::vector<Segment>& others, double tolerance) {
-  std::vector<Interval> found;
-  const double length = Length(s);
-  if (length <= tolerance) return found;
-  const Point u{(s.b.x - s.a.x) / length, (s.b.y - s.a.y) / length};
-  for (const Segment& o : others) {
-    if (LineDistance(o.a, s.a, s.b) > tolerance || LineDistance(o.b, s.a, s.b) > tolerance) continue;
-    const double ta = Dot(Sub(o.a, s.a), u);
-    const double tb = Dot(Sub(o.b, s.a), u);
-    const double lo = std::max(0.0, std::min(ta, tb));
-    const double hi = std::min(length, std::max(ta, tb));
-    if (hi - lo > tolerance) found.push_back({lo, hi});
-  }
-  std::sort(found.begin(), found.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
-  std::vector<Interval> merged;
-  for (const Interval& i : found) {
-    if (!merged.empty() && i.lo <= merged.back().hi + tolerance) {
-      merged.back().hi = std::max(merged.back().hi, i.hi);
-    } else {
-      merged.push_back(i);
-    }
-  }
-  return merged;
-}
-
-std::vector<Interval> Complement(const std::vector<Interval>& covered, double length, double min_length) {
-  std::vector<Interval> gaps;
-  double at = 0.0;
-  for (const Interval& i : covered) {
-    if (i.lo - at > min_length) gaps.push_back({at, i.lo});
-    at = std::max(at, i.hi);
-  }
-  if (length - at > min_length) gaps.push_back({at, length});
-  return gaps;
-}
-
-Segment SubSegment(const Segment& s, const Interval& stretch) {
-  const double length = Length(s);
-  if (length <= 0.0) return s;
-  auto at = [&](double t) {
-    const double f = t / length;
-    return Point{s.a.x + (s.b.x - s.a.x) * f, s.a.y + (s.b.y - s.a.y) * f};
-  };
-  return {at(stretch.lo), at(stretch.hi)};
-}
-
-bool CoveredBy(const Segment& s, const std::vector<Segment>& by, double tolerance) {
-  const double length = Length(s);
-  if (length <= tolerance) return false;
-  const std::vector<Interval> overlaps = CollinearOverlaps(s, by, tolerance);
-  return overlaps.size() == 1 && overlaps[0].lo <= tolerance && overlaps[0].hi >= length - tolerance;
 }
 
 std::vector<Polyline> ChainSegments(const std::vector<Segment>& segments, double tolerance) {
@@ -275,7 +184,7 @@ std::vector<Segment> ClipSegmentToRing(Point a, Point b, const Ring& ring) {
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i + 1] - cuts[i] < 1e-9) continue;
     const double mid = (cuts[i] + cuts[i + 1]) / 2.0;
-    if (!PointInRing({a.x + d.x * mid, a.y + d.y * mid}, ring)) continue;
+    if (!Inside({a.x + d.x * mid, a.y + d.y * mid}, ring)) continue;
     const Segment piece{{a.x + d.x * cuts[i], a.y + d.y * cuts[i]}, {a.x + d.x * cuts[i + 1], a.y + d.y * cuts[i + 1]}};
     if (!inside.empty() && Distance(inside.back().b, piece.a) < 1e-9) {
       inside.back().b = piece.b;
@@ -289,7 +198,7 @@ std::vector<Segment> ClipSegmentToRing(Point a, Point b, const Ring& ring) {
 bool RectInsideRing(Point min, Point max, const Ring& ring) {
   const Point corners[4] = {min, {max.x, min.y}, max, {min.x, max.y}};
   for (const Point& c : corners) {
-    if (!PointInRing(c, ring)) return false;
+    if (!Inside(c, ring)) return false;
   }
   for (const Point& p : ring) {
     if (p.x > min.x && p.x < max.x && p.y > min.y && p.y < max.y) return false;
@@ -306,7 +215,7 @@ bool RectOverlapsRing(Point min, Point max, const Ring& ring) {
   if (ring.size() < 3) return false;
   const Point corners[4] = {min, {max.x, min.y}, max, {min.x, max.y}};
   for (const Point& c : corners) {
-    if (PointInRing(c, ring)) return true;
+    if (Inside(c, ring)) return true;
   }
   for (const Point& p : ring) {
     if (p.x > min.x && p.x < max.x && p.y > min.y && p.y < max.y) return true;

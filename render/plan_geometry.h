@@ -1,47 +1,21 @@
 #pragma once
-// Plane geometry the floor-plan drawing needs: where walls run, which parts of a room's edge are shared
-// with a neighbour, whether an element lies on a wall, where a label fits. Plain doubles in metres;
-// tolerances are explicit. Internal to render/ (not a general geometry library: the validator has its
-// own, exact rules in layout/validate.cpp).
+// Plane geometry that is only about drawing: where a label fits (pole of inaccessibility, rectangles in
+// rings), clipping a stroke to a room, chaining wall strokes into polylines. Every question about the plan
+// itself (point in polygon, distances, collinear overlaps, wall pieces, door swings) is layout/'s.
+// Plain doubles in metres. Internal to render/.
 #include <vector>
 
 #include "layout/layout.h"
 
 namespace villa::plan {
 
-// A stretch [lo, hi] of a segment, measured in metres from its first point.
-struct Interval {
-  double lo = 0.0;
-  double hi = 0.0;
-};
-
-double Distance(Point a, Point b);
-double PointSegmentDistance(Point p, Point a, Point b);
-
-// Even-odd rule; points on the boundary may go either way.
-bool PointInRing(Point p, const Ring& ring);
-// Distance to the ring's boundary, positive inside, negative outside.
+// Distance to the ring's boundary, positive inside, negative outside (layout/geometry.h's
+// PointInRing and DistanceToBoundary).
 double SignedDistanceToRing(Point p, const Ring& ring);
 
 // The interior point farthest from the boundary (Mapbox polylabel: best-first search over square cells),
 // within `precision` m. For a degenerate ring (< 3 points or no area) the vertex average.
 Point PoleOfInaccessibility(const Ring& ring, double precision);
-
-// The edges of a ring, in order, closing edge included.
-std::vector<Segment> RingEdges(const Ring& ring);
-
-// The stretches of `s` that overlap a segment of `others` lying on the same line (both its ends within
-// `tolerance` of the line through `s`), merged and sorted.
-std::vector<Interval> CollinearOverlaps(const Segment& s, const std::vector<Segment>& others, double tolerance);
-
-// The parts of [0, length] not covered by `covered` (sorted, merged), dropping parts shorter than `min_length`.
-std::vector<Interval> Complement(const std::vector<Interval>& covered, double length, double min_length);
-
-// The sub-segment of `s` for a stretch of it.
-Segment SubSegment(const Segment& s, const Interval& stretch);
-
-// True when `s` lies, within `tolerance`, on the union of the collinear segments of `by`.
-bool CoveredBy(const Segment& s, const std::vector<Segment>& by, double tolerance);
 
 // Segments joined end to end into polylines: a chain runs through points where exactly two segments
 // meet and stops at ends and junctions. A chain whose last point is its first is a closed loop (the

@@ -10,7 +10,10 @@
 #include <optional>
 #include <set>
 
+#include "layout/door_swing.h"
+#include "layout/geometry.h"
 #include "layout/topology.h"
+#include "layout/walls.h"
 #include "render/palette.h"
 #include "render/plan_geometry.h"
 #include "render/scene.h"
@@ -20,7 +23,6 @@ namespace villa {
 namespace {
 
 using plan::Fill;
-using plan::Interval;
 using plan::LineCap;
 using plan::LineJoin;
 using plan::PathItem;
@@ -39,8 +41,8 @@ constexpr double kInteriorWall = 0.12;
 constexpr double kMinLabelScale = 0.6;
 // Stair tread depth drawn, m.
 constexpr double kTread = 0.28;
-// How close (m) an element must be to a wall line to count as lying on it; FORMAT.md's tolerance.
-constexpr double kOnWall = kTolerance;
+// How close (m) an element must be to a wall line to count as lying on it (layout.h's policy).
+constexpr double kOnWall = kOnWallTolerance;
 
 const Rgb kWallInk{0.16, 0.18, 0.20};
 const Rgb kText{0.11, 0.12, 0.14};
@@ -77,16 +79,10 @@ Point Sub(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
 // ----------------------------------------------------------------------------------------------------
 // What each level holds, in plan coordinates.
 
-// How a door (or the entrance) is drawn: the leaf turns about `hinge` and stands open at `leaf_end`;
-// the swing arc runs from there to `free_end`, the other end of the opening.
-struct DoorSwing {
-  Point hinge, free_end, leaf_end;
-};
-
 struct PlacedElement {
   const Element* element = nullptr;
   bool on_wall = true;  // where FORMAT.md rule 3 puts it; drawn in red otherwise
-  DoorSwing swing;      // doors and entrances
+  DoorSwing swing;      // doors and entrances (layout/door_swing.h: the rule the 3D building follows too)
   Point outward;        // entrances: unit direction pointing out of the building
 };
 
@@ -94,7 +90,8 @@ struct LevelGeometry {
   int level = 0;
   std::vector<int> rooms;           // indices into Layout::rooms
   std::vector<Segment> exterior;    // footprint boundary: room edges no other room shares
-  std::vector<Segment> shared;      // edges shared by two rooms (each stretch listed from both sides)
+  std::vector<Segment> shared;      // edges shared by two rooms (each stretch listed from both sides,
+                                    // neighbours' collinear pieces along one edge merged into one stroke)
   std::vector<PlacedElement> entrances, doors, opens, windows, interiors;
   bool has_stairs = false;
   bool stairs_go_up = false;
@@ -115,104 +112,25 @@ std::vector<PlacedElement> Place(const Layout& layout, const std::vector<Element
   return placed;
 }
 
-// The rooms of the level on either side of the middle of `s` (left = the side of its left normal).
-void RoomsBeside(const Layout& layout, const LevelGeometry& g, const Segment& s, int* left, int* right) {
-  *left = *right = -1;
-  const double length = Length(s);
-  if (length <= 0.0) return;
-  const Point n{-(s.b.y - s.a.y) / length, (s.b.x - s.a.x) / length};
-  const Point mid{(s.a.x + s.b.x) / 2.0, (s.a.y + s.b.y) / 2.0};
-  for (int r : g.rooms) {
-    const Ring& ring = layout.rooms[r].polygon;
-    if (*left < 0 && plan::PointInRing(Add(mid, Scale(n, 0.05)), ring)) *left = r;
-    if (*right < 0 && plan::PointInRing(Sub(mid, Scale(n, 0.05)), ring)) *right = r;
-  }
-}
-
-Point LeftNormal(const Segment& s) {
-  const double length = std::max(Length(s), 1e-12);
-  return {-(s.b.y - s.a.y) / length, (s.b.x - s.a.x) / length};
-}
-
-// Unit direction out of the building across `s`: towards the side without a room; where both or
-// neither side has one, away from the floor's middle `centre`.
-Point OutwardOf(const Layout& layout, const LevelGeometry& g, const Segment& s, Point centre) {
-  const Point n = LeftNormal(s);
-  int left = -1, right = -1;
-  RoomsBeside(layout, g, s, &left, &right);
-  if ((left >= 0) != (right >= 0)) return left >= 0 ? Scale(n, -1.0) : n;
-  const Point mid{(s.a.x + s.b.x) / 2.0, (s.a.y + s.b.y) / 2.0};
-  const Point away = Sub(mid, centre);
-  return away.x * n.x + away.y * n.y >= 0.0 ? n : Scale(n, -1.0);
-}
-
-// Which way the leaf swings (see the ranking inside); `into_side` forces a side (the entrance opens into
-// the building). The hinge is the end nearer a corner of that room, so the open leaf rests along a wall.
-DoorSwing SwingOf(const Layout& layout, const LevelGeometry& g, const Segment& s, std::optional<Point> into_side) {
-  const Point n = LeftNormal(s);
-  int left = -1, right = -1;
-  RoomsBeside(layout, g, s, &left, &right);
-  int into = left >= 0 ? left : right;
-  if (left >= 0 && right >= 0) {
-    // Doors open into the room one enters from the common spaces: never onto a balcony, nor into a
-    // stair hall or a living, dining or meeting room when the other side is a private room; between
-    // two of a kind, into the smaller.
-    auto rank = [&](const Room& room) {
-      switch (room.category) {
-        case Category::kBalcony: return 3;
-        case Category::kUtilityRoom: return g.has_stairs ? 2 : 0;
-        case Category::kLivingRoom:
-        case Category::kDiningRoom:
-        case Category::kMeetingRoom: return 1;
-        default: return 0;
-      }
-    };
-    const Room& l = layout.rooms[left];
-    const Room& r = layout.rooms[right];
-    if (rank(l) != rank(r)) {
-      into = rank(l) < rank(r) ? left : right;
-    } else {
-      into = Area(l.polygon) <= Area(r.polygon) ? left : right;
-    }
-  }
-  double side = (into >= 0 && into == right) ? -1.0 : 1.0;
-  if (into_side) {
-    side = (into_side->x * n.x + into_side->y * n.y) >= 0.0 ? 1.0 : -1.0;
-    into = side > 0 ? left : right;
-  }
-  DoorSwing swing{s.a, s.b, {}};
-  if (into >= 0) {
-    double da = 1e300, db = 1e300;
-    for (const Point& p : layout.rooms[into].polygon) {
-      da = std::min(da, plan::Distance(p, s.a));
-      db = std::min(db, plan::Distance(p, s.b));
-    }
-    if (db < da) std::swap(swing.hinge, swing.free_end);
-  }
-  swing.leaf_end = Add(swing.hinge, Scale(n, side * Length(s)));
-  return swing;
-}
-
 LevelGeometry AnalyseLevel(const Layout& layout, int level, bool multi_story, int top_level) {
   LevelGeometry g;
   g.level = level;
   g.rooms = layout.RoomsOnLevel(level);
-  std::vector<std::vector<Segment>> edges;
-  for (int r : g.rooms) edges.push_back(plan::RingEdges(layout.rooms[r].polygon));
-  for (size_t i = 0; i < g.rooms.size(); ++i) {
-    std::vector<Segment> others;
-    for (size_t j = 0; j < g.rooms.size(); ++j) {
-      if (j != i) others.insert(others.end(), edges[j].begin(), edges[j].end());
+  // layout/walls.h's pieces, edge by edge: the shared ones of one edge merged into one stroke.
+  const std::vector<WallPiece> pieces = LevelWallPieces(layout, level, kOnWall);
+  for (std::size_t i = 0; i < pieces.size();) {
+    const WallPiece& first = pieces[i];
+    const Ring& ring = layout.rooms[first.room].polygon;
+    const Segment edge{ring[first.edge], ring[(first.edge + 1) % ring.size()]};
+    std::vector<Interval> shared;
+    for (; i < pieces.size() && pieces[i].room == first.room && pieces[i].edge == first.edge; ++i) {
+      if (pieces[i].exterior()) g.exterior.push_back(pieces[i].segment);
+      else shared.push_back(pieces[i].along);
     }
-    for (const Segment& edge : edges[i]) {
-      const std::vector<Interval> covered = plan::CollinearOverlaps(edge, others, kOnWall);
-      for (const Interval& stretch : covered) g.shared.push_back(plan::SubSegment(edge, stretch));
-      for (const Interval& stretch : plan::Complement(covered, Length(edge), kOnWall)) {
-        g.exterior.push_back(plan::SubSegment(edge, stretch));
-      }
-    }
-    if (multi_story && layout.rooms[g.rooms[i]].category == Category::kUtilityRoom) g.has_stairs = true;
+    for (const Interval& stretch : MergeIntervals(shared, kOnWall)) g.shared.push_back(SubSegment(edge, stretch));
   }
+  for (int r : g.rooms)
+    if (multi_story && layout.rooms[r].category == Category::kUtilityRoom) g.has_stairs = true;
   g.stairs_go_up = level < top_level;
   g.entrances = Place(layout, layout.entrances, level);
   g.windows = Place(layout, layout.windows, level);
@@ -220,20 +138,10 @@ LevelGeometry AnalyseLevel(const Layout& layout, int level, bool multi_story, in
   g.opens = Place(layout, layout.opens, level);
   g.interiors = Place(layout, layout.interiors, level);
 
-  // The middle of the floor, to tell outside from inside where no room says it.
-  Point centre;
-  int corners = 0;
-  for (int r : g.rooms) {
-    for (const Point& p : layout.rooms[r].polygon) {
-      centre = Add(centre, p);
-      ++corners;
-    }
-  }
-  if (corners > 0) centre = Scale(centre, 1.0 / corners);
-  for (PlacedElement& door : g.doors) door.swing = SwingOf(layout, g, door.element->shape, std::nullopt);
+  for (PlacedElement& door : g.doors) door.swing = SwingOfDoor(layout, *door.element, level);
   for (PlacedElement& entrance : g.entrances) {
-    entrance.outward = OutwardOf(layout, g, entrance.element->shape, centre);
-    entrance.swing = SwingOf(layout, g, entrance.element->shape, Scale(entrance.outward, -1.0));
+    entrance.swing = SwingOfDoor(layout, *entrance.element, level);
+    entrance.outward = {-entrance.swing.leaf_side.x, -entrance.swing.leaf_side.y};
   }
   return g;
 }
@@ -443,7 +351,7 @@ Result<Content> Analyse(const Layout& layout, const PlanRenderOptions& options, 
       for (const PlacedElement& p : *list) walls.push_back(p.element->shape);
     }
     for (const Segment& s : g.shared) {
-      if (!plan::CoveredBy(s, walls, kOnWall)) any[LegendEntry::kNoWall] = true;
+      if (!SegmentsCover(walls, s, kOnWall)) any[LegendEntry::kNoWall] = true;
     }
   }
   for (const auto& [kind, text] : symbol_texts) {
@@ -497,7 +405,7 @@ Result<Frame> MakeFrame(const Content& c, const PlanRenderOptions& options, cons
     for (const auto* list : {&g.entrances, &g.doors}) {
       for (const PlacedElement& p : *list) {
         const DoorSwing& w = p.swing;
-        const double radius = plan::Distance(w.hinge, w.free_end);
+        const double radius = Distance(w.hinge, w.free_end);
         const Point bisector = Add(Sub(w.leaf_end, w.hinge), Sub(w.free_end, w.hinge));
         const double length = std::hypot(bisector.x, bisector.y);
         grow(w.leaf_end);
@@ -829,8 +737,8 @@ class PlanPainter {
   static std::vector<Segment> Minus(const std::vector<Segment>& segments, const std::vector<Segment>& cuts) {
     std::vector<Segment> out;
     for (const Segment& s : segments) {
-      const auto covered = plan::CollinearOverlaps(s, cuts, kOnWall);
-      for (const Interval& keep : plan::Complement(covered, Length(s), kOnWall)) out.push_back(plan::SubSegment(s, keep));
+      const auto covered = IntervalsOnSegments(s, cuts, kOnWall);
+      for (const Interval& keep : ComplementIntervals(covered, Length(s), kOnWall)) out.push_back(SubSegment(s, keep));
     }
     return out;
   }
@@ -844,7 +752,7 @@ class PlanPainter {
       if (!chain.closed && points.size() >= 2) {
         auto at_opening = [&](const Point& p) {
           for (const Segment& o : openings) {
-            if (plan::Distance(p, o.a) < 1e-4 || plan::Distance(p, o.b) < 1e-4) return true;
+            if (Distance(p, o.a) < 1e-4 || Distance(p, o.b) < 1e-4) return true;
           }
           return false;
         };
@@ -886,7 +794,7 @@ class PlanPainter {
 
   // Wall thickness at an element, px: exterior where it lies on the footprint boundary.
   double WallAt(const LevelGeometry& g, const Segment& s) const {
-    return plan::CoveredBy(s, g.exterior, kOnWall) ? ExteriorPx() : InteriorPx();
+    return SegmentsCover(g.exterior, s, kOnWall) ? ExteriorPx() : InteriorPx();
   }
 
   void DrawOpen(const PlacedElement& e) {
@@ -984,7 +892,7 @@ class PlanPainter {
     for (const auto* list : {&g.doors, &g.entrances}) {
       for (const PlacedElement& e : *list) {
         const DoorSwing& w = e.swing;
-        const double radius = plan::Distance(w.hinge, w.free_end);
+        const double radius = Distance(w.hinge, w.free_end);
         const double a0 = std::atan2(w.leaf_end.y - w.hinge.y, w.leaf_end.x - w.hinge.x);
         double a1 = std::atan2(w.free_end.y - w.hinge.y, w.free_end.x - w.hinge.x);
         while (a1 - a0 > M_PI) a1 -= 2.0 * M_PI;

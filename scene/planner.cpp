@@ -105,7 +105,7 @@ class Planning {
  public:
   Planning(const RoomContext& room, const std::string& text, uint64_t seed, const PlannerOptions& options)
       : room_(room), text_(text), options_(options), priors_(PriorsFor(room.category)),
-        rng_(seed ^ (NameHash(room.name) * 0x9E3779B97F4A7C15ull)) {
+        rng_(seed ^ (NameHash(room.name) * kSplitMix64Gamma)) {
     const double area = room_.furnishable_area;
     floor_left_ = options_.floor_share * area;
     prompt_extra_ = std::max(0.0, options_.prompt_floor_share - options_.floor_share) * area;

@@ -14,6 +14,7 @@
 #include <boost/geometry/geometries/polygon.hpp>
 #pragma GCC diagnostic pop
 
+#include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "scene/door_swing.h"
 
@@ -152,7 +153,7 @@ bool OnEdge(const Segment& s, const Ring& polygon, int edge) {
 
 bool InAnyRing(Point p, const std::vector<Ring>& rings) {
   for (const Ring& r : rings)
-    if (Inside(p, r)) return true;
+    if (PointInRing(p, r, 0)) return true;
   return false;
 }
 
@@ -209,7 +210,7 @@ std::vector<Interval> FreeStretches(const WallEdge& wall, const std::vector<Keep
       if (blocked) break;
       if (z.z_min > floor_z + kFloorReach) continue;
       for (double depth : {0.05, 0.3, 0.55})
-        blocked = blocked || Inside(Add(base, Scale(in, depth)), z.polygon);
+        blocked = blocked || PointInRing(Add(base, Scale(in, depth)), z.polygon, 0);
     }
     if (!blocked) free.push_back({std::max(0.0, t - kWallProbeStep / 2.0), std::min(len, t + kWallProbeStep / 2.0)});
   }

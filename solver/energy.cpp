@@ -8,6 +8,7 @@
 #include "solver/layer.h"
 #include "solver/residuals.h"
 #include "solver/state.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -95,7 +96,7 @@ EnergyTerms StateEnergy(const RoomState& st) {
   for (int i = 0; i < n; ++i) {
     if (st.Hung(i)) continue;
     const double dz = std::abs(st.placements[i].pose.z - st.SupportHeight(i));
-    const bool outside = !geo::Inside(boxes[i].c, st.SupportRegion(i));
+    const bool outside = !PointInRing(boxes[i].c, st.SupportRegion(i), 0);
     const double s = dz + (outside ? 1.0 : 0.0);
     if (s <= 0.0) continue;
     e.support += s;

@@ -15,6 +15,7 @@
 #include "mesh/geometry2d.h"
 #include "solver/rng.h"
 #include "solver/state.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -79,7 +80,7 @@ bool AabbOverlap(const fcl::AABBd& a, const fcl::AABBd& b, double slack = 0.0) {
 }
 
 bool InsideWithTolerance(Point p, const Ring& ring, double tolerance) {
-  return geo::Inside(p, ring) || geo::DistToRing(p, ring) <= tolerance;
+  return PointInRing(p, ring, 0) || DistanceToBoundary(p, ring) <= tolerance;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "mesh/geometry2d.h"
 #include "mesh/triangulate.h"
 #include "solver/residuals.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -65,13 +66,13 @@ ceres::Manifold* ManifoldFor(const Body& b) {
   }
 }
 
-bool IsConvex(const Ring& ring) { return ReflexVertices(ring).empty(); }
+bool WithoutReflexCorner(const Ring& ring) { return ReflexVertices(ring).empty(); }
 
 // Convex pieces of a polygon (itself when convex, else its triangles).
 std::vector<Ring> ConvexPieces(const Ring& ring) {
   const Ring clean = geo::CleanRing(ring);
   if (clean.size() < 3) return {};
-  if (IsConvex(clean)) return {clean};
+  if (WithoutReflexCorner(clean)) return {clean};
   std::vector<Ring> pieces;
   for (const auto& t : TriangulatePolygon(clean)) {
     Ring tri = {clean[t[0]], clean[t[1]], clean[t[2]]};
@@ -393,8 +394,8 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     }
     for (const Prism& prism : layer.prisms) {
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
-      if (slack >= 0.0 && !geo::Inside({body.p[0], body.p[1]}, prism.polygon) &&
-          geo::DistToRing({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
+      if (slack >= 0.0 && !PointInRing({body.p[0], body.p[1]}, prism.polygon, 0) &&
+          DistanceToBoundary({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
         continue;
       add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), o.object_gap, o.weight_keep_out),
           {b}, true);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "mesh/geometry2d.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -274,7 +275,7 @@ void GridSlots(const Layer& layer, int self, const std::vector<double>& yaws, do
   const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
   for (double x = x0 + 0.5 * step; x < x1; x += step) {
     for (double y = y0 + 0.5 * step; y < y1; y += step) {
-      if (!geo::Inside({x, y}, layer.region)) continue;
+      if (!PointInRing({x, y}, layer.region, 0)) continue;
       for (double yaw : yaws) out.push_back({x, y, b.p[2], yaw, -1, 0.0});
     }
   }
@@ -353,7 +354,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
     for (int t : targets) grid.push_back({layer.bodies[t].p[0], layer.bodies[t].p[1], 0.0, SnapYaw(layer.bodies[t].p[3], classes), -1, -1.0});
     for (Candidate& c : grid) {
       c.z = z;
-      c.pref += -0.1 * std::min(geo::DistToRing({c.x, c.y}, layer.region), 2.0);
+      c.pref += -0.1 * std::min(DistanceToBoundary({c.x, c.y}, layer.region), 2.0);
       out.push_back(c);
     }
     return out;
@@ -370,7 +371,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
     }
   }
   for (Candidate& c : grid) {
-    const double clearance = geo::DistToRing({c.x, c.y}, layer.region);
+    const double clearance = DistanceToBoundary({c.x, c.y}, layer.region);
     // Hubs (a dining table with its chairs, a rug) keep room around them; loners go by a wall.
     c.pref += hub ? -0.1 * std::min(clearance, 1.5) : 0.1 * std::min(clearance, 3.0);
     // With relations to honour, the grid is a fallback behind the slots around the targets.

@@ -21,6 +21,7 @@
 #include "layout/layout.h"
 #include "solver/body_shape.h"
 #include "solver/problem.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 
@@ -237,7 +238,7 @@ template <typename T>
 T SignedDistanceToRing(const Ring& ring, const T& px, const T& py) {
   using std::sqrt;
   const double x = Scalar(px), y = Scalar(py);
-  bool inside = false;
+  const bool inside = PointInRing({x, y}, ring, 0);  // layout's point in polygon
   double best = 1e300;
   int best_edge = 0;
   double best_t = 0.0;
@@ -245,7 +246,6 @@ T SignedDistanceToRing(const Ring& ring, const T& px, const T& py) {
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
     const Point& a = ring[j];
     const Point& b = ring[i];
-    if ((b.y > y) != (a.y > y) && x < (a.x - b.x) * (y - b.y) / (a.y - b.y) + b.x) inside = !inside;
     const double ex = b.x - a.x, ey = b.y - a.y;
     const double l2 = ex * ex + ey * ey;
     const double t = l2 > 0.0 ? std::clamp(((x - a.x) * ex + (y - a.y) * ey) / l2, 0.0, 1.0) : 0.0;

@@ -13,6 +13,7 @@
 #include "solver/place.h"
 #include "solver/rng.h"
 #include "solver/state.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -140,7 +141,7 @@ struct RoomSolver::Impl {
     LayerCost best_cost{1e300, 1e300};
     for (int r = 0; r < options.restarts; ++r) {
       Layer layer = RoomLayer(state, floor, {});
-      Rng rng(options.seed * 0x9E3779B97F4A7C15ull + static_cast<uint64_t>(r) + 1);
+      Rng rng(options.seed * kSplitMix64Gamma + static_cast<uint64_t>(r) + 1);
       const LayerCost cost = Construct(layer, rng, r == 0 ? 0.0 : 0.3);
       const bool better = cost.hard < best_cost.hard - kFeasible ||
                           (std::abs(cost.hard - best_cost.hard) <= kFeasible && cost.soft < best_cost.soft);
@@ -326,7 +327,7 @@ struct RoomSolver::Impl {
         double best = 1e300;
         for (size_t k = 0; k < problem.walls.size(); ++k) {
           if (o.wall >= 0 && static_cast<int>(k) != o.wall) continue;
-          const double d = geo::DistToSegment({want.x, want.y}, problem.walls[k].a, problem.walls[k].b);
+          const double d = PointSegmentDistance({want.x, want.y}, {problem.walls[k].a, problem.walls[k].b});
           if (d < best - 1e-12) {
             best = d;
             w = static_cast<int>(k);

@@ -4,37 +4,22 @@
 #include <numbers>
 
 #include "assets/procedural/generator.h"
+#include "util/hash.h"
 
 namespace villa::procedural {
 
-std::uint64_t Rng::Next() {
-  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+std::uint64_t Rng::Next() { return stream_.Next(); }
 
-double Rng::Unit() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }
+double Rng::Unit() { return stream_.Unit(); }
 
 double Rng::Range(double lo, double hi) { return lo + (hi - lo) * Unit(); }
 
-int Rng::Int(int lo, int hi) {
-  if (hi <= lo) return lo;
-  const std::uint64_t span = static_cast<std::uint64_t>(hi - lo) + 1;
-  return lo + static_cast<int>(static_cast<std::uint64_t>((static_cast<unsigned __int128>(Next()) * span) >> 64));
-}
+int Rng::Int(int lo, int hi) { return static_cast<int>(stream_.Int(lo, hi)); }
 
-std::uint64_t HashText(std::string_view text) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
+std::uint64_t HashText(std::string_view text) { return Fnv1a64(text); }
 
 std::uint64_t MixSeed(std::uint64_t a, std::uint64_t b) {
-  Rng rng(a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull));
+  Rng rng(a * kSplitMix64Gamma ^ (b + 0x632BE59BD9B4E019ull));
   return rng.Next();
 }
 

@@ -13,13 +13,15 @@
 #include "assets/asset_mesh.h"
 #include "assets/category.h"
 #include "assets/procedural.h"
+#include "util/hash.h"
 
 namespace villa::procedural {
 
-// SplitMix64: the same stream on every machine and standard library (no std distributions).
+// util's SplitMix64 stream with the draws the generators use: the same numbers on every machine and
+// standard library (no std distributions).
 class Rng {
  public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
+  explicit Rng(std::uint64_t seed) : stream_(seed) {}
   std::uint64_t Next();
   double Unit();                       // [0, 1)
   double Range(double lo, double hi);  // [lo, hi)
@@ -31,9 +33,9 @@ class Rng {
   }
 
  private:
-  std::uint64_t state_;
+  SplitMix64 stream_;
 };
-std::uint64_t HashText(std::string_view text);  // FNV-1a, 64 bit
+std::uint64_t HashText(std::string_view text);  // FNV-1a, 64 bit (util/hash.h)
 std::uint64_t MixSeed(std::uint64_t a, std::uint64_t b);
 
 // Coordinates are kept on a 0.1 mm grid: records written with 4 decimals are then exact, and the few

@@ -162,12 +162,6 @@ struct BriefCheck {
 
 BriefCheck CheckBrief(const Brief& brief, const Layout& layout);
 
-// The footprint class of a layout's floor (partitioner.h names), by its geometry: any edge that is not
-// axis-parallel makes it irregular; otherwise the parts of its bounding box it leaves empty decide (none:
-// rectangle; one at a corner: L; one notch in a side: U; two at the corners of one side: T; notches in
-// two opposite sides: H; anything else: irregular). Empty for a level without rooms.
-std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level = 0);
-
 nlohmann::ordered_json BriefCheckToJson(const BriefCheck& check);
 
 }  // namespace villa

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <sstream>
 
+#include "finetune/layout_schema.h"
 #include "finetune/system_prompt.h"
 #include "generator/text/backends.h"
 #include "layout/layout_io.h"
@@ -24,14 +25,16 @@ std::string RepairMessage(const std::vector<Violation>& violations) {
 void PlanWithLlm(const std::string& text, const PlanOptions& options, PlanSummary& summary) {
   LlmOptions llm = options.llm;
   if (!llm.seed) llm.seed = options.seed;
-  std::vector<ChatMessage> messages{{"system", std::string(SystemPrompt())}, {"user", text}};
+  std::vector<ChatMessage> messages{{"system", std::string(SystemPrompt()), {}}, {"user", text, {}}};
+  // The layout schema for constrained decoding (finetune/layout_schema.h), unless the server lacks it.
+  const nlohmann::ordered_json response_format = options.json_schema ? LayoutResponseFormat() : nullptr;
   std::optional<Layout> last_parsed;
   bool transport_failed = false;
   for (int round = 0; round <= options.rounds; ++round) {
     PlanRound record;
     record.round = round;
     int http_attempts = 0;
-    Result<ChatAnswer> answer = ChatCompletion(llm, messages, &http_attempts);
+    Result<ChatAnswer> answer = ChatCompletion(llm, messages, response_format, &http_attempts);
     record.http_attempts = http_attempts;
     if (!answer.ok()) {
       record.error = answer.error();
@@ -75,8 +78,8 @@ void PlanWithLlm(const std::string& text, const PlanOptions& options, PlanSummar
     summary.rounds.push_back(record);
     summary.error = record.error.empty() ? "the model's layout is invalid" : record.error;
     if (round == options.rounds) break;
-    if (answer->finish_reason != "length") messages.push_back({"assistant", answer->content});
-    messages.push_back({"user", feedback});
+    if (answer->finish_reason != "length") messages.push_back({"assistant", answer->content, {}});
+    messages.push_back({"user", feedback, {}});
   }
   if (!summary.layout && last_parsed) summary.layout = std::move(last_parsed);
   if (!transport_failed)

@@ -22,10 +22,10 @@
 #include <nlohmann/json.hpp>
 
 #include "generator/text/brief.h"
-#include "generator/text/llm_client.h"
 #include "layout/layout.h"
 #include "layout/metrics.h"
 #include "layout/validate.h"
+#include "llm/client.h"
 
 namespace villa {
 
@@ -47,6 +47,9 @@ struct PlanOptions {
   int rounds = 2;
   // LLM: server, model, transport and sampling settings.
   LlmOptions llm;
+  // LLM: send response_format json_schema with the layout schema (finetune/layout_schema.h) for
+  // constrained decoding; off for servers without it.
+  bool json_schema = true;
 
   // False with a message naming the bad field and value.
   bool IsValid(std::string* message) const;

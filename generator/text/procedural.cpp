@@ -9,16 +9,10 @@
 
 #include "generator/text/backends.h"
 #include "layout/validate.h"
+#include "util/hash.h"
 
 namespace villa {
 namespace {
-
-std::uint64_t SplitMix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 // Floor counts to try, best guess first.
 std::vector<int> FloorCandidates(const Brief& brief) {
@@ -46,10 +40,11 @@ std::vector<int> FloorCandidates(const Brief& brief) {
   return out;
 }
 
-// A small deterministic generator for the placement shuffles (no std::*_distribution).
+// A small deterministic generator for the placement shuffles (no std::*_distribution): each number is
+// the SplitMix64 hash of the one before.
 struct Rng {
   std::uint64_t state;
-  std::uint64_t Next() { return state = SplitMix(state); }
+  std::uint64_t Next() { return state = SplitMix64Hash(state); }
   int Below(int n) { return n <= 1 ? 0 : static_cast<int>(Next() % static_cast<std::uint64_t>(n)); }
 };
 
@@ -292,8 +287,8 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     const bool only_required = ((a / static_cast<int>(floors.size())) % 2 == 0) == prefer_only_required;
     PartitionOptions po = PartitionOptionsForBrief(brief, f, only_required);
     // Every other round of variants places the whole-building counts ourselves.
-    if ((a / (2 * static_cast<int>(floors.size()))) % 2 == 0) DistributeRooms(po, SplitMix(options.seed ^ (0xD15Full + a)));
-    const std::uint64_t seed = SplitMix(options.seed * 0x100000001B3ull + static_cast<std::uint64_t>(a));
+    if ((a / (2 * static_cast<int>(floors.size()))) % 2 == 0) DistributeRooms(po, SplitMix64Hash(options.seed ^ (0xD15Full + a)));
+    const std::uint64_t seed = SplitMix64Hash(options.seed * kFnv1a64Prime + static_cast<std::uint64_t>(a));
     PartitionSummary ps = GenerateLayout(po, seed);
     ++attempts;
     if (!ps.ok()) {

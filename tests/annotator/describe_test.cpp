@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "annotator/describe.h"
-#include "annotator/plan_geometry.h"
+#include "layout/geometry.h"
 #include "layout/topology.h"
 #include "test_support.h"
 
@@ -70,12 +70,12 @@ std::string CheckDescriptionFact(const Layout& l, const std::string& shape, cons
       if (l.rooms[b].category != Category::kBalcony) return "not a balcony";
       bool pano = false;
       for (const Element& w : l.windows)
-        pano = pano || (w.panoramic && w.OnLevel(l.rooms[b].level) && SegmentOnRing(w.shape, l.rooms[b].polygon));
+        pano = pano || (w.panoramic && w.OnLevel(l.rooms[b].level) && RingHoldsSegment(l.rooms[b].polygon, w.shape, kOnWallTolerance));
       return pano && Linked(l, cs, a, b, false, true) ? "" : "balcony without panoramic window or door";
     }
     case FactKind::kSide: {
       if (a < 0) return "no such room";
-      Bounds bb = LevelBounds(l, l.rooms[a].level);
+      Box2 bb = LevelBounds(l, l.rooms[a].level);
       Point c = Centroid(l.rooms[a].polygon);
       double fx = (c.x - bb.min_x) / bb.width(), fy = (c.y - bb.min_y) / bb.height();
       bool ok = (f.text == "north" && fy > 2.0 / 3) || (f.text == "south" && fy < 1.0 / 3) ||

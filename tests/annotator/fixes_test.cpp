@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "annotator/fixes.h"
-#include "annotator/plan_geometry.h"
+#include "layout/geometry.h"
 #include "annotator/relabel.h"
 #include "layout/layout_io.h"
 #include "layout/topology.h"
@@ -109,7 +109,18 @@ TEST_CASE("a kitchen without a window gets one on its exterior wall", "[fixes]")
   const Element& window = fixed.windows[w];
   CHECK(!window.panoramic);
   CHECK(Length(window.shape) >= 0.6);
-  CHECK(SegmentOnRing(window.shape, fixed.rooms[fixed.FindRoom("kitchen_0/0")].polygon));
+  CHECK(RingHoldsSegment(fixed.rooms[fixed.FindRoom("kitchen_0/0")].polygon, window.shape, kOnWallTolerance));
+}
+
+TEST_CASE("a window across a collinear corner of the outside wall counts, as for the validator", "[fixes]") {
+  // The kitchen's outside wall has a corner in its middle where the neighbour's wall meets it; its window
+  // runs across that corner. Rule 9 holds, so no "add a window" fix may be offered.
+  Layout l;
+  l.rooms.push_back({Category::kKitchen, 0, 0, {{0, 0}, {2, 0}, {4, 0}, {4, 3}, {0, 3}}});
+  l.rooms.push_back({Category::kLivingRoom, 0, 0, {{0, 3}, {4, 3}, {4, 6}, {0, 6}}});
+  l.windows.push_back({"kitchen0_window", ElementKind::kWindow, {{1, 0}, {3, 0}}, 0, false});
+  for (const Violation& v : ValidateLayout(l).violations) CHECK(v.message != "kitchen_0/0 has no window");
+  CHECK_FALSE(HasFix(FindFixes(l), FixKind::kAddWindow, "kitchen_0/0"));
 }
 
 TEST_CASE("a room made a bathroom without a window gets one", "[fixes]") {

@@ -218,3 +218,40 @@ TEST_CASE("a room touching another's outline at one point encloses a hole", "[ge
   INFO(Describe(report));
   CHECK(Find(report, "level 0 footprint has a hole of 5.00 m2 enclosed by room_0/0, room_0/2, room_0/1"));
 }
+
+TEST_CASE("collinear overlaps with a list of segments find the shared stretch and nothing else", "[geometry]") {
+  const Segment edge{{0, 0}, {10, 0}};
+  const std::vector<Segment> others = {{{2, 0}, {4, 0}}, {{6, 0}, {3, 0}}, {{5, 1}, {7, 1}}, {{8, 0}, {8, 3}}, {{9, 0}, {12, 0}}};
+  const auto overlaps = IntervalsOnSegments(edge, others, kTolerance);
+  REQUIRE(overlaps.size() == 2);
+  CHECK(overlaps[0].first == Approx(2));
+  CHECK(overlaps[0].second == Approx(6));
+  CHECK(overlaps[1].first == Approx(9));
+  CHECK(overlaps[1].second == Approx(10));
+  const auto gaps = ComplementIntervals(overlaps, 10, kTolerance);
+  REQUIRE(gaps.size() == 2);
+  CHECK(gaps[0].second == Approx(2));
+  CHECK(gaps[1].first == Approx(6));
+  CHECK(gaps[1].second == Approx(9));
+  const Segment middle = SubSegment(edge, gaps[1]);
+  CHECK(middle.a.x == Approx(6));
+  CHECK(middle.b.x == Approx(9));
+
+  CHECK(SegmentsCover(others, {{2.5, 0}, {5.5, 0}}, kTolerance));
+  CHECK_FALSE(SegmentsCover(others, {{5, 0}, {7, 0}}, kTolerance));
+  CHECK_FALSE(SegmentsCover(others, {{5, 1e-3}, {6, 1e-3}}, kTolerance));
+  // On a slanted wall.
+  CHECK(SegmentsCover({{{13, 0}, {16, 3}}}, {{13.5, 0.5}, {15.5, 2.5}}, kTolerance));
+}
+
+TEST_CASE("a ring holds a segment across its collinear corner as on one edge", "[geometry]") {
+  // The bottom edge runs through a collinear corner at (2, 0).
+  const Ring room{{0, 0}, {2, 0}, {4, 0}, {4, 3}, {0, 3}};
+  CHECK(RingHoldsSegment(room, {{1, 0}, {3, 0}}, kOnWallTolerance));
+  CHECK(RingHoldsSegment(room, {{3, 0}, {1, 0}}, kOnWallTolerance));
+  CHECK_FALSE(RingHoldsSegment(room, {{3, 0}, {5, 0}}, kOnWallTolerance));  // runs past the corner
+  CHECK_FALSE(RingHoldsSegment(room, {{1, 1}, {3, 1}}, kOnWallTolerance));  // inside
+  CHECK_FALSE(RingHoldsSegment(room, {{1, 0}, {1, 0}}, kOnWallTolerance));  // no length
+  CHECK(DistanceToBoundary({1, 1}, room) == Approx(1.0));
+  CHECK(DistanceToBoundary({5, 1.5}, room) == Approx(1.0));
+}

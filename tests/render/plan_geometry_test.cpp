@@ -1,6 +1,7 @@
-// The plane geometry under the floor plans: shared edges, wall chains, clipping, label points.
+// The drawing geometry under the floor plans: wall chains, clipping, label points.
 #include <catch2/catch.hpp>
 
+#include "layout/geometry.h"
 #include "render/plan_geometry.h"
 #include "render/plan_render.h"
 
@@ -13,28 +14,6 @@ const Ring kL = {{0, 0}, {8, 0}, {8, 8}, {4, 8}, {4, 12}, {0, 12}};
 // A thin L whose centroid lies outside it.
 const Ring kThinL = {{0, 0}, {10, 0}, {10, 1}, {1, 1}, {1, 10}, {0, 10}};
 }  // namespace
-
-TEST_CASE("collinear overlaps find the shared stretch of two edges and nothing else", "[geometry]") {
-  const Segment edge{{0, 0}, {10, 0}};
-  const std::vector<Segment> others = {{{2, 0}, {4, 0}}, {{6, 0}, {3, 0}}, {{5, 1}, {7, 1}}, {{8, 0}, {8, 3}}, {{9, 0}, {12, 0}}};
-  const auto overlaps = CollinearOverlaps(edge, others, 1e-6);
-  REQUIRE(overlaps.size() == 2);
-  CHECK(overlaps[0].lo == Approx(2));
-  CHECK(overlaps[0].hi == Approx(6));
-  CHECK(overlaps[1].lo == Approx(9));
-  CHECK(overlaps[1].hi == Approx(10));
-  const auto gaps = Complement(overlaps, 10, 1e-6);
-  REQUIRE(gaps.size() == 2);
-  CHECK(gaps[0].hi == Approx(2));
-  CHECK(gaps[1].lo == Approx(6));
-  CHECK(gaps[1].hi == Approx(9));
-
-  CHECK(CoveredBy({{2.5, 0}, {5.5, 0}}, others, 1e-6));
-  CHECK_FALSE(CoveredBy({{5, 0}, {7, 0}}, others, 1e-6));
-  CHECK_FALSE(CoveredBy({{5, 1e-3}, {6, 1e-3}}, others, 1e-6));
-  // On a slanted wall.
-  CHECK(CoveredBy({{13.5, 0.5}, {15.5, 2.5}}, {{{13, 0}, {16, 3}}}, 1e-6));
-}
 
 TEST_CASE("wall pieces chain into loops and stop at junctions", "[geometry]") {
   const auto square = ChainSegments({{{0, 0}, {4, 0}}, {{4, 4}, {4, 0}}, {{4, 4}, {0, 4}}, {{0, 0}, {0, 4}}}, 1e-6);
@@ -79,7 +58,7 @@ TEST_CASE("the label point of an L-shaped room is inside its widest part, not at
   CHECK(p.y < 8.0);
 
   const Point thin = RoomLabelPoint(kThinL);
-  CHECK(PointInRing(thin, kThinL));
+  CHECK(PointInRing(thin, kThinL, 0));
   CHECK(SignedDistanceToRing(thin, kThinL) > 0.45);
   // The centroid of the thin L is outside it.
   double cx = 0, cy = 0, a2 = 0;
@@ -89,7 +68,7 @@ TEST_CASE("the label point of an L-shaped room is inside its widest part, not at
     cy += (kThinL[j].y + kThinL[i].y) * f;
     a2 += f;
   }
-  CHECK_FALSE(PointInRing({cx / (3 * a2), cy / (3 * a2)}, kThinL));
+  CHECK_FALSE(PointInRing({cx / (3 * a2), cy / (3 * a2)}, kThinL, 0));
 
   const Ring triangle = {{10, 0}, {14, 4}, {10, 4}};
   const Point t = RoomLabelPoint(triangle);

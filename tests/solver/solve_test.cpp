@@ -9,6 +9,7 @@
 #include "fixtures.h"
 #include "mesh/geometry2d.h"
 #include "solver/solve.h"
+#include "layout/geometry.h"
 
 namespace villa::solver {
 namespace {
@@ -65,7 +66,7 @@ TEST_CASE("A living room is furnished with no collision, nothing floating or out
   const ObjectPlacement& sp = PlacementOf(s, "r/sofa-0");
   REQUIRE(sp.wall >= 0);
   const WallEdge& wall = room.walls[sp.wall];
-  CHECK(geo::DistToSegment({sofa.x, sofa.y}, wall.a, wall.b) == Approx(0.02 + 0.45).margin(1e-6));
+  CHECK(PointSegmentDistance({sofa.x, sofa.y}, {wall.a, wall.b}) == Approx(0.02 + 0.45).margin(1e-6));
   // The TV rests on its stand, the books on their cavities' floors.
   const ObjectPlacement& tv = PlacementOf(s, "r/tv-0");
   CHECK(tv.pose.z == Approx(PlacementOf(s, "r/tv-stand-0").pose.z + 0.5));

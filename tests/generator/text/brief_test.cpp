@@ -320,26 +320,6 @@ TEST_CASE("a layout is checked against every requirement of a brief") {
   }
 }
 
-TEST_CASE("footprint classes from geometry") {
-  auto layout_of = [](std::vector<Ring> rings) {
-    Layout l;
-    int i = 0;
-    for (auto& r : rings) l.rooms.push_back({Category::kBedroom, 0, i++, r});
-    return l;
-  };
-  auto box = [](double x0, double y0, double x1, double y1) { return Ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; };
-  CHECK(ClassifyFootprint(layout_of({box(0, 0, 6, 10), box(6, 0, 12, 10)})) == ShapeClass::kRectangle);
-  CHECK(ClassifyFootprint(layout_of({box(0, 0, 10, 5), box(0, 5, 5, 10)})) == ShapeClass::kL);
-  CHECK(ClassifyFootprint(layout_of({box(0, 0, 12, 4), box(0, 4, 4, 10), box(8, 4, 12, 10)})) == ShapeClass::kU);
-  CHECK(ClassifyFootprint(layout_of({box(0, 6, 12, 10), box(4, 0, 8, 6)})) == ShapeClass::kT);
-  CHECK(ClassifyFootprint(layout_of({box(0, 0, 4, 10), box(4, 3, 8, 7), box(8, 0, 12, 10)})) == ShapeClass::kH);
-  CHECK(ClassifyFootprint(layout_of({Ring{{0, 0}, {10, 0}, {10, 6}, {7, 9}, {0, 9}}})) == ShapeClass::kIrregular);
-  // A slanted wall between two rooms of a rectangle is not a slanted footprint.
-  CHECK(ClassifyFootprint(layout_of({Ring{{0, 0}, {6, 0}, {4, 10}, {0, 10}}, Ring{{6, 0}, {10, 0}, {10, 10}, {4, 10}}})) ==
-        ShapeClass::kRectangle);
-  CHECK(!ClassifyFootprint(layout_of({}), 0));
-}
-
 }  // namespace villa
 
 namespace villa {

@@ -1,8 +1,6 @@
-// The LLM backend against a local OpenAI-compatible server (cpp-httplib on 127.0.0.1, ephemeral port)
-// that replays scripted answers. Each case asserts what the client did: the requests it sent and their
+// The LLM backend against a local OpenAI-compatible server (tests/llm/scripted_server.h) that replays
+// scripted answers. Each case asserts what the client did: the requests it sent and their
 // bodies, the rounds, the error text, and the exit status of `villa plan`.
-#include <httplib.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -15,84 +13,20 @@
 #include "finetune/layout_schema.h"
 #include "finetune/system_prompt.h"
 #include "generator/text/backends.h"
-#include "generator/text/llm_client.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
+#include "llm/client.h"
+#include "llm/scripted_server.h"
 #include "util/atomic_file.h"
 
 namespace villa {
 namespace {
 
-struct Reply {
-  int status = 200;
-  std::string body;
-  double delay_s = 0.0;
-  std::string retry_after;  // header value, empty: none
-};
-
-Reply Completion(const std::string& content, const std::string& finish_reason = "stop") {
-  Json body{{"id", "chatcmpl-test"},
-            {"object", "chat.completion"},
-            {"model", "villa-test"},
-            {"choices", Json::array({Json{{"index", 0},
-                                          {"message", Json{{"role", "assistant"}, {"content", content}}},
-                                          {"finish_reason", finish_reason}}})}};
-  return {200, body.dump(), 0.0, ""};
-}
-
-Reply Failure(int status, const std::string& message, const std::string& retry_after = "") {
-  Json body{{"error", Json{{"message", message}, {"type", "server_error"}}}};
-  return {status, body.dump(), 0.0, retry_after};
-}
-
-// Replays `script` in order, one reply per request; records every request.
-class ScriptedServer {
- public:
-  explicit ScriptedServer(std::vector<Reply> script) : script_(std::move(script)) {
-    server_.Post("/v1/chat/completions", [this](const httplib::Request& request, httplib::Response& response) {
-      Reply reply;
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        bodies_.push_back(Json::parse(request.body));
-        authorization_.push_back(request.get_header_value("Authorization"));
-        reply = next_ < script_.size() ? script_[next_] : Failure(500, "script exhausted");
-        ++next_;
-      }
-      if (reply.delay_s > 0) std::this_thread::sleep_for(std::chrono::duration<double>(reply.delay_s));
-      response.status = reply.status;
-      if (!reply.retry_after.empty()) response.set_header("Retry-After", reply.retry_after);
-      response.set_content(reply.body, "application/json");
-    });
-    port_ = server_.bind_to_any_port("127.0.0.1");
-    REQUIRE(port_ > 0);
-    thread_ = std::thread([this] { server_.listen_after_bind(); });
-    for (int i = 0; i < 200 && !server_.is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ~ScriptedServer() {
-    server_.stop();
-    thread_.join();
-  }
-  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_); }
-  std::vector<Json> bodies() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return bodies_;
-  }
-  std::vector<std::string> authorization() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return authorization_;
-  }
-
- private:
-  httplib::Server server_;
-  std::thread thread_;
-  int port_ = 0;
-  std::mutex mutex_;
-  std::vector<Reply> script_;
-  std::size_t next_ = 0;
-  std::vector<Json> bodies_;
-  std::vector<std::string> authorization_;
-};
+using testing::Completion;
+using testing::Failure;
+using testing::Reply;
+using testing::ScriptedServer;
 
 Layout Fixture(const std::string& name) {
   Result<Layout> layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/" + name);
@@ -292,21 +226,6 @@ TEST_CASE("llm: a refused connection is retried, then reported") {
   INFO(plan.error);
   CHECK(plan.error.find("gave up after 2 attempts") != std::string::npos);
   CHECK(plan.error.find("127.0.0.1:1/v1/chat/completions") != std::string::npos);
-}
-
-TEST_CASE("llm: server addresses and options are checked") {
-  CHECK(ChatCompletionsUrl("http://h:8000") == "http://h:8000/v1/chat/completions");
-  CHECK(ChatCompletionsUrl("http://h:8000/") == "http://h:8000/v1/chat/completions");
-  CHECK(ChatCompletionsUrl("http://h:8000/v1") == "http://h:8000/v1/chat/completions");
-  CHECK(ChatCompletionsUrl("https://api.x.com/v1/chat/completions") == "https://api.x.com/v1/chat/completions");
-  LlmOptions o;
-  std::string message;
-  CHECK(!o.IsValid(&message));
-  CHECK(message.find("--llm") != std::string::npos);
-  o.url = "ftp://x";
-  o.model = "m";
-  CHECK(!o.IsValid(&message));
-  CHECK(message.find("ftp://x") != std::string::npos);
 }
 
 TEST_CASE("villa plan --llm: exit status, files beside the layout, and the API key kept secret") {

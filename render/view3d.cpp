@@ -1,5 +1,6 @@
-#include "building/render_view.h"
+#include "render/view3d.h"
 
+#include <cairo.h>
 #include <embree3/rtcore.h>
 #include <png.h>
 
@@ -9,7 +10,6 @@
 #include <numbers>
 #include <thread>
 
-#include "building/materials.h"
 #include "util/atomic_file.h"
 
 namespace villa {
@@ -22,12 +22,6 @@ struct SceneDeleter {
   void operator()(RTCScene s) const { rtcReleaseScene(s); }
 };
 
-constexpr Rgb kSlabEdge{0.80, 0.78, 0.74};
-
-bool Cuttable(PartKind kind) {
-  return kind == PartKind::kExteriorWall || kind == PartKind::kInteriorWall || kind == PartKind::kDoorLeaf ||
-         kind == PartKind::kWindowGlass || kind == PartKind::kStair;
-}
 
 struct Hit {
   bool hit = false;
@@ -57,16 +51,16 @@ Hit Cast(RTCScene scene, Vec3 origin, Vec3 dir, float tnear, float tfar) {
 
 class Tracer {
  public:
-  Tracer(const BuildingMesh& building, const RenderOptions& options) : building_(building), options_(options) {
+  Tracer(const ViewScene& scene, const RenderOptions& options) : scene_meshes_(scene.meshes), options_(options) {
     device_.reset(rtcNewDevice("threads=1"));
     scene_.reset(rtcNewScene(device_.get()));
     int top = options.top_level;
-    for (size_t i = 0; i < building.parts.size(); ++i) {
-      const MeshPart& part = building.parts[i];
-      if (top >= 0 && part.level > top) continue;
-      if (top >= 0 && top < building.levels - 1 && part.kind == PartKind::kRoof) continue;
-      if (top >= 0 && part.kind == PartKind::kRoof) continue;  // the roof of the top level is above the cut too
-      const TriangleMesh& m = part.mesh;
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+      const ViewMesh& view = scene.meshes[i];
+      if (top >= 0 && view.level > top) continue;
+      if (top >= 0 && view.cut == CutAway::kRemove) continue;
+      if (!view.mesh) continue;
+      const TriangleMesh& m = *view.mesh;
       if (m.triangles.empty()) continue;
       RTCGeometry geom = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -83,15 +77,12 @@ class Tracer {
       rtcCommitGeometry(geom);
       unsigned id = rtcAttachGeometry(scene_.get(), geom);
       rtcReleaseGeometry(geom);
-      if (id >= part_of_.size()) part_of_.resize(id + 1, -1);
-      part_of_[id] = static_cast<int>(i);
-      materials_.push_back(MaterialOf(part));
-      material_of_.resize(std::max(material_of_.size(), size_t{id} + 1));
-      material_of_[id] = materials_.back();
+      if (id >= mesh_of_.size()) mesh_of_.resize(id + 1, -1);
+      mesh_of_[id] = static_cast<int>(i);
     }
     rtcCommitScene(scene_.get());
     light_ = Normalized(options.light_direction);
-    cut_z_ = top >= 0 ? building.FloorZ(top) + options.cut_height : std::numeric_limits<double>::infinity();
+    cut_z_ = top >= 0 ? scene.floor_z[top] + options.cut_height : std::numeric_limits<double>::infinity();
   }
 
   bool ok() const { return device_ && scene_; }
@@ -107,37 +98,37 @@ class Tracer {
         Add(color, inside >= 0 ? options_.section_color : options_.background, transmit);
         break;
       }
-      const int part_index = part_of_[h.geom];
-      const MeshPart& part = building_.parts[part_index];
+      const int mesh_index = mesh_of_[h.geom];
+      const ViewMesh& view = scene_meshes_[mesh_index];
       Vec3 p = origin + dir * h.t;
       tnear = h.t + 1e-4f;
-      Vec3 n = Normal(part, h.prim);
+      Vec3 n = Normal(*view.mesh, h.prim);
       bool back = Dot(n, dir) > 0.0;
+      const bool glass = view.alpha < 1.0;
       // Entered a solid above the cut and now below it: the cut face is what shows. (The solid's own
-      // exit may coincide with another part's face, e.g. a wall's bottom on the slab's top.)
+      // exit may coincide with another mesh's face, e.g. a wall's bottom on the slab's top.)
       if (inside >= 0 && p.z <= cut_z_) {
         Add(color, options_.section_color, transmit);
         break;
       }
-      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) {
-        if (!back && part.kind != PartKind::kWindowGlass) inside = part_index;
-        else if (back && inside == part_index) inside = -1;
+      if (view.cut == CutAway::kCut && p.z > cut_z_ && view.level == options_.top_level) {
+        if (!back && !glass) inside = mesh_index;
+        else if (back && inside == mesh_index) inside = -1;
         continue;
       }
-      const PartMaterial& mat = material_of_[h.geom];
-      if (part.kind == PartKind::kWindowGlass) {
+      if (glass) {
         if (back) continue;
-        Add(color, Mix(mat.color, Shade(p, n)), transmit * mat.alpha);
-        transmit *= 1.0 - mat.alpha;
+        Add(color, Mix(view.color, Shade(p, n)), transmit * view.alpha);
+        transmit *= 1.0 - view.alpha;
         continue;
       }
       if (back) {  // inside a solid: we came in through a cut
         Add(color, options_.section_color, transmit);
         break;
       }
-      // A room floor's colour belongs on its top; the slab's edges (on the facade, round stair holes)
-      // are concrete.
-      Rgb base = part.kind == PartKind::kFloor && std::abs(n.z) < 0.5 ? kSlabEdge : mat.color;
+      // A floor's colour belongs on its top; the slab's edges (on the facade, round stair holes) may have
+      // their own.
+      Rgb base = view.side_color && std::abs(n.z) < 0.5 ? *view.side_color : view.color;
       Add(color, Mix(base, Shade(p, n)), transmit);
       break;
     }
@@ -152,9 +143,9 @@ class Tracer {
   }
   static Rgb Mix(Rgb c, double light) { return {c.r * light, c.g * light, c.b * light}; }
 
-  Vec3 Normal(const MeshPart& part, unsigned prim) const {
-    const auto& t = part.mesh.triangles[prim];
-    const auto& v = part.mesh.vertices;
+  static Vec3 Normal(const TriangleMesh& mesh, unsigned prim) {
+    const auto& t = mesh.triangles[prim];
+    const auto& v = mesh.vertices;
     return Normalized(Cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
   }
 
@@ -169,27 +160,38 @@ class Tracer {
     for (int k = 0; k < 24; ++k) {
       Hit h = Cast(scene_.get(), origin, dir, tnear, 1e4f);
       if (!h.hit) return false;
-      const MeshPart& part = building_.parts[part_of_[h.geom]];
+      const ViewMesh& view = scene_meshes_[mesh_of_[h.geom]];
       Vec3 p = origin + dir * h.t;
       tnear = h.t + 1e-4f;
-      if (part.kind == PartKind::kWindowGlass) continue;
-      if (Cuttable(part.kind) && p.z > cut_z_ && part.level == options_.top_level) continue;
+      if (view.alpha < 1.0) continue;
+      if (view.cut == CutAway::kCut && p.z > cut_z_ && view.level == options_.top_level) continue;
       return true;
     }
     return false;
   }
 
-  const BuildingMesh& building_;
+  const std::vector<ViewMesh>& scene_meshes_;
   const RenderOptions& options_;
   std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
   std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
-  std::vector<int> part_of_;
-  std::vector<PartMaterial> materials_;
-  std::vector<PartMaterial> material_of_;
+  std::vector<int> mesh_of_;  // Embree geometry id -> index into scene_meshes_
   Vec3 light_;
   double cut_z_ = 0.0;
 };
 
+// The camera's frame: unit forward, right and up, and the half height of the picture (m for an
+// orthographic camera, the tangent of half the field of view for a perspective one).
+struct CameraFrame {
+  Vec3 forward, right, up;
+  double half_h = 0.0, aspect = 1.0;
+  explicit CameraFrame(const Camera& camera) {
+    forward = Normalized(camera.target - camera.position);
+    right = Normalized(Cross(forward, camera.up));
+    up = Cross(right, forward);
+    aspect = static_cast<double>(camera.width) / camera.height;
+    half_h = camera.orthographic ? camera.ortho_height / 2.0 : std::tan(camera.fov_deg * std::numbers::pi / 360.0);
+  }
+};
 std::uint8_t Byte(double c) { return static_cast<std::uint8_t>(std::clamp(std::lround(c * 255.0), 0L, 255L)); }
 
 }  // namespace
@@ -209,16 +211,24 @@ Rgb Image::At(int x, int y) const {
   return {rgb[i] / 255.0, rgb[i + 1] / 255.0, rgb[i + 2] / 255.0};
 }
 
-Result<Image> RenderView(const BuildingMesh& building, const Camera& camera, const RenderOptions& options) {
+Box3 ViewScene::Bounds() const {
+  Box3 box;
+  for (const ViewMesh& m : meshes)
+    if (m.mesh) box.Add(m.mesh->Bounds());
+  return box;
+}
+
+Result<Image> RenderView(const ViewScene& scene, const Camera& camera, const RenderOptions& options) {
   if (std::string problem = camera.Check(); !problem.empty()) return Error{"camera: " + problem};
   if (options.samples < 1 || options.samples > 4) return Error{"render: samples must be in [1, 4]"};
-  Tracer tracer(building, options);
+  if (options.top_level >= static_cast<int>(scene.floor_z.size()))
+    return Error{"render: cut-away of level " + std::to_string(options.top_level) + ", but the scene has floor heights for " +
+                 std::to_string(scene.floor_z.size()) + " level(s)"};
+  Tracer tracer(scene, options);
   if (!tracer.ok()) return Error{"render: Embree device could not be created"};
-  Vec3 forward = Normalized(camera.target - camera.position);
-  Vec3 right = Normalized(Cross(forward, camera.up));
-  Vec3 up = Cross(right, forward);
-  double aspect = static_cast<double>(camera.width) / camera.height;
-  double half_h = camera.orthographic ? camera.ortho_height / 2.0 : std::tan(camera.fov_deg * std::numbers::pi / 360.0);
+  const CameraFrame frame(camera);
+  const Vec3 forward = frame.forward, right = frame.right, up = frame.up;
+  const double aspect = frame.aspect, half_h = frame.half_h;
   Image image{camera.width, camera.height, std::vector<std::uint8_t>(size_t{3} * camera.width * camera.height)};
   const int s = options.samples;
   std::atomic<int> next_row{0};
@@ -251,13 +261,11 @@ Result<Image> RenderView(const BuildingMesh& building, const Camera& camera, con
   return image;
 }
 
-Camera FramingCamera(const BuildingMesh& building, double azimuth_deg, double elevation_deg, int width, int height) {
-  Box3 box = building.Bounds();
+Camera FramingCamera(const Box3& box, double azimuth_deg, double elevation_deg, int width, int height) {
   Vec3 centre = (box.min + box.max) * 0.5;
   double az = azimuth_deg * std::numbers::pi / 180.0, el = elevation_deg * std::numbers::pi / 180.0;
   // From -y (south) at azimuth 0, turning counter-clockwise.
-  Vec3 towards_camera{std::sin(az) * std::cos(el) * -1.0, -std::cos(az) * std::cos(el), std::sin(el)};
-  towards_camera = {-std::sin(-az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el)};
+  Vec3 towards_camera{-std::sin(-az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el)};
   double radius = Norm(box.max - box.min);
   Camera cam;
   cam.orthographic = true;
@@ -265,7 +273,8 @@ Camera FramingCamera(const BuildingMesh& building, double azimuth_deg, double el
   cam.height = height;
   cam.target = centre;
   cam.position = centre + towards_camera * (2.0 * radius + 10.0);
-  cam.up = {0, 0, 1};
+  // Looking straight down, "up" in the picture is the way the camera faces (north at azimuth 0).
+  cam.up = std::abs(std::cos(el)) < 1e-6 ? Vec3{-std::sin(az), std::cos(az), 0} : Vec3{0, 0, 1};
   Vec3 forward = Normalized(cam.target - cam.position);
   Vec3 right = Normalized(Cross(forward, cam.up));
   Vec3 up = Cross(right, forward);
@@ -280,24 +289,33 @@ Camera FramingCamera(const BuildingMesh& building, double azimuth_deg, double el
   return cam;
 }
 
-Result<Image> RenderPreview(const BuildingMesh& building, const PreviewOptions& options) {
+std::vector<Camera> RoomCameras(const Box3& box, int size_px, double elevation_deg) {
+  std::vector<Camera> cameras{FramingCamera(box, 0.0, 90.0, size_px, size_px)};
+  for (double azimuth : {45.0, 135.0, 225.0, 315.0})
+    cameras.push_back(FramingCamera(box, azimuth, elevation_deg, size_px, size_px));
+  return cameras;
+}
+
+Result<Image> RenderPreview(const ViewScene& scene, const PreviewOptions& options) {
   if (options.panel_width < 16 || options.panel_height < 16) return Error{"preview: panels must be at least 16 px"};
-  Camera cam = FramingCamera(building, options.azimuth_deg, options.elevation_deg, options.panel_width, options.panel_height);
+  Camera cam = FramingCamera(scene.Bounds(), options.azimuth_deg, options.elevation_deg, options.panel_width,
+                             options.panel_height);
   std::vector<Image> panels;
   RenderOptions ro;
   ro.samples = options.samples;
   if (options.exterior_panel) {
-    auto full = RenderView(building, cam, ro);
+    auto full = RenderView(scene, cam, ro);
     if (!full) return Error{full.error()};
     panels.push_back(std::move(*full));
   }
-  for (int level = 0; level < building.levels; ++level) {
+  for (int level = 0; level < static_cast<int>(scene.floor_z.size()); ++level) {
     ro.top_level = level;
     ro.cut_height = options.cut_height;
-    auto img = RenderView(building, cam, ro);
+    auto img = RenderView(scene, cam, ro);
     if (!img) return Error{img.error()};
     panels.push_back(std::move(*img));
   }
+  if (panels.empty()) return Error{"preview: nothing to draw (no exterior panel and no levels)"};
   int n = static_cast<int>(panels.size());
   Image out{n * options.panel_width + (n - 1) * options.gap, options.panel_height, {}};
   out.rgb.assign(size_t{3} * out.width * out.height, 255);
@@ -306,6 +324,72 @@ Result<Image> RenderPreview(const BuildingMesh& building, const PreviewOptions& 
       std::copy_n(panels[k].rgb.begin() + size_t{3} * y * options.panel_width, 3 * options.panel_width,
                   out.rgb.begin() + (size_t{3} * y * out.width + size_t{3} * k * (options.panel_width + options.gap)));
   return out;
+}
+
+std::optional<Point> ProjectToPixel(const Camera& camera, Vec3 p) {
+  const CameraFrame f(camera);
+  const Vec3 d = p - camera.position;
+  double u = Dot(d, f.right), v = Dot(d, f.up);
+  if (!camera.orthographic) {
+    const double depth = Dot(d, f.forward);
+    if (depth <= 1e-9) return std::nullopt;
+    u /= depth, v /= depth;
+  }
+  // RenderView's pixel mapping turned round: pixel x's centre is at u = (2 (x + 0.5) / width - 1) aspect half_h.
+  return Point{(u / (f.aspect * f.half_h) + 1.0) * camera.width / 2.0, (1.0 - v / f.half_h) * camera.height / 2.0};
+}
+
+Status DrawLabels(Image& image, const Camera& camera, const std::vector<ViewLabel>& labels, const LabelStyle& style) {
+  if (image.width < 1 || image.height < 1 || image.rgb.size() != size_t{3} * image.width * image.height)
+    return Error{"labels: empty or inconsistent image"};
+  if (!(style.font_px >= 6.0 && style.font_px <= 48.0)) return Error{"labels: font_px must be in [6, 48]"};
+  if (labels.empty()) return Status{};
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, image.width, image.height);
+  if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(surface);
+    return Error{"labels: cairo could not make a " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                 " surface"};
+  }
+  // RGB24 keeps a pixel in a native-endian 32-bit word 0x00RRGGBB.
+  unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  cairo_surface_flush(surface);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* px = &image.rgb[(static_cast<size_t>(y) * image.width + x) * 3];
+      *reinterpret_cast<std::uint32_t*>(data + static_cast<size_t>(y) * stride + 4 * x) =
+          (std::uint32_t{px[0]} << 16) | (std::uint32_t{px[1]} << 8) | px[2];
+    }
+  cairo_surface_mark_dirty(surface);
+  cairo_t* cr = cairo_create(surface);
+  cairo_select_font_face(cr, style.font_family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, style.font_px);
+  for (const ViewLabel& label : labels) {
+    const std::optional<Point> at = ProjectToPixel(camera, label.at);
+    if (!at || at->x < 0 || at->y < 0 || at->x > image.width || at->y > image.height || label.text.empty()) continue;
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, label.text.c_str(), &extents);
+    const double x = at->x - extents.width / 2.0 - extents.x_bearing, y = at->y - extents.height / 2.0 - extents.y_bearing;
+    const double pad = style.padding_px;
+    cairo_rectangle(cr, x + extents.x_bearing - pad, y + extents.y_bearing - pad, extents.width + 2 * pad,
+                    extents.height + 2 * pad);
+    cairo_set_source_rgba(cr, style.background.r, style.background.g, style.background.b, style.background_alpha);
+    cairo_fill(cr);
+    cairo_move_to(cr, x, y);
+    cairo_set_source_rgb(cr, style.text.r, style.text.g, style.text.b);
+    cairo_show_text(cr, label.text.c_str());
+  }
+  cairo_destroy(cr);
+  cairo_surface_flush(surface);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint32_t word = *reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride + 4 * x);
+      std::uint8_t* px = &image.rgb[(static_cast<size_t>(y) * image.width + x) * 3];
+      px[0] = static_cast<std::uint8_t>(word >> 16), px[1] = static_cast<std::uint8_t>(word >> 8),
+      px[2] = static_cast<std::uint8_t>(word);
+    }
+  cairo_surface_destroy(surface);
+  return Status{};
 }
 
 Result<std::string> EncodePng(const Image& image) {
