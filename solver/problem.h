@@ -154,6 +154,10 @@ struct RoomProblem {
 OrientedBox StandingBox(const ProblemObject& object, const Pose& pose);
 // A flat floor object (a rug, <= 3 cm high, on the floor): part of the floor, walked on, no collisions.
 bool IsFloorCovering(const ProblemObject& object);
+// Empty when `mesh` lies within the box of `asset`'s size (origin at the bottom centre; 1 cm or 1 % of a side
+// of slack), else which side it leaves and by how much. The optimiser's boxes are the record's size: a mesh
+// reaching outside them would collide where the optimiser sees nothing, so RoomProblem::Check refuses it.
+std::string MeshOutsideAssetBox(const AssetRecord& asset, const AssetMesh& mesh);
 
 // One wall along every edge of the free floor (edge i = vertex i -> i+1), no openings: for tests, benches
 // and rooms whose context has no wall list.

@@ -91,15 +91,17 @@ long NearestCell(const LevelCells& lc, Point p, double within, Ok ok) {
   return best;
 }
 
-// Cells where a person steps onto a stair across `seg` (m from the seg's line on the `out` side, and far
-// enough from its ends for the disc to stand within the flight's width).
-std::vector<long> StepCells(const LevelCells& lc, const Segment& seg, Point out, double radius) {
+// Cells where a person steps onto a stair across `step`: within the radius and kStepOn of its line on its
+// `out` side, opposite the stretch (the cells themselves are free of the stair: the disc does not touch it).
+std::vector<long> StepCells(const LevelCells& lc, const StairStep& step, double radius) {
   std::vector<long> cells;
+  const Segment& seg = step.along;
   const double len = Length(seg);
-  if (len < 2.0 * radius) return cells;
+  if (len <= 0.0) return cells;
   const Point u = Unit(Sub(seg.b, seg.a));
-  const Point far = Add(seg.a, Scale(out, radius + kStepOn));
-  const Point far_b = Add(seg.b, Scale(out, radius + kStepOn));
+  const double reach = radius + kStepOn;
+  const Point far = Add(seg.a, Scale(step.out, reach));
+  const Point far_b = Add(seg.b, Scale(step.out, reach));
   const Point lo = {std::min({seg.a.x, seg.b.x, far.x, far_b.x}), std::min({seg.a.y, seg.b.y, far.y, far_b.y})};
   const Point hi = {std::max({seg.a.x, seg.b.x, far.x, far_b.x}), std::max({seg.a.y, seg.b.y, far.y, far_b.y})};
   const Grid& g = lc.grid;
@@ -109,8 +111,8 @@ std::vector<long> StepCells(const LevelCells& lc, const Segment& seg, Point out,
     for (int i = i0; i <= i1; ++i) {
       const long c = static_cast<long>(j) * g.nx + i;
       const Point d = Sub(g.Centre(c), seg.a);
-      const double t = Dot(d, u), s = Dot(d, out);
-      if (t >= radius && t <= len - radius && s >= 0.0 && s <= radius + kStepOn && lc.cell[c] != Cell::kBuilding) cells.push_back(c);
+      const double t = Dot(d, u), s = Dot(d, step.out);
+      if (t >= 0.0 && t <= len && s >= 0.0 && s <= reach && lc.cell[c] != Cell::kBuilding) cells.push_back(c);
     }
   }
   return cells;
@@ -296,8 +298,12 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
     const StairLink& link = input.stairs[s];
     WayGraph::Stair stair;
     stair.length = link.length;
-    for (long c : StepCells(levels[link.level].cells, link.entry, link.out, r)) stair.ends.push_back(graph.offset[link.level] + c);
-    for (long c : StepCells(levels[link.level + 1].cells, link.exit, link.out, r)) stair.ends.push_back(graph.offset[link.level + 1] + c);
+    std::set<long> ends;  // a cell near two stretches joins once
+    for (const StairStep& step : link.entries)
+      for (long c : StepCells(levels[link.level].cells, step, r)) ends.insert(graph.offset[link.level] + c);
+    for (const StairStep& step : link.exits)
+      for (long c : StepCells(levels[link.level + 1].cells, step, r)) ends.insert(graph.offset[link.level + 1] + c);
+    stair.ends.assign(ends.begin(), ends.end());
     for (long e : stair.ends) graph.stairs_at[e].push_back(static_cast<int>(s));
     graph.stairs.push_back(std::move(stair));
   }
@@ -337,6 +343,21 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
     const LevelCells& lc = levels[t.level].cells;
     target_cells[k] = TargetCells(lc, t, r);
     goals[k] = GoalCell(lc, t, target_cells[k], ways.dist, graph.offset[t.level], r);
+    if (goals[k] < 0 && t.kind == TargetKind::kRoom) {
+      // A staircase hall its flights fill: reached when its stairs are, standing where they are stepped on.
+      for (size_t si = 0; si < input.stairs.size(); ++si) {
+        const StairLink& link = input.stairs[si];
+        const bool here = (link.room == t.name && link.level == t.level) || (link.upper_room == t.name && link.level + 1 == t.level);
+        if (!here || !std::isfinite(ways.dist[graph.StairNode(static_cast<int>(si))])) continue;
+        for (long node : graph.stairs[si].ends) {
+          int l = 0;
+          long c = 0;
+          if (!graph.Locate(node, &l, &c) || l != t.level || !std::isfinite(ways.dist[node])) continue;
+          if (goals[k] < 0 || ways.dist[node] < ways.dist[graph.offset[l] + goals[k]]) goals[k] = c;
+        }
+        if (goals[k] >= 0) res.note = "reached on its stairs";
+      }
+    }
     if (goals[k] >= 0) {
       res.reachable = true;
       res.goal = lc.grid.Centre(goals[k]);

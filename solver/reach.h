@@ -83,16 +83,26 @@ struct ReachObstacle {
   double z0 = 0.0, z1 = 0.0;
 };
 
-// A staircase from `level` to level + 1. The person steps on across `entry` (the first flight's foot, on
-// `level`) and off across `exit` (the second flight's top, on level + 1); `out` is the unit direction away
-// from the flights at both (the open end of the stair). `walk` is the way along the flights (world
-// points, from the middle of `entry` to the middle of `exit`), `length` its 3D length (m).
+// A stretch of a staircase's outline where a person steps on or off it, and the unit direction out of
+// the staircase there.
+struct StairStep {
+  Segment along;
+  Point out;
+};
+
+// A staircase from `level` to level + 1, read from its mesh. The person steps on where the treads just
+// inside its outline are within two risers of the floor (across the first flight's foot, or sideways onto
+// its first treads from a door beside them), and off where they are within two risers of the floor above
+// (the second flight's top, or its last treads' side). `walk` is the way along the flights (world points,
+// from the middle of the first flight's foot to the middle of the second flight's top), `length` its 3D
+// length (m). Standing on the stairs counts as being in `room` (level) and in `upper_room` (level + 1,
+// the room its hole opens in): a staircase hall the flights fill is reached when its stairs are.
 struct StairLink {
   std::string room;
+  std::string upper_room;  // "" when no room above holds the hole
   int level = 0;
-  Segment entry;
-  Segment exit;
-  Point out;
+  std::vector<StairStep> entries;  // on `level`
+  std::vector<StairStep> exits;    // on level + 1
   std::vector<Vec3> walk;
   double length = 0.0;
 };

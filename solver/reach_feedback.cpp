@@ -98,14 +98,24 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
   for (const ReachTarget& t : building.targets) {
     if (t.kind == TargetKind::kRoom) rooms[t.name] = &t;
   }
-  std::map<std::string, std::string> room_of;  // object id -> room, as last checked
+  // The objects as last checked: room, footprint (world), its area, whether it stands on the floor.
+  struct Seen {
+    std::string room;
+    Ring footprint;
+    double area = 0.0;
+    bool on_floor = false;
+  };
+  std::map<std::string, Seen> seen;
   auto check = [&]() -> Result<ReachReport> {
     ReachInput input = building;
     std::vector<ReachObject> objects;
+    seen.clear();
     for (const auto& [name, solver] : solvers) {
       const auto it = rooms.find(name);
-      for (ReachObject& o : ReachObjectsOf(solver->Solution(), name, it != rooms.end() ? it->second->level : 0)) {
-        room_of[o.id] = name;
+      const int level = it != rooms.end() ? it->second->level : 0;
+      const double floor_z = level < static_cast<int>(building.levels.size()) ? building.levels[level].floor_z : 0.0;
+      for (ReachObject& o : ReachObjectsOf(solver->Solution(), name, level)) {
+        seen[o.id] = {name, o.box.Footprint(), 4.0 * o.box.hx * o.box.hy, o.box.z0 <= floor_z + 0.02};
         objects.push_back(std::move(o));
       }
     }
@@ -135,11 +145,37 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     FeedbackRound fr;
     fr.unreachable = unreachable;
     std::map<std::string, std::vector<KeepOut>> lay;
+    std::set<std::string> rooms_unreached;
     for (const TargetResult& t : report.targets) {
-      if (t.reachable || t.blockers.empty()) continue;
+      if (t.kind == TargetKind::kRoom && !t.reachable) rooms_unreached.insert(t.name);
+    }
+    for (const TargetResult& t : report.targets) {
+      if (t.reachable || t.structural) continue;
+      if (t.kind == TargetKind::kZone) {
+        // A zone in a room that cannot be entered waits for the room's walkway.
+        if (rooms_unreached.count(t.room)) continue;
+        const auto owner = seen.find(t.name);
+        if (owner == seen.end()) continue;
+        bool clearable = !t.blockers.empty() && t.door_leaves.empty();
+        for (const std::string& id : t.blockers) {
+          if (auto b = seen.find(id); b != seen.end() && b->second.area > owner->second.area + 1e-9) clearable = false;
+        }
+        if (!clearable) {
+          const Seen& o = owner->second;
+          const auto r = rooms.find(o.room);
+          if (!o.on_floor || r == rooms.end() || !solvers.count(o.room)) continue;
+          const double floor_z = building.levels[r->second->level].floor_z;
+          fr.walkways.push_back({o.room, t.name, 1, "spot"});
+          lay[o.room].push_back({o.footprint, floor_z, floor_z + options.reach.head_height, KeepOutKind::kWalkway,
+                                 "the unreachable place of " + t.name});
+          continue;
+        }
+      }
+      // A way that also passes an open door leaf stays closed whatever the furniture does.
+      if (t.blockers.empty() || !t.door_leaves.empty()) continue;
       std::set<std::string> holders;
       for (const std::string& id : t.blockers) {
-        if (auto it = room_of.find(id); it != room_of.end()) holders.insert(it->second);
+        if (auto it = seen.find(id); it != seen.end()) holders.insert(it->second.room);
       }
       for (const std::string& room : holders) {
         const auto r = rooms.find(room);
@@ -148,14 +184,14 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
         std::vector<KeepOut> pieces = WalkwayPieces(t.blocked_way, level, building.levels[level].floor_z, options.reach.head_height,
                                                     half, r->second->areas.front().polygon, t.name);
         if (pieces.empty()) continue;
-        fr.walkways.push_back({room, t.name, static_cast<int>(pieces.size())});
+        fr.walkways.push_back({room, t.name, static_cast<int>(pieces.size()), "walkway"});
         auto& list = lay[room];
         list.insert(list.end(), pieces.begin(), pieces.end());
       }
     }
     if (lay.empty()) {
       summary.reason = std::to_string(unreachable.size()) +
-                       " target(s) unreachable, none blocked by objects a room's solver can move (walls, stairs, holes or door leaves)";
+                       " target(s) unreachable, none that moving furniture can help (walls, stairs, holes or door leaves close them)";
       summary.rounds.push_back(std::move(fr));
       break;
     }
@@ -203,7 +239,8 @@ nlohmann::ordered_json FeedbackSummary::ToJson() const {
     nlohmann::ordered_json jr;
     jr["unreachable"] = r.unreachable;
     jr["walkways"] = nlohmann::ordered_json::array();
-    for (const Walkway& w : r.walkways) jr["walkways"].push_back({{"room", w.room}, {"target", w.target}, {"pieces", w.pieces}});
+    for (const Walkway& w : r.walkways)
+      jr["walkways"].push_back({{"room", w.room}, {"target", w.target}, {"kind", w.kind}, {"pieces", w.pieces}});
     jr["actions"] = nlohmann::ordered_json::array();
     for (const RoomAction& a : r.actions) {
       nlohmann::ordered_json ja = ActionResultToJson(a.result);

@@ -1,12 +1,17 @@
 #pragma once
 // Reachability fed back to the pose solver (issue 13): what a person cannot reach becomes an energy term
 // and actions in the rooms' solver loops. Round by round: check the building (solver/reach.h); for every
-// unreachable room or zone whose cheapest way in crosses objects, keep that way free in the rooms holding
+// unreachable room or zone whose cheapest way in crosses objects (and no open door leaf, which no furniture
+// move opens), keep that way free in the rooms holding
 // them (a walkway keep-out, the person's width plus a margin along the way, floor to head height: every
 // object standing in it adds its overlap to E_col, so the room is no longer converged) and let each such
 // room's rule agent act on it through the paper's actions (update_pose to a free slot that keeps out of the
 // walkway, update_scale, remove_entity), re-solve and re-check. The summary records every round: what
 // was unreachable, which walkways were laid, and every action taken.
+// Zones are cheaper to give up than what stands around them: a zone whose way in crosses an object with a
+// bigger footprint than the zone's owner (a chair wedged behind its table), or an open door leaf, gets no
+// walkway; the owner's own place becomes a keep-out instead (a "spot"), so the owner is moved to a free
+// slot or, failing that, removed. Zones of a room that cannot be entered wait until it can.
 #include <map>
 #include <string>
 #include <vector>
@@ -26,10 +31,14 @@ struct ReachFeedbackOptions {
   bool IsValid(std::string* message) const;
 };
 
+// A keep-out the loop laid in a room. A "walkway" keeps the way to an unreachable room or zone free
+// through the objects that block it; a "spot" is the place of a V_int object whose zone cannot be reached
+// without clearing something bigger than it (or past a door leaf), so that the object itself moves.
 struct Walkway {
   std::string room;    // the room whose solver keeps it free
   std::string target;  // the room or zone it leads to
   int pieces = 0;      // keep-out rectangles laid
+  std::string kind = "walkway";  // "walkway" or "spot"
 };
 
 struct RoomAction {

@@ -2,6 +2,7 @@
 // panes, stairs and their links, holes, the entrance, a target per room) and from placed objects.
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "building/building.h"
 #include "layout/geometry.h"
@@ -82,37 +83,80 @@ double TopAt(const TriangleMesh& mesh, Point p) {
   return top;
 }
 
-// Where the flights of a built staircase are stepped on and off: the half of the footprint's open edge
-// whose surface just inside is one riser up (the first flight's foot), and the other half of that edge
-// (the second flight's top, arriving on the level above). Read from the stair's own mesh, so it holds
-// whichever side the builder chose.
+// Where a built staircase is stepped on and off, read from its own mesh, so it holds whichever side the
+// builder chose: along the footprint's outline, 5 cm apart, the top of the stair just inside (10 cm in).
+// The lowest top found is the first tread (one riser up): stretches whose tops are within two risers of
+// the floor are entries, stretches within two risers of the floor above are exits. The walk runs from the
+// middle of the first flight's foot (the open edge half holding the lowest top) inward to the landing,
+// across it, and back out along the other half to the second flight's top.
 std::optional<StairLink> LinkOf(const BuiltStair& stair, const TriangleMesh& mesh, double floor_z, double rise) {
   const Ring f = CleanRing(stair.footprint, 1e-9);
   if (f.size() < 3 || mesh.triangles.empty()) return std::nullopt;
-  double best = 1e300;
-  int edge = -1, half = -1;
+  constexpr double kInside = 0.1, kSpacing = 0.05;
+  struct Sample {
+    int edge;
+    double t;  // m along the edge
+    double top;
+  };
+  std::vector<Sample> samples;
+  double lowest = 1e300;
   for (size_t i = 0; i < f.size(); ++i) {
     const Point a = f[i], b = f[(i + 1) % f.size()];
-    const Point in = Left(Unit(Sub(b, a)));  // into a CCW ring
-    for (int h = 0; h < 2; ++h) {
-      const Point mid = Add(Lerp(a, b, 0.25 + 0.5 * h), Scale(in, 0.1));
-      const double top = TopAt(mesh, mid);
-      if (top > -1e299 && top < best) best = top, edge = static_cast<int>(i), half = h;
+    const double len = Dist(a, b);
+    const Point u = Unit(Sub(b, a)), in = Left(u);  // into a CCW ring
+    const int n = std::max(1, static_cast<int>(std::floor(len / kSpacing)));
+    for (int k = 0; k < n; ++k) {
+      const double t = (k + 0.5) * len / n;
+      const double top = TopAt(mesh, Add(Add(a, Scale(u, t)), Scale(in, kInside)));
+      samples.push_back({static_cast<int>(i), t, top});
+      if (top > -1e299) lowest = std::min(lowest, top);
     }
   }
-  if (edge < 0 || best > floor_z + 0.5 * rise / 2.0) return std::nullopt;
-  const Point a = f[edge], b = f[(edge + 1) % f.size()];
-  const Point in = Left(Unit(Sub(b, a)));
-  const Point m = Lerp(a, b, 0.5);
+  // The first flight's foot: the edge half with the most samples on the first tread (a flight's side
+  // touches it for one tread only).
+  std::map<std::pair<int, int>, int> on_first;
+  for (const Sample& q : samples) {
+    const int i = q.edge;
+    if (q.top > -1e299 && q.top <= lowest + 0.01) ++on_first[{i, q.t < 0.5 * Dist(f[i], f[(i + 1) % f.size()]) ? 0 : 1}];
+  }
+  int edge = -1, half = -1, most = 0;
+  for (const auto& [where, count] : on_first) {
+    if (count > most) edge = where.first, half = where.second, most = count;
+  }
+  const double riser = lowest - floor_z;
+  if (edge < 0 || riser <= 0.0 || riser > 0.5 * rise) return std::nullopt;
   StairLink link;
   link.room = stair.room;
   link.level = stair.level;
-  link.entry = half == 0 ? Segment{a, m} : Segment{m, b};
-  link.exit = half == 0 ? Segment{m, b} : Segment{a, m};
-  if (TopAt(mesh, Add(Lerp(link.exit.a, link.exit.b, 0.5), Scale(in, 0.1))) < floor_z + rise - 0.5) return std::nullopt;
-  link.out = Scale(in, -1.0);
-  // The first flight runs inward until the landing, half a storey up.
-  const Point e = Lerp(link.entry.a, link.entry.b, 0.5), x = Lerp(link.exit.a, link.exit.b, 0.5);
+  // Runs of consecutive samples along one edge that pass `test`, as stretches of that edge.
+  auto runs = [&](auto test) {
+    std::vector<StairStep> out;
+    for (size_t k = 0; k < samples.size();) {
+      if (samples[k].top < -1e299 || !test(samples[k].top)) {
+        ++k;
+        continue;
+      }
+      size_t e = k;
+      while (e + 1 < samples.size() && samples[e + 1].edge == samples[k].edge && samples[e + 1].top > -1e299 && test(samples[e + 1].top)) ++e;
+      const Point a = f[samples[k].edge], b = f[(samples[k].edge + 1) % f.size()];
+      const Point u = Unit(Sub(b, a));
+      const double half_step = 0.5 * Dist(a, b) / std::max(1, static_cast<int>(std::floor(Dist(a, b) / kSpacing)));
+      const double t0 = std::max(0.0, samples[k].t - half_step), t1 = std::min(Dist(a, b), samples[e].t + half_step);
+      out.push_back({{Add(a, Scale(u, t0)), Add(a, Scale(u, t1))}, Scale(Left(u), -1.0)});
+      k = e + 1;
+    }
+    return out;
+  };
+  const double step = 2.0 * riser + 0.5 * riser;  // two risers, with room for rounding
+  link.entries = runs([&](double top) { return top <= floor_z + step; });
+  link.exits = runs([&](double top) { return top >= floor_z + rise - step; });
+  if (link.entries.empty() || link.exits.empty()) return std::nullopt;
+  // The walk: the first flight runs inward from its foot until the landing, half a storey up.
+  const Point a = f[edge], b = f[(edge + 1) % f.size()];
+  const Point in = Left(Unit(Sub(b, a)));
+  const Point m = Lerp(a, b, 0.5);
+  const Point e = half == 0 ? Lerp(a, m, 0.5) : Lerp(m, b, 0.5), x = half == 0 ? Lerp(m, b, 0.5) : Lerp(a, m, 0.5);
+  if (TopAt(mesh, Add(x, Scale(in, kInside))) < floor_z + rise - step) return std::nullopt;
   double run = 0.0;
   while (run < 10.0 && TopAt(mesh, Add(e, Scale(in, run))) < floor_z + 0.5 * rise - 0.01) run += 0.01;
   const double z_landing = floor_z + 0.5 * rise;
@@ -222,6 +266,10 @@ Result<ReachInput> BuildingReachInput(const Layout& layout, const BuildingMesh& 
     if (st.level + 1 >= levels) continue;
     if (auto link = mesh ? LinkOf(st, mesh->mesh, building.FloorZ(st.level), building.FloorZ(st.level + 1) - building.FloorZ(st.level))
                          : std::nullopt) {
+      const Point middle = Centroid(st.footprint);
+      for (int i : layout.RoomsOnLevel(st.level + 1)) {
+        if (PointInRing(middle, layout.rooms[i].polygon, 0)) link->upper_room = layout.rooms[i].name();
+      }
       input.stairs.push_back(std::move(*link));
     } else {
       return Error{"building: the staircase in " + st.room + " has no flight foot to step on (its mesh is missing or unusual)"};

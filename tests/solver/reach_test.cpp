@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "building/building.h"
+#include "layout/geometry.h"
 #include "layout/layout_io.h"
 #include "mesh/geometry2d.h"
 #include "reach_checks.h"
@@ -170,6 +171,60 @@ TEST_CASE("rooms upstairs are reached from the entrance only through the stairca
     CHECK(t.reachable == (t.level == 0));
     if (t.level == 1) CHECK(t.structural);
   }
+}
+
+TEST_CASE("a staircase is stepped on at its first treads and off at its last, read from its mesh", "[reach]") {
+  const Built built = BuildFixture("house_two_floors.json");
+  REQUIRE(built.input.stairs.size() == 1);
+  const StairLink& link = built.input.stairs.front();
+  REQUIRE(built.building.stairs.size() == 1);
+  const BuiltStair& stair = built.building.stairs.front();
+  CHECK(link.room == stair.room);
+  CHECK_FALSE(link.upper_room.empty());
+  CHECK(link.upper_room != link.room);  // the room above, by its own name
+  const TriangleMesh* mesh = nullptr;
+  for (const MeshPart& part : built.building.parts)
+    if (part.kind == PartKind::kStair) mesh = &part.mesh;
+  REQUIRE(mesh);
+  const double floor0 = built.building.FloorZ(0), floor1 = built.building.FloorZ(1);
+  const double riser = (floor1 - floor0) / 16.0;
+  // Every stretch lies on the stair's outline, and the stair just inside it is within two risers of the
+  // floor it is stepped from: low treads for the entries, high treads for the exits.
+  auto top_inside = [&](const StairStep& s) {
+    const Point m = {0.5 * (s.along.a.x + s.along.b.x) - 0.1 * s.out.x, 0.5 * (s.along.a.y + s.along.b.y) - 0.1 * s.out.y};
+    double top = -1e300;
+    for (const auto& t : mesh->triangles) {
+      const Vec3 &a = mesh->vertices[t[0]], &b = mesh->vertices[t[1]], &c = mesh->vertices[t[2]];
+      const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+      if (std::abs(det) < 1e-12) continue;
+      const double u = ((m.x - a.x) * (c.y - a.y) - (c.x - a.x) * (m.y - a.y)) / det;
+      const double v = ((b.x - a.x) * (m.y - a.y) - (m.x - a.x) * (b.y - a.y)) / det;
+      if (u >= -1e-9 && v >= -1e-9 && u + v <= 1 + 1e-9) top = std::max(top, a.z + u * (b.z - a.z) + v * (c.z - a.z));
+    }
+    return top;
+  };
+  double foot = 0.0;
+  REQUIRE_FALSE(link.entries.empty());
+  for (const StairStep& s : link.entries) {
+    CHECK(DistanceToBoundary(s.along.a, stair.footprint) < 1e-6);
+    CHECK(DistanceToBoundary(s.along.b, stair.footprint) < 1e-6);
+    const double top = top_inside(s);
+    CHECK(top > floor0);
+    CHECK(top <= floor0 + 2.0 * riser + 1e-6);
+    foot = std::max(foot, Length(s.along));
+  }
+  REQUIRE_FALSE(link.exits.empty());
+  for (const StairStep& s : link.exits) {
+    const double top = top_inside(s);
+    CHECK(top >= floor1 - 2.0 * riser - 1e-6);
+    CHECK(top < floor1);
+  }
+  // The first flight's foot is a whole stretch: half the staircase's width (two flights side by side).
+  CHECK(foot > 0.6);
+  // The walk climbs one storey from the foot to the top.
+  CHECK(link.walk.front().z == Approx(floor0));
+  CHECK(link.walk.back().z == Approx(floor1));
+  CHECK(link.length > floor1 - floor0);
 }
 
 TEST_CASE("reachability is deterministic: the same input gives the same report", "[reach]") {
