@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "building/export.h"
+#include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "scene/file_digest.h"
@@ -564,6 +565,75 @@ std::string FurnishCredits(const FurnishedVilla& villa) {
   return out;
 }
 
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
+  PlanOverlay overlay;
+  std::map<std::string, Category> category_of;
+  for (const Room& r : villa.layout.rooms) category_of[r.name()] = r.category;
+  std::vector<const scene::SceneObject*> objects;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.pose && o.relation != scene::Relation::kHanging) objects.push_back(&o);
+  // Lowest first; at one height the larger footprint first, so a rug or a table never hides what is on it.
+  std::stable_sort(objects.begin(), objects.end(), [](const scene::SceneObject* a, const scene::SceneObject* b) {
+    if (a->pose->z != b->pose->z) return a->pose->z < b->pose->z;
+    return a->size.x * a->size.y > b->size.x * b->size.y;
+  });
+  auto mix = [](Rgb a, Rgb b, double t) { return Rgb{a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t}; };
+  for (const scene::SceneObject* o : objects) {
+    auto it = category_of.find(o->room);
+    const Category category = it == category_of.end() ? Category::kRoom : it->second;
+    const double c = std::cos(o->pose->yaw), s = std::sin(o->pose->yaw);
+    const double hx = o->size.x / 2.0, hy = o->size.y / 2.0;
+    PlanOverlay::Shape shape;
+    shape.level = o->level;
+    for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}})
+      shape.outline.push_back({o->pose->x + c * x - s * y, o->pose->y + s * x + c * y});
+    shape.fill = mix(CategoryColor(category), CategoryInk(category), 0.4);
+    shape.fill_alpha = 0.9;
+    shape.ink = mix(CategoryInk(category), Rgb{0.1, 0.1, 0.1}, 0.3);
+    overlay.shapes.push_back(std::move(shape));
+  }
+  if (villa.reach)
+    for (const ReachFigures::Path& p : villa.reach->paths)
+      overlay.paths.push_back({p.level, p.points, Rgb{0.07, 0.36, 0.66}, 1.6});
+  return overlay;
+}
+
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa) {
+  PlanRenderOptions options;
+  options.source_name = villa.scene.layout.file + " (furnished)";
+  return RenderPlanPng(villa.layout, FurnishedPlanOverlay(villa), options);
+}
+
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options) {
+  ViewScene view = ViewSceneOf(villa.building);
+  // The objects' meshes moved into the world frame; the scene borrows them until the picture is made.
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!o.pose) continue;
+    auto asset = villa.library->Mesh(o.asset);
+    if (!asset.ok()) return Error{o.id + ": " + asset.error()};
+    const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw);
+    const bool hung = o.relation == scene::Relation::kOnWall || o.relation == scene::Relation::kHanging;
+    for (const AssetMeshPart& part : (*asset)->parts) {
+      if (part.mesh.triangles.empty()) continue;
+      auto world = std::make_unique<TriangleMesh>(part.mesh);
+      for (Vec3& v : world->vertices) {
+        const double x = v.x * o.scale[0], y = v.y * o.scale[1];
+        v = {o.pose->x + c * x - s * y, o.pose->y + s * x + c * y, o.pose->z + v.z * o.scale[2]};
+      }
+      ViewMesh mesh;
+      mesh.mesh = world.get();
+      mesh.color = {part.material.r, part.material.g, part.material.b};
+      mesh.alpha = part.material.alpha;
+      mesh.level = o.level;
+      mesh.cut = hung ? CutAway::kCut : CutAway::kKeep;
+      view.meshes.push_back(mesh);
+      meshes.push_back(std::move(world));
+    }
+  }
+  return RenderPreview(view, options);
+}
+
 Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
                                                      const FurnishOptions& options) {
   std::error_code ec;
@@ -584,6 +654,11 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
   if (Status s = write(kSceneFile, scene::SceneToText(villa.scene)); !s) return Error{s.error()};
   if (Status s = write(kGlbFile, *glb); !s) return Error{s.error()};
   if (Status s = write(kCreditsFile, FurnishCredits(villa)); !s) return Error{s.error()};
+  if (options.pictures) {
+    auto plan = FurnishedPlanPng(villa);
+    if (!plan.ok()) return Error{(dir / kPlanPicture).string() + ": " + plan.error()};
+    if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
+  }
   if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
   return written;
 }

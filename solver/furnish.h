@@ -26,6 +26,8 @@
 #include "assets/asset_library.h"
 #include "building/building.h"
 #include "layout/layout.h"
+#include "render/plan_render.h"
+#include "render/view3d.h"
 #include "scene/acquire.h"
 #include "scene/planner.h"
 #include "scene/room_context.h"
@@ -169,5 +171,17 @@ Result<std::string> FurnishedGlb(const FurnishedVilla& villa);
 std::string FurnishCredits(const FurnishedVilla& villa);  // "" when no placed asset needs credit
 // "rooms/kitchen_0_0.png" for "kitchen_0/0".
 std::string RoomPictureName(const std::string& room);
+
+// What plan.png draws over the floor plan: every placed object's oriented box (its size x scale, turned
+// by its yaw) in a muted tone of its room's colour, on its level, lowest objects first so what stands
+// on a table shows over it (objects hung from the ceiling are left out: they would cover the room), and
+// the reach hook's walking paths as thin lines when it ran.
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa);
+// plan.png: the floor plans of every level with that overlay.
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa);
+// The furnished villa in the 3D view (render/view3d.h RenderPreview): the building as `villa build
+// --preview` draws it plus every placed object in its assets' colours; the cut-away of a level keeps
+// standing furniture whole and cuts what hangs on walls or from the ceiling like the walls.
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options = {});
 
 }  // namespace villa::solver
