@@ -126,6 +126,26 @@ std::pair<Ring, double> FloorTop(const TriangleMesh& mesh) {
   return {best, top};
 }
 
+// The highest point of `mesh` (asset frame) straight under any of `points` and no higher than `ceiling`:
+// where something standing there rests on it. None when the mesh is under none of them.
+std::optional<double> ContactHeight(const AssetMesh& mesh, const std::vector<Point>& points, double ceiling) {
+  std::optional<double> best;
+  for (const AssetMeshPart& part : mesh.parts)
+    for (const auto& t : part.mesh.triangles) {
+      const Vec3 &a = part.mesh.vertices[t[0]], &b = part.mesh.vertices[t[1]], &c = part.mesh.vertices[t[2]];
+      const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+      if (std::abs(det) < 1e-12) continue;  // vertical faces hold nothing up
+      for (const Point& p : points) {
+        const double u = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
+        const double v = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
+        if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9) continue;
+        const double z = a.z + u * (b.z - a.z) + v * (c.z - a.z);
+        if (z <= ceiling && (!best || z > *best)) best = z;
+      }
+    }
+  return best;
+}
+
 double SegmentDistance(const Point& p, const WallEdge& w) { return PointSegmentDistance(p, Segment{w.a, w.b}); }
 
 // One object read from the file.
@@ -252,7 +272,7 @@ class Measurer {
     // The discrete choices: the file's indices where the record is the one they index, else the surface
     // or cavity the object rests on, and the wall nearest the object.
     for (size_t i = 0; i < posed.size(); ++i) {
-      const ProblemObject& o = problem.objects[i];
+      ProblemObject& o = problem.objects[i];
       const FileObject& f = *objects[i];
       ObjectPlacement& pl = placements[i];
       const Point centre{pl.pose.x, pl.pose.y};
@@ -266,43 +286,57 @@ class Measurer {
       }
       const int parent = problem.Find(o.parent);
       if (parent < 0) continue;
-      const ProblemObject& po = problem.objects[parent];
+      ProblemObject& po = problem.objects[parent];
       const Pose& pp = placements[parent].pose;
       const bool exact = posed[i].resolved && posed[parent].resolved;
-      const double bottom = pl.pose.z + pl.pose.scale * o.mesh->Bounds().min.z;
-      const double c = std::cos(pp.yaw), s = std::sin(pp.yaw);
-      const Point local{(c * (centre.x - pp.x) + s * (centre.y - pp.y)) / pp.scale,
-                        (-s * (centre.x - pp.x) + c * (centre.y - pp.y)) / pp.scale};
-      if (o.relation == Relation::kOnTop) {
-        if (exact && f.surface && *f.surface < static_cast<int>(po.asset.support_surfaces.size())) {
-          pl.surface = *f.surface;
-        } else {
-          pl.surface = Nearest(po.asset.support_surfaces.size(), [&](size_t k) {
-            const SupportSurface& sf = po.asset.support_surfaces[k];
-            return std::abs(pp.z + pp.scale * sf.z - bottom) + (PointInRing(local, sf.polygon, 1e-6) ? 0.0 : 100.0);
-          });
-        }
-      } else if (o.relation == Relation::kInside) {
+      const Box3 box = o.mesh->Bounds();
+      const double bottom = pl.pose.z + pl.pose.scale * box.min.z;
+      // The child's footprint centre and corners (shrunk a little) in the parent's unscaled frame.
+      const double cy = std::cos(pl.pose.yaw), sy = std::sin(pl.pose.yaw), c = std::cos(pp.yaw), s = std::sin(pp.yaw);
+      auto in_parent = [&](double x, double y) {
+        const Point w{pl.pose.x + pl.pose.scale * (cy * x - sy * y), pl.pose.y + pl.pose.scale * (sy * x + cy * y)};
+        return Point{(c * (w.x - pp.x) + s * (w.y - pp.y)) / pp.scale, (-s * (w.x - pp.x) + c * (w.y - pp.y)) / pp.scale};
+      };
+      const Point local = in_parent((box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2);
+      std::vector<Point> footprint{local};
+      for (const auto& [fx, fy] : {std::pair{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}})
+        footprint.push_back(in_parent(box.min.x + fx * (box.max.x - box.min.x), box.min.y + fy * (box.max.y - box.min.y)));
+      const double bottom_local = (bottom - pp.z) / pp.scale;
+      if (o.relation == Relation::kInside) {
         if (exact && f.cavity && *f.cavity < static_cast<int>(po.asset.cavities.size())) {
           pl.cavity = *f.cavity;
         } else {
           pl.cavity = Nearest(po.asset.cavities.size(), [&](size_t k) {
             const Cavity& cv = po.asset.cavities[k];
             const bool over = local.x >= cv.min.x && local.x <= cv.max.x && local.y >= cv.min.y && local.y <= cv.max.y;
-            return std::abs(pp.z + pp.scale * cv.min.z - bottom) + (over ? 0.0 : 100.0);
+            return std::abs(cv.min.z - bottom_local) + (over ? 0.0 : 100.0);
           });
         }
+        if (pl.cavity < 0) {
+          // No cavity to check it against: measured as standing on what is under it, outside CSR.
+          summary_.notes.push_back(o.id + ": its parent " + o.parent + " shows no cavity: CSR not measured for it");
+          o.relation = Relation::kOnTop;
+        }
       }
-    }
-    // A child of a parent with no surface (cavity) to rest on is measured against the floor instead.
-    for (size_t i = 0; i < posed.size(); ++i) {
-      ProblemObject& o = problem.objects[i];
-      if ((o.relation == Relation::kOnTop && problem.Find(o.parent) >= 0 && placements[i].surface < 0) ||
-          (o.relation == Relation::kInside && placements[i].cavity < 0)) {
-        summary_.notes.push_back(o.id + ": its parent " + o.parent + " offers no " +
-                                 (o.relation == Relation::kInside ? "cavity" : "surface") + ": read as on the floor");
+      if (o.relation != Relation::kOnTop) continue;
+      if (exact && f.surface && *f.surface < static_cast<int>(po.asset.support_surfaces.size())) {
+        pl.surface = *f.surface;
+      } else if (exact) {
+        pl.surface = Nearest(po.asset.support_surfaces.size(), [&](size_t k) {
+          const SupportSurface& sf = po.asset.support_surfaces[k];
+          return std::abs(sf.z - bottom_local) + (PointInRing(local, sf.polygon, 1e-6) ? 0.0 : 100.0);
+        });
+      } else if (auto top = ContactHeight(*po.mesh, footprint, bottom_local + options_.check.tau / pp.scale)) {
+        // A parent known only by its mesh: the child rests on the highest part of it under its footprint
+        // (SceneEval's downward rays); that height over the parent's footprint is its support.
+        const Box3 pb = po.mesh->Bounds();
+        po.asset.support_surfaces.push_back(
+            {*top, {{pb.min.x, pb.min.y}, {pb.max.x, pb.min.y}, {pb.max.x, pb.max.y}, {pb.min.x, pb.max.y}}, pb.max.z - *top, "contact"});
+        pl.surface = static_cast<int>(po.asset.support_surfaces.size()) - 1;
+      }
+      if (pl.surface < 0) {
+        summary_.notes.push_back(o.id + ": nothing of its parent " + o.parent + " is under it: read as on the floor");
         o.parent = "floor";
-        o.relation = Relation::kOnTop;
       }
     }
     out.metrics = CheckArrangement(problem, placements, options_.check);

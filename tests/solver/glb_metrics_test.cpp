@@ -61,7 +61,8 @@ struct Box {
   std::string id;
   Vec3 at;           // plan position of the bottom centre
   double yaw = 0.0;  // rad
-  int mesh = 1;      // 1: a 1 m cube; 2: a 2 x 0.5 x 0.8 bench
+  int mesh = 1;      // 1: a 1 m cube; 2: a 2 x 0.5 x 0.8 bench; 3: a 0.2 m cube
+  std::string parent = "floor";
 };
 
 // A one-room building in villa's contract: villa / level_0 / living-room_0/0 (a 4 x 4 m floor slab whose
@@ -72,6 +73,7 @@ void WriteRoom(const fs::path& path, const std::vector<Box>& boxes) {
   doc.meshes.push_back(BoxMesh("floor", {0, 0, 0}, {4, 4, 0.175}));
   doc.meshes.push_back(BoxMesh("cube", {-0.5, -0.5, 0}, {0.5, 0.5, 1.0}));
   doc.meshes.push_back(BoxMesh("bench", {-1.0, -0.25, 0}, {1.0, 0.25, 0.8}));
+  doc.meshes.push_back(BoxMesh("small", {-0.1, -0.1, 0}, {0.1, 0.1, 0.2}));
   doc.nodes.push_back(MakeNode("villa", -1, {1}));
   doc.nodes.push_back(MakeNode("level_0", -1, {2}));
   gltf::Node room = MakeNode("living-room_0/0", 0);
@@ -83,7 +85,7 @@ void WriteRoom(const fs::path& path, const std::vector<Box>& boxes) {
     n.translation = std::array<double, 3>{t[0], t[1], t[2]};
     n.rotation = std::array<double, 4>{0.0, std::sin(b.yaw / 2), 0.0, std::cos(b.yaw / 2)};  // a turn about +Y: the yaw
     n.extras = {{"name", b.id}, {"id", b.id}, {"category", "box"}, {"asset", "hand-made"}, {"room", "living-room_0/0"},
-                {"level", 0}, {"parent", "floor"}, {"relation", "ontop"}};
+                {"level", 0}, {"parent", b.parent}, {"relation", "ontop"}};
     doc.nodes[2].children.push_back(static_cast<int>(doc.nodes.size()));
     doc.nodes.push_back(std::move(n));
   }
@@ -143,6 +145,27 @@ TEST_CASE("A turned object is read with its yaw: a bench turned 90 degrees misse
   const Box cube{"living-room_0/0/cube-0", {2.8, 2.0, 0.175}};
   CHECK(MeasureRoom(glb, {{"living-room_0/0/bench-0", {1.5, 2.0, 0.175}, 0.0, 2}, cube}).metrics.colliding == 2);
   CHECK(MeasureRoom(glb, {{"living-room_0/0/bench-0", {1.5, 2.0, 0.175}, std::numbers::pi / 2, 2}, cube}).metrics.Clean());
+}
+
+TEST_CASE("A child on a parent known only by its mesh rests on what is under it: on the top it is supported, above it floats",
+          "[solver][glb]") {
+  TempDir dir("glbm_contact");
+  const fs::path glb = dir.path / "room.glb";
+  const Box bench{"living-room_0/0/bench-0", {2.0, 2.0, 0.175}, 0.0, 2};
+  // On the bench's top (0.175 + 0.8), near its end; then 5 cm above it.
+  const solver::GlbRoomMetrics on =
+      MeasureRoom(glb, {bench, {"living-room_0/0/cup-0", {2.8, 2.0, 0.975}, 0.0, 3, "living-room_0/0/bench-0"}});
+  CHECK(on.metrics.objects == 2);
+  CHECK(on.metrics.Clean());
+  const solver::GlbRoomMetrics above =
+      MeasureRoom(glb, {bench, {"living-room_0/0/cup-0", {2.8, 2.0, 1.025}, 0.0, 3, "living-room_0/0/bench-0"}});
+  CHECK(above.metrics.floating == 1);
+  CHECK(above.metrics.per_object[1].support_gap == Approx(0.05).margin(1e-4));
+  CHECK(above.metrics.colliding == 0);
+  // Half over the end of the bench: out of its bounds.
+  const solver::GlbRoomMetrics over =
+      MeasureRoom(glb, {bench, {"living-room_0/0/cup-0", {3.0, 2.0, 0.975}, 0.0, 3, "living-room_0/0/bench-0"}});
+  CHECK(over.metrics.out_of_bounds == 1);
 }
 
 TEST_CASE("Our own furnished.glb scores as its report says, from its layout and from the .glb alone", "[solver][glb]") {
