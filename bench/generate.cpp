@@ -28,9 +28,8 @@ const char* const kRequests[] = {
     "A three-story villa. On the ground floor a living room with a TV, a kitchen, a dining room and a bathroom; on "
     "the second floor two bedrooms, a bathroom and a study with bookshelves full of books; on the top floor a "
     "children's room, a bedroom, a meeting room and a balcony with panoramic windows.",
-    "I want a three-storey L-shaped villa: a lounge, an open-plan kitchen, a dining room and an office on the ground "
-    "floor, three bedrooms and a bathroom upstairs, and a kids' room, a bathroom, a bedroom and a balcony on the top "
-    "floor.",
+    "I want a three-storey L-shaped villa. Ground floor: a lounge, an open-plan kitchen, a dining room and an office. "
+    "Second floor: three bedrooms and a bathroom. Top floor: a kids' room, a bathroom, a meeting room and a balcony.",
 };
 
 }  // namespace

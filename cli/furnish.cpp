@@ -63,6 +63,7 @@ Registration registration{75, [](CLI::App& app) {
       "  report.json    per room: objects and their assets, energy trace, actions, outcome and reason, CR,\n"
       "                 FR, OBR, CSR, NO, seconds; totals and per room type\n"
       "  CREDITS        the Creative Commons Attribution models placed, with their creators\n"
+      "  plan.png       the floor plans with every object's footprint (and walking paths when measured)\n"
       "A room that cannot be completed keeps its best state and says why (outcome budget or infeasible).\n"
       "Exit status: 0 furnished (whatever the rooms' outcomes), 1 unreadable or unbuildable layout, bad\n"
       "library or write failure, 2 usage (unknown --room, existing outputs without --force, bad values).");

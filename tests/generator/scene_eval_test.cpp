@@ -47,7 +47,7 @@ const std::string kHouse = std::string(VILLA_FIXTURE_DIR) + "/layouts/house_one_
 
 }  // namespace
 
-TEST_CASE("The paper's nine room types are our categories; balconies and unlabelled rooms are not among them", "[generator][eval]") {
+TEST_CASE("The paper's nine room types are our categories, balconies and unlabelled rooms are not among them", "[generator][eval]") {
   CHECK(PaperRoomType(Category::kLivingRoom) == "Living Room");
   CHECK(PaperRoomType(Category::kChildrenRoom) == "Childroom");
   CHECK(PaperRoomType(Category::kUtilityRoom) == "Utility Room");
@@ -110,7 +110,7 @@ TEST_CASE("Micro table: pooled per scene, averaged over a layout's scenes, then 
   CHECK(j["rows"][1]["CSR"].is_null());
 }
 
-TEST_CASE("Scene requests: prompts, prompts with a layout, layout records and layout files; errors name the line",
+TEST_CASE("Scene requests: prompts, prompts with a layout, layout records and layout files, errors name the line",
           "[generator][eval]") {
   TempDir dir("seval_read");
   const fs::path jsonl = dir.path / "requests.jsonl";
