@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "building/export.h"
+#include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "scene/file_digest.h"
@@ -235,20 +236,9 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
   f.rooms_reachable = last.rooms_reachable;
   f.zones = last.zones;
   f.zones_reachable = last.zones_reachable;
-  std::map<std::string, std::vector<Ring>> zones;  // V_int object id -> its zone's boxes, as finally placed
-  for (const auto& [room, solver] : solvers) {
-    for (ReachObject& o : ReachObjectsOf(solver->Solution(), room, by_room.at(room)->report.level)) zones[o.id] = std::move(o.zone);
-  }
+  f.acc_mean = last.Acc();
   for (const TargetResult& t : last.targets) {
-    const bool room = t.kind == TargetKind::kRoom;
-    (room ? f.rch : f.acc)[t.name] = t.reachable ? 1.0 : 0.0;
-    if (!t.reachable) {
-      if (room) {
-        if (const int i = layout.FindRoom(t.name); i >= 0) f.unreached.push_back({t.level, layout.rooms[i].polygon});
-      } else if (auto it = zones.find(t.name); it != zones.end()) {
-        for (const Ring& ring : it->second) f.unreached.push_back({t.level, ring});
-      }
-    }
+    (t.kind == TargetKind::kRoom ? f.rch : f.acc)[t.name] = t.share;
     if (t.path) {
       for (ReachFigures::Path& piece : PathPieces(*t.path)) f.paths.push_back(std::move(piece));
     }
@@ -444,7 +434,8 @@ std::string FurnishSummary::BriefReport() const {
   out += "time: " + std::string(time);
   if (reach_checked) {
     char line[256];
-    std::snprintf(line, sizeof line, "reach: RCH %s %% (%d/%d rooms), ACC %s %% (%d/%d zones); %d action(s) cleared ways; %.2f s\n",
+    std::snprintf(line, sizeof line,
+                  "reach: RCH %s %% (%d/%d rooms), ACC %s %% (%d/%d zones reachable); %d action(s) cleared ways; %.2f s\n",
                   pct(rch()).c_str(), rooms_reachable, reach_rooms, pct(acc()).c_str(), zones_reachable, reach_zones,
                   reach_actions, reach_seconds);
     out += line + ("  " + reach_note + "\n");
@@ -521,6 +512,7 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
       sum.rooms_reachable = villa.reach->rooms_reachable;
       sum.reach_zones = villa.reach->zones;
       sum.zones_reachable = villa.reach->zones_reachable;
+      sum.reach_acc = villa.reach->acc_mean;
       sum.reach_actions = villa.reach->actions;
       sum.reach_note = villa.reach->outcome;
       sum.reach_seconds = villa.reach->seconds;
@@ -687,6 +679,75 @@ std::string FurnishCredits(const FurnishedVilla& villa) {
   return out;
 }
 
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
+  PlanOverlay overlay;
+  std::map<std::string, Category> category_of;
+  for (const Room& r : villa.layout.rooms) category_of[r.name()] = r.category;
+  std::vector<const scene::SceneObject*> objects;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.pose && o.relation != scene::Relation::kHanging) objects.push_back(&o);
+  // Lowest first; at one height the larger footprint first, so a rug or a table never hides what is on it.
+  std::stable_sort(objects.begin(), objects.end(), [](const scene::SceneObject* a, const scene::SceneObject* b) {
+    if (a->pose->z != b->pose->z) return a->pose->z < b->pose->z;
+    return a->size.x * a->size.y > b->size.x * b->size.y;
+  });
+  auto mix = [](Rgb a, Rgb b, double t) { return Rgb{a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t}; };
+  for (const scene::SceneObject* o : objects) {
+    auto it = category_of.find(o->room);
+    const Category category = it == category_of.end() ? Category::kRoom : it->second;
+    const double c = std::cos(o->pose->yaw), s = std::sin(o->pose->yaw);
+    const double hx = o->size.x / 2.0, hy = o->size.y / 2.0;
+    PlanOverlay::Shape shape;
+    shape.level = o->level;
+    for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}})
+      shape.outline.push_back({o->pose->x + c * x - s * y, o->pose->y + s * x + c * y});
+    shape.fill = mix(CategoryColor(category), CategoryInk(category), 0.4);
+    shape.fill_alpha = 0.9;
+    shape.ink = mix(CategoryInk(category), Rgb{0.1, 0.1, 0.1}, 0.3);
+    overlay.shapes.push_back(std::move(shape));
+  }
+  if (villa.reach)
+    for (const ReachFigures::Path& p : villa.reach->paths)
+      overlay.paths.push_back({p.level, p.points, Rgb{0.07, 0.36, 0.66}, 1.6});
+  return overlay;
+}
+
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa) {
+  PlanRenderOptions options;
+  options.source_name = villa.scene.layout.file + " (furnished)";
+  return RenderPlanPng(villa.layout, FurnishedPlanOverlay(villa), options);
+}
+
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options) {
+  ViewScene view = ViewSceneOf(villa.building);
+  // The objects' meshes moved into the world frame; the scene borrows them until the picture is made.
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!o.pose) continue;
+    auto asset = villa.library->Mesh(o.asset);
+    if (!asset.ok()) return Error{o.id + ": " + asset.error()};
+    const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw);
+    const bool hung = o.relation == scene::Relation::kOnWall || o.relation == scene::Relation::kHanging;
+    for (const AssetMeshPart& part : (*asset)->parts) {
+      if (part.mesh.triangles.empty()) continue;
+      auto world = std::make_unique<TriangleMesh>(part.mesh);
+      for (Vec3& v : world->vertices) {
+        const double x = v.x * o.scale[0], y = v.y * o.scale[1];
+        v = {o.pose->x + c * x - s * y, o.pose->y + s * x + c * y, o.pose->z + v.z * o.scale[2]};
+      }
+      ViewMesh mesh;
+      mesh.mesh = world.get();
+      mesh.color = {part.material.r, part.material.g, part.material.b};
+      mesh.alpha = part.material.alpha;
+      mesh.level = o.level;
+      mesh.cut = hung ? CutAway::kCut : CutAway::kKeep;
+      view.meshes.push_back(mesh);
+      meshes.push_back(std::move(world));
+    }
+  }
+  return RenderPreview(view, options);
+}
+
 Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
                                                      const FurnishOptions& options) {
   std::error_code ec;
@@ -707,6 +768,11 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
   if (Status s = write(kSceneFile, scene::SceneToText(villa.scene)); !s) return Error{s.error()};
   if (Status s = write(kGlbFile, *glb); !s) return Error{s.error()};
   if (Status s = write(kCreditsFile, FurnishCredits(villa)); !s) return Error{s.error()};
+  if (options.pictures) {
+    auto plan = FurnishedPlanPng(villa);
+    if (!plan.ok()) return Error{(dir / kPlanPicture).string() + ": " + plan.error()};
+    if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
+  }
   if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
 
   return written;

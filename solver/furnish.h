@@ -26,6 +26,8 @@
 #include "assets/asset_library.h"
 #include "building/building.h"
 #include "layout/layout.h"
+#include "render/plan_render.h"
+#include "render/view3d.h"
 #include "scene/acquire.h"
 #include "scene/planner.h"
 #include "scene/room_context.h"
@@ -39,19 +41,20 @@
 namespace villa::solver {
 
 // What reachability (issue 13: solver/reach*, docs/REACH.md) adds to a furnished villa, measured once after
-// every room is solved and the feedback loop has run: RCH per room and ACC per V_int object (1 reachable
-// from the entrance by a person of the given radius, across floors by the stairs; 0 not), the drawn paths
-// (plan.png), what is not reachable (marked on plan.png) and the full record for report.json.
+// every room is solved and the feedback loop has run: RCH per room (1 reachable from the entrance by a
+// person of the given radius, across floors by the stairs; 0 not) and ACC per V_int object (the share of
+// its interaction zone that person reaches, SCENE.md, docs/METRICS.md), the drawn paths (plan.png) and the
+// full record for report.json.
 struct ReachFigures {
   std::map<std::string, double> rch;  // room name -> 1 reachable / 0 not
-  std::map<std::string, double> acc;  // V_int object id -> 1 its interaction zone reachable / 0 not
+  std::map<std::string, double> acc;  // V_int object id -> share of its interaction zone reachable, [0, 1]
   struct Path {
     int level = 0;
     std::vector<Point> points;  // plan m: the part of a path walked on this level
   };
   std::vector<Path> paths;
-  std::vector<std::pair<int, Ring>> unreached;  // (level, plan polygon) of each room or zone not reachable
-  int rooms = 0, rooms_reachable = 0, zones = 0, zones_reachable = 0;
+  int rooms = 0, rooms_reachable = 0, zones = 0, zones_reachable = 0;  // zones with any part reachable
+  double acc_mean = 1.0;        // ACC over the villa: the mean of `acc`
   int actions = 0;              // actions the rooms' agents took to clear walkways
   std::string outcome;          // how the feedback loop ended, one line
   std::string note;             // what was measured how, for the report
@@ -144,7 +147,8 @@ struct FurnishSummary {
   double obr() const { return objects ? double(out_of_bounds) / objects : 0.0; }
   double csr() const { return inside_edges ? double(contained) / inside_edges : 1.0; }
   double rch() const { return reach_rooms ? double(rooms_reachable) / reach_rooms : 1.0; }
-  double acc() const { return reach_zones ? double(zones_reachable) / reach_zones : 1.0; }
+  double reach_acc = 1.0;    // ACC: the mean share of the V_int zones reachable
+  double acc() const { return reach_acc; }
   std::string BriefReport() const;  // a few lines for people
 };
 
@@ -190,5 +194,17 @@ Result<std::string> FurnishedGlb(const FurnishedVilla& villa);
 std::string FurnishCredits(const FurnishedVilla& villa);  // "" when no placed asset needs credit
 // "rooms/kitchen_0_0.png" for "kitchen_0/0".
 std::string RoomPictureName(const std::string& room);
+
+// What plan.png draws over the floor plan: every placed object's oriented box (its size x scale, turned
+// by its yaw) in a muted tone of its room's colour, on its level, lowest objects first so what stands
+// on a table shows over it (objects hung from the ceiling are left out: they would cover the room), and
+// the reach hook's walking paths as thin lines when it ran.
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa);
+// plan.png: the floor plans of every level with that overlay.
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa);
+// The furnished villa in the 3D view (render/view3d.h RenderPreview): the building as `villa build
+// --preview` draws it plus every placed object in its assets' colours; the cut-away of a level keeps
+// standing furniture whole and cuts what hangs on walls or from the ceiling like the walls.
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options = {});
 
 }  // namespace villa::solver

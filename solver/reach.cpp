@@ -170,6 +170,41 @@ long GoalCell(const LevelCells& lc, const ReachTarget& t, const std::vector<long
   return best;
 }
 
+// The share of a zone's boxes (its areas touched from outside, not the owner's footprint reached within
+// arm's reach) covered by the disc of a person standing on a reached cell: the cells whose centres lie in
+// a box, and of them those within the radius of a reached cell.
+double ZoneShare(const LevelCells& lc, const ReachTarget& t, const std::vector<float>& dist, long offset, double radius) {
+  const Grid& g = lc.grid;
+  const int k = static_cast<int>(std::ceil(radius / g.cell));
+  long inside = 0, covered = 0;
+  for (const TargetArea& a : t.areas) {
+    if (a.mode != TargetArea::Mode::kTouch || a.reach > 0.0 || a.polygon.empty()) continue;
+    Point lo = a.polygon[0], hi = a.polygon[0];
+    for (const Point& p : a.polygon) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    int i0, i1, j0, j1;
+    g.Range(lo, hi, &i0, &i1, &j0, &j1);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const long c = static_cast<long>(j) * g.nx + i;
+        const Point p = g.Centre(c);
+        if (!PointInRing(p, a.polygon, 0)) continue;
+        ++inside;
+        bool hit = false;
+        for (int dj = -k; dj <= k && !hit; ++dj) {
+          for (int di = -k; di <= k && !hit; ++di) {
+            const int ii = i + di, jj = j + dj;
+            if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) continue;
+            const long n = static_cast<long>(jj) * g.nx + ii;
+            hit = std::isfinite(dist[offset + n]) && Dist(g.Centre(n), p) <= radius;
+          }
+        }
+        covered += hit;
+      }
+    }
+  }
+  return inside ? static_cast<double>(covered) / inside : 0.0;
+}
+
 // Keeps the corners of a polyline of cell centres (Douglas-Peucker, `tolerance` m).
 std::vector<Point> Corners(const std::vector<Point>& p, double tolerance) {
   if (p.size() <= 2) return p;
@@ -362,6 +397,14 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
       res.reachable = true;
       res.goal = lc.grid.Centre(goals[k]);
       res.raster_length = Round4(ways.dist[graph.offset[t.level] + goals[k]]);
+    }
+    if (t.kind == TargetKind::kRoom) {
+      res.share = res.reachable ? 1.0 : 0.0;
+    } else {
+      bool shared = false;
+      for (const TargetArea& a : t.areas) shared |= a.reach > 0.0;
+      res.share = shared && res.reachable ? 1.0 : Round4(ZoneShare(lc, t, ways.dist, graph.offset[t.level], r));
+      report.zone_share += res.share;
     }
     (t.kind == TargetKind::kRoom ? report.rooms : report.zones) += 1;
     if (res.reachable) (t.kind == TargetKind::kRoom ? report.rooms_reachable : report.zones_reachable) += 1;
@@ -570,6 +613,7 @@ nlohmann::ordered_json ReachReport::ToJson() const {
     if (t.kind == TargetKind::kZone) e["room"] = t.room;
     e["level"] = t.level;
     e["reachable"] = t.reachable;
+    if (t.kind == TargetKind::kZone) e["share"] = t.share;
     if (t.reachable) {
       e["goal"] = {Round4(t.goal.x), Round4(t.goal.y)};
       e["raster_length"] = t.raster_length;

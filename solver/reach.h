@@ -187,6 +187,10 @@ struct TargetResult {
   double raster_length = -1.0;     // m, the raster's geodesic from the entrance (stairs included); -1: none
   std::optional<ReachPath> path;   // the drawn OMPL path (reachable targets, when options.paths)
   std::string note;                // why no path was drawn, or why it is unreachable
+  // Zones: SCENE.md's ACC, the share of the zone's area a person standing on reached floor covers (their
+  // disc; the disc never covers an obstacle, so that part is on free floor); 1 for a zone that holds the
+  // objects allowed in it (the table at a chair) reached within arm's reach of its owner. Rooms: 1 or 0.
+  double share = 0.0;
   // Unreachable: the objects on the cheapest way through objects and open door leaves (in the order
   // met), the leaves on it (the building's: nothing the solver moves), and that way's raster cells as world
   // points per level (the walkway the feedback keeps free).
@@ -218,7 +222,9 @@ struct ReachReport {
   double seconds_blockers = 0.0;
 
   double Rch() const { return rooms ? static_cast<double>(rooms_reachable) / rooms : 1.0; }
-  double Acc() const { return zones ? static_cast<double>(zones_reachable) / zones : 1.0; }
+  double zone_share = 0.0;  // the sum of the zones' shares
+  // RCH: the share of rooms reachable. ACC: the mean over the zones of the share of each zone reachable.
+  double Acc() const { return zones ? zone_share / zones : 1.0; }
   const TargetResult* Find(std::string_view name) const;
   std::string BriefReport() const;
   // {"rch", "acc", "rooms": [...], "zones": [...], "levels": [...]}; numbers at 4 decimals, paths as
