@@ -160,6 +160,7 @@ void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::Re
   int rooms = 0, zones = 0, rooms_before = 0, zones_before = 0, rooms_after = 0, zones_after = 0, not_measured = 0;
   std::map<std::string, int> rooms_by_cause, zones_by_cause, actions, statuses;
   int removed = 0, villas_changed = 0, walkways = 0, spots = 0, checks = 0;
+  double share_sum = 0.0;  // ACC: the zones' reachable shares, summed
   double seconds = 0.0, worst = 0.0, furnish_seconds = 0.0;
   LevelTimes times;
   for (const Villa& v : villas) {
@@ -187,9 +188,10 @@ void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::Re
     zones += r.zones;
     rooms_after += r.rooms_reachable;
     zones_after += r.zones_reachable;
+    share_sum += r.acc_mean * r.zones;
     const nlohmann::json& fb = record["feedback"];
-    rooms_before += static_cast<int>(std::lround(fb["rch_before"].get<double>() * r.rooms));
-    zones_before += static_cast<int>(std::lround(fb["acc_before"].get<double>() * r.zones));
+    rooms_before += fb["rooms_reachable_before"].get<int>();
+    zones_before += fb["zones_reachable_before"].get<int>();
     checks += 1 + static_cast<int>(fb["rounds"].size());
     bool changed = false;
     for (const nlohmann::json& round : fb["rounds"]) {
@@ -218,10 +220,12 @@ void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::Re
   auto pct = [](int n, int d) { return d ? 100.0 * n / d : 100.0; };
   const int measured = static_cast<int>(villas.size()) - not_measured;
   std::printf("  %d villas measured (%d not): rooms %d, V_int zones %d\n", measured, not_measured, rooms, zones);
-  std::printf("  before the feedback: RCH %.1f %% (%d), ACC %.1f %% (%d)\n", pct(rooms_before, rooms), rooms_before,
-              pct(zones_before, zones), zones_before);
-  std::printf("  after:               RCH %.1f %% (%d), ACC %.1f %% (%d)\n", pct(rooms_after, rooms), rooms_after,
-              pct(zones_after, zones), zones_after);
+  std::printf("  before the feedback: rooms reachable %.1f %% (%d), zones reachable %.1f %% (%d)\n", pct(rooms_before, rooms),
+              rooms_before, pct(zones_before, zones), zones_before);
+  std::printf("  after:               rooms reachable %.1f %% (%d), zones reachable %.1f %% (%d); RCH %.3f, ACC %.3f (mean "
+              "share of a zone reachable)\n",
+              pct(rooms_after, rooms), rooms_after, pct(zones_after, zones), zones_after,
+              rooms ? static_cast<double>(rooms_after) / rooms : 1.0, zones ? share_sum / zones : 1.0);
   for (const auto* by : {&rooms_by_cause, &zones_by_cause}) {
     std::printf("  %s still unreachable by cause:", by == &rooms_by_cause ? "rooms" : "zones");
     if (by->empty()) std::printf(" none");

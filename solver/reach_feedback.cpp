@@ -171,8 +171,7 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
           continue;
         }
       }
-      // A way that also passes an open door leaf stays closed whatever the furniture does.
-      if (t.blockers.empty() || !t.door_leaves.empty()) continue;
+      if (t.blockers.empty()) continue;
       std::set<std::string> holders;
       for (const std::string& id : t.blockers) {
         if (auto it = seen.find(id); it != seen.end()) holders.insert(it->second.room);
@@ -234,6 +233,8 @@ nlohmann::ordered_json FeedbackSummary::ToJson() const {
   j["reason"] = reason;
   j["rch_before"] = std::round(first.Rch() * 1e4) / 1e4;
   j["acc_before"] = std::round(first.Acc() * 1e4) / 1e4;
+  j["rooms_reachable_before"] = first.rooms_reachable;
+  j["zones_reachable_before"] = first.zones_reachable;
   j["rounds"] = nlohmann::ordered_json::array();
   for (const FeedbackRound& r : rounds) {
     nlohmann::ordered_json jr;

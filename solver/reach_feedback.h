@@ -1,8 +1,7 @@
 #pragma once
 // Reachability fed back to the pose solver (issue 13): what a person cannot reach becomes an energy term
 // and actions in the rooms' solver loops. Round by round: check the building (solver/reach.h); for every
-// unreachable room or zone whose cheapest way in crosses objects (and no open door leaf, which no furniture
-// move opens), keep that way free in the rooms holding
+// unreachable room or zone whose cheapest way in crosses objects, keep that way free in the rooms holding
 // them (a walkway keep-out, the person's width plus a margin along the way, floor to head height: every
 // object standing in it adds its overlap to E_col, so the room is no longer converged) and let each such
 // room's rule agent act on it through the paper's actions (update_pose to a free slot that keeps out of the
@@ -61,7 +60,8 @@ struct FeedbackSummary {
   double seconds = 0.0;
 
   std::string BriefReport() const;
-  // {"all_reachable", "reason", "rch_before", "acc_before", "rounds": [{"unreachable", "walkways",
+  // {"all_reachable", "reason", "rch_before", "acc_before", "rooms_reachable_before",
+  // "zones_reachable_before", "rounds": [{"unreachable", "walkways",
   // "actions": [{"room", ...action result}]}]}
   nlohmann::ordered_json ToJson() const;
 };
