@@ -51,16 +51,17 @@ void Run(ReachCommand& command) {
     return;
   }
   std::cout << command.scene << ": rooms " << r.rooms_reachable << "/" << r.rooms << " reachable (RCH " << FormatFixed(r.Rch(), 3)
-            << "), interaction zones " << r.zones_reachable << "/" << r.zones << " (ACC " << FormatFixed(r.Acc(), 3)
+            << "), interaction zones " << r.zones_reachable << "/" << r.zones << " (ACC, the mean share of a zone reached, "
+            << FormatFixed(r.Acc(), 3)
             << "), radius " << FormatFixed(command.options.radius, 2) << " m"
             << (r.entrance_free ? "" : "; the entrance itself is blocked") << "\n";
   TextTable rooms({"room", "level", "reachable", "path m", "blocked by"});
-  TextTable zones({"object", "room", "reachable", "path m", "blocked by"});
+  TextTable zones({"object", "room", "reachable", "share", "path m", "blocked by"});
   for (const solver::TargetResult& t : r.targets) {
     if (t.kind == solver::TargetKind::kRoom) {
       rooms.AddRow({t.name, std::to_string(t.level), t.reachable ? "yes" : "no", Way(t), Blockers(t)});
     } else {
-      zones.AddRow({t.name, t.room, t.reachable ? "yes" : "no", Way(t), Blockers(t)});
+      zones.AddRow({t.name, t.room, t.reachable ? "yes" : "no", FormatFixed(t.share, 2), Way(t), Blockers(t)});
     }
   }
   std::cout << rooms.Render();
@@ -75,8 +76,8 @@ Registration registration{85, [](CLI::App& app) {
       "Check that a person (a disc) can walk from the entrance to every room and every interaction zone of a\n"
       "furnished scene, across floors by the stairs: a 2 cm raster decides, OMPL draws the paths. Reads the\n"
       "scene, the layout it names and rebuilds the building. Prints per room and zone: reachable or not, the\n"
-      "path's length, and the objects (or door leaves) in the way. Exit status: 0 checked (whatever the\n"
-      "outcome), 1 an unreadable scene or layout, 2 usage.");
+      "path's length, and the objects (or door leaves) in the way; for a zone, the share of it reached (ACC).\n"
+      "Exit status: 0 checked (whatever the outcome), 1 an unreadable scene or layout, 2 usage.");
   reach->add_option("scene", command->scene, "the scene file (DIR/scene.json)")->required()->check(CLI::ExistingFile);
   reach->add_option("--radius", command->options.radius, "the person's radius (m)")->capture_default_str();
   reach->add_flag("--json", command->json, "print the report as JSON (paths as [x, y, z] points)");
