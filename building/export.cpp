@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "building/glb_writer.h"
 #include "building/materials.h"
 #include "util/atomic_file.h"
 
@@ -155,81 +156,214 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
   return scene;
 }
 
-uint32_t ReadU32(const std::string& b, size_t at) {
-  uint32_t v;
-  std::memcpy(&v, b.data() + at, 4);
-  return v;
-}
-void PutU32(std::string& b, uint32_t v) { b.append(reinterpret_cast<const char*>(&v), 4); }
+Vec3 ToGltfFrame(const Vec3& p) { return {p.x, p.z, -p.y}; }
 
-// assimp's glTF exporter drops node metadata and declares extensions it does not use. This rewrites
-// the JSON chunk of the .glb: room nodes get "extras" {category, area_m2, level}, and extensionsUsed
-// keeps only extensions that occur. The binary chunk is kept byte for byte.
-Result<std::string> PatchGlb(const std::string& glb, const BuildingMesh& building) {
-  if (glb.size() < 20 || glb.compare(0, 4, "glTF") != 0) return Error{"exporter wrote no GLB header"};
-  uint32_t json_len = ReadU32(glb, 12);
-  if (glb.compare(16, 4, "JSON") != 0 || 20 + size_t{json_len} > glb.size()) return Error{"GLB without a JSON chunk"};
-  auto json = nlohmann::ordered_json::parse(glb.substr(20, json_len), nullptr, false);
-  if (json.is_discarded()) return Error{"GLB JSON chunk does not parse"};
-  std::map<std::string, const BuiltRoom*> rooms;
-  for (const BuiltRoom& r : building.rooms) rooms[r.name] = &r;
-  if (json.contains("nodes"))
-    for (auto& node : json["nodes"]) {
-      auto it = node.contains("name") ? rooms.find(node["name"].get<std::string>()) : rooms.end();
-      if (it == rooms.end() || !node.contains("mesh")) continue;
-      node["extras"] = {{"category", std::string(CategoryName(it->second->category))},
-                        {"area_m2", std::round(it->second->area * 100.0) / 100.0},
-                        {"level", it->second->level}};
+// A building part's triangles split into its own material and, for floor slabs and terraces, the steep
+// faces (|n_z| < 0.5: the slab's edges) in the exterior wall's material.
+struct PartPrimitives {
+  gltf::Primitive main;
+  gltf::Primitive edges;
+};
+PartPrimitives SplitPart(const MeshPart& part) {
+  const bool slab = part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace;
+  PartPrimitives out;
+  std::vector<int> main_index(part.mesh.vertices.size(), -1), edge_index(part.mesh.vertices.size(), -1);
+  auto add = [&](gltf::Primitive& p, std::vector<int>& index, int v) {
+    if (index[v] < 0) {
+      index[v] = static_cast<int>(p.positions.size() / 3);
+      const Vec3 g = ToGltfFrame(part.mesh.vertices[v]);
+      p.positions.insert(p.positions.end(), {static_cast<float>(g.x), static_cast<float>(g.y), static_cast<float>(g.z)});
     }
-  if (json.contains("extensionsUsed")) {
-    std::set<std::string> present;
-    std::function<void(const nlohmann::ordered_json&)> scan = [&](const nlohmann::ordered_json& j) {
-      if (j.is_object()) {
-        for (auto it = j.begin(); it != j.end(); ++it) {
-          if (it.key() == "extensions" && it.value().is_object())
-            for (auto e = it.value().begin(); e != it.value().end(); ++e) present.insert(e.key());
-          scan(it.value());
-        }
-      } else if (j.is_array()) {
-        for (const auto& v : j) scan(v);
-      }
-    };
-    scan(json);
-    nlohmann::ordered_json used = nlohmann::ordered_json::array();
-    for (const auto& e : json["extensionsUsed"])
-      if (present.count(e.get<std::string>())) used.push_back(e);
-    if (used.empty())
-      json.erase("extensionsUsed");
-    else
-      json["extensionsUsed"] = used;
+    p.indices.push_back(static_cast<std::uint32_t>(index[v]));
+  };
+  for (const auto& t : part.mesh.triangles) {
+    const Vec3 &a = part.mesh.vertices[t[0]], &b = part.mesh.vertices[t[1]], &c = part.mesh.vertices[t[2]];
+    const Vec3 n = Cross(b - a, c - a);
+    const double len = Norm(n);
+    const bool steep = slab && len > 0.0 && std::abs(n.z) < 0.5 * len;
+    gltf::Primitive& p = steep ? out.edges : out.main;
+    std::vector<int>& index = steep ? edge_index : main_index;
+    for (int k = 0; k < 3; ++k) add(p, index, t[k]);
   }
-  std::string text = json.dump();
-  while (text.size() % 4 != 0) text.push_back(' ');
-  std::string rest = glb.substr(20 + json_len);  // the BIN chunk, header included
-  std::string out = "glTF";
-  PutU32(out, 2);
-  PutU32(out, static_cast<uint32_t>(12 + 8 + text.size() + rest.size()));
-  PutU32(out, static_cast<uint32_t>(text.size()));
-  out += "JSON";
-  out += text;
-  out += rest;
   return out;
 }
 
+// One glTF material per distinct look, the sRGB colour written linear.
+class MaterialTable {
+ public:
+  int Of(const PartMaterial& m) {
+    const std::string key = m.name + "|" + std::to_string(m.color.r) + "," + std::to_string(m.color.g) + "," +
+                            std::to_string(m.color.b) + "," + std::to_string(m.alpha) + "," + std::to_string(m.roughness);
+    auto [it, added] = index_.emplace(key, static_cast<int>(materials_.size()));
+    if (added) {
+      gltf::Material g;
+      g.name = m.name;
+      g.base_color = {gltf::SrgbToLinear(m.color.r), gltf::SrgbToLinear(m.color.g), gltf::SrgbToLinear(m.color.b), m.alpha};
+      g.roughness = m.roughness;
+      g.blend = m.alpha < 1.0;
+      g.double_sided = m.alpha < 1.0;  // glass is seen from both sides
+      materials_.push_back(g);
+    }
+    return it->second;
+  }
+  std::vector<gltf::Material> Take() { return std::move(materials_); }
+
+ private:
+  std::map<std::string, int> index_;
+  std::vector<gltf::Material> materials_;
+};
+
+PartMaterial ExteriorWallMaterial() {
+  MeshPart wall;
+  wall.kind = PartKind::kExteriorWall;
+  return MaterialOf(wall);
+}
+
 }  // namespace
+
+Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurniture* furniture) {
+  gltf::Document doc;
+  MaterialTable materials;
+  const PartMaterial facade = ExteriorWallMaterial();
+  auto named = [](const std::string& name) { return nlohmann::ordered_json{{"name", name}}; };
+  auto add_node = [&](gltf::Node node) {
+    doc.nodes.push_back(std::move(node));
+    return static_cast<int>(doc.nodes.size()) - 1;
+  };
+
+  // One mesh per building part, in part order.
+  std::vector<int> part_mesh(building.parts.size(), -1);
+  for (size_t i = 0; i < building.parts.size(); ++i) {
+    const MeshPart& part = building.parts[i];
+    PartPrimitives split = SplitPart(part);
+    gltf::Mesh mesh;
+    mesh.name = part.name;
+    if (!split.main.indices.empty()) {
+      split.main.material = materials.Of(MaterialOf(part));
+      mesh.primitives.push_back(std::move(split.main));
+    }
+    if (!split.edges.indices.empty()) {
+      split.edges.material = materials.Of(facade);
+      mesh.primitives.push_back(std::move(split.edges));
+    }
+    if (mesh.primitives.empty()) continue;
+    part_mesh[i] = static_cast<int>(doc.meshes.size());
+    doc.meshes.push_back(std::move(mesh));
+  }
+
+  // Furniture meshes: one per asset, in the asset frame turned to +Y up.
+  std::vector<int> asset_mesh;
+  if (furniture) {
+    for (const ExportAssetMesh& asset : furniture->meshes) {
+      gltf::Mesh mesh;
+      mesh.name = asset.name;
+      for (const ExportAssetMesh::Part& part : asset.parts) {
+        if (!part.mesh || part.mesh->triangles.empty()) continue;
+        gltf::Primitive p;
+        for (const Vec3& v : part.mesh->vertices) {
+          const Vec3 g = ToGltfFrame(v);
+          p.positions.insert(p.positions.end(), {static_cast<float>(g.x), static_cast<float>(g.y), static_cast<float>(g.z)});
+        }
+        for (const auto& t : part.mesh->triangles)
+          for (int k = 0; k < 3; ++k) p.indices.push_back(static_cast<std::uint32_t>(t[k]));
+        p.material = materials.Of(part.material);
+        mesh.primitives.push_back(std::move(p));
+      }
+      asset_mesh.push_back(mesh.primitives.empty() ? -1 : static_cast<int>(doc.meshes.size()));
+      if (!mesh.primitives.empty()) doc.meshes.push_back(std::move(mesh));
+    }
+  }
+
+  std::map<std::string, const BuiltRoom*> rooms;
+  for (const BuiltRoom& r : building.rooms) rooms[r.name] = &r;
+  std::map<std::string, int> room_node;
+  std::vector<int> level_nodes;
+  for (int level = 0; level < building.levels; ++level) {
+    std::vector<int> children;
+    std::map<std::string, std::vector<int>> groups;
+    const std::string suffix = "_" + std::to_string(level);
+    for (size_t i = 0; i < building.parts.size(); ++i) {
+      const MeshPart& part = building.parts[i];
+      if (part.level != level || part_mesh[i] < 0) continue;
+      gltf::Node node;
+      node.name = part.name;
+      node.mesh = part_mesh[i];
+      node.extras = named(part.name);
+      if (part.kind == PartKind::kFloor) {
+        auto r = rooms.find(part.name);
+        node.extras["category"] = std::string(CategoryName(part.category));
+        if (r != rooms.end()) node.extras["area_m2"] = std::round(r->second->area * 100.0) / 100.0;
+        node.extras["level"] = level;
+      }
+      const int index = add_node(std::move(node));
+      switch (part.kind) {
+        case PartKind::kFloor:
+          room_node[part.name] = index;
+          children.push_back(index);
+          break;
+        case PartKind::kRoof: children.push_back(index); break;
+        case PartKind::kTerrace: groups["terraces" + suffix].push_back(index); break;
+        case PartKind::kExteriorWall:
+        case PartKind::kInteriorWall: groups["walls" + suffix].push_back(index); break;
+        case PartKind::kDoorLeaf: groups["doors" + suffix].push_back(index); break;
+        case PartKind::kWindowGlass: groups["windows" + suffix].push_back(index); break;
+        case PartKind::kStair: groups["stairs" + suffix].push_back(index); break;
+      }
+    }
+    for (const char* group : {"walls", "doors", "windows", "stairs", "terraces"}) {
+      auto it = groups.find(group + suffix);
+      if (it == groups.end()) continue;
+      gltf::Node g;
+      g.name = it->first;
+      g.children = it->second;
+      g.extras = named(it->first);
+      children.push_back(add_node(std::move(g)));
+    }
+    gltf::Node level_node;
+    level_node.name = "level_" + std::to_string(level);
+    level_node.children = children;
+    level_node.extras = named(level_node.name);
+    level_node.extras["level"] = level;
+    level_nodes.push_back(add_node(std::move(level_node)));
+  }
+
+  // Objects under their rooms: the node maps the asset frame into the world, both written +Y up, so its
+  // transform is the pose conjugated by the frame map: translation (x, z, -y), a turn about +Y by the
+  // yaw, scale (sx, sz, sy).
+  if (furniture) {
+    for (const ExportObject& o : furniture->objects) {
+      auto room = room_node.find(o.room);
+      if (room == room_node.end()) return Error{"object " + o.name + ": room " + o.room + " is not in the building"};
+      if (o.mesh < 0 || o.mesh >= static_cast<int>(asset_mesh.size()))
+        return Error{"object " + o.name + ": mesh " + std::to_string(o.mesh) + " does not exist"};
+      gltf::Node node;
+      node.name = o.name;
+      node.mesh = asset_mesh[o.mesh];
+      node.translation = std::array<double, 3>{o.position.x, o.position.z, -o.position.y};
+      if (o.yaw != 0.0) node.rotation = std::array<double, 4>{0.0, std::sin(o.yaw / 2.0), 0.0, std::cos(o.yaw / 2.0)};
+      if (!(o.scale == Vec3{1.0, 1.0, 1.0})) node.scale = std::array<double, 3>{o.scale.x, o.scale.z, o.scale.y};
+      node.extras = named(o.name);
+      for (auto it = o.extras.begin(); it != o.extras.end(); ++it)
+        if (it.key() != "name") node.extras[it.key()] = it.value();
+      const int index = add_node(std::move(node));  // may grow doc.nodes: take the room's node after it
+      doc.nodes[room->second].children.push_back(index);
+    }
+    doc.asset_extras = furniture->asset_extras;
+  }
+
+  gltf::Node root;
+  root.name = "villa";
+  root.children = level_nodes;
+  root.extras = named("villa");
+  doc.roots = {add_node(std::move(root))};
+  doc.materials = materials.Take();
+  return gltf::WriteGlb(doc);
+}
 
 std::optional<MeshFormat> ParseMeshFormat(std::string_view name) {
   if (name == "glb") return MeshFormat::kGlb;
   if (name == "obj") return MeshFormat::kObj;
   return std::nullopt;
-}
-
-Result<std::string> BuildingToGlb(const BuildingMesh& building) {
-  auto scene = MakeScene(building);
-  Assimp::Exporter exporter;
-  const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), "glb2");
-  if (!blob) return Error{std::string("glTF export failed: ") + exporter.GetErrorString()};
-  return PatchGlb(std::string(static_cast<const char*>(blob->data), blob->size), building);
 }
 
 Status ExportBuilding(const BuildingMesh& building, const std::filesystem::path& out, MeshFormat format) {
@@ -306,15 +440,35 @@ Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
     mi.material = static_cast<int>(m->mMaterialIndex);
     mi.vertices = static_cast<int>(m->mNumVertices);
     mi.triangles = static_cast<int>(m->mNumFaces);
-    for (unsigned v = 0; v < m->mNumVertices; ++v) mi.bounds.Add(Vec3{m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z});
-    info.bounds.Add(mi.bounds);
-    info.meshes.push_back(mi);
+    for (unsigned v = 0; v < m->mNumVertices; ++v) {
+      const Vec3 p{m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
+      mi.bounds.Add(p);
+      mi.mesh.vertices.push_back(p);
+    }
+    for (unsigned f = 0; f < m->mNumFaces; ++f)
+      if (m->mFaces[f].mNumIndices == 3)
+        mi.mesh.AddTriangle(static_cast<int>(m->mFaces[f].mIndices[0]), static_cast<int>(m->mFaces[f].mIndices[1]),
+                            static_cast<int>(m->mFaces[f].mIndices[2]));
+    info.meshes.push_back(std::move(mi));
   }
-  std::function<void(const aiNode*, const std::string&)> walk = [&](const aiNode* node, const std::string& parent) {
+  auto to_array = [](const aiMatrix4x4& t) {
+    return std::array<double, 16>{t.a1, t.a2, t.a3, t.a4, t.b1, t.b2, t.b3, t.b4, t.c1, t.c2, t.c3, t.c4, t.d1, t.d2, t.d3, t.d4};
+  };
+  std::function<void(const aiNode*, const std::string&, const aiMatrix4x4&)> walk = [&](const aiNode* node, const std::string& parent,
+                                                                                         const aiMatrix4x4& above) {
     SceneNodeInfo ni;
     ni.name = node->mName.C_Str();
     ni.path = parent.empty() ? ni.name : parent + "/" + ni.name;
-    for (unsigned k = 0; k < node->mNumMeshes; ++k) ni.meshes.push_back(static_cast<int>(node->mMeshes[k]));
+    const aiMatrix4x4 global = above * node->mTransformation;
+    ni.local = to_array(node->mTransformation);
+    ni.global = to_array(global);
+    for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+      ni.meshes.push_back(static_cast<int>(node->mMeshes[k]));
+      for (const Vec3& v : info.meshes[node->mMeshes[k]].mesh.vertices) {
+        const aiVector3D w = global * aiVector3D(static_cast<ai_real>(v.x), static_cast<ai_real>(v.y), static_cast<ai_real>(v.z));
+        info.bounds.Add(Vec3{w.x, w.y, w.z});
+      }
+    }
     if (const aiMetadata* md = node->mMetaData) {
       for (unsigned k = 0; k < md->mNumProperties; ++k) {
         const aiMetadataEntry& e = md->mValues[k];
@@ -333,9 +487,9 @@ Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
     }
     info.nodes.push_back(ni);
     std::string path_here = info.nodes.back().path;
-    for (unsigned c = 0; c < node->mNumChildren; ++c) walk(node->mChildren[c], path_here);
+    for (unsigned c = 0; c < node->mNumChildren; ++c) walk(node->mChildren[c], path_here, global);
   };
-  walk(scene->mRootNode, "");
+  walk(scene->mRootNode, "", aiMatrix4x4());
   return info;
 }
 

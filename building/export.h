@@ -1,19 +1,29 @@
 #pragma once
-// Writing a built villa as a 3D file through assimp: glTF 2.0 binary (.glb) or Wavefront OBJ (+ .mtl).
+// Writing a built villa as a 3D file: glTF 2.0 binary (.glb, our own writer: building/glb_writer.h) or
+// Wavefront OBJ (+ .mtl, through assimp).
 //
 // Scene: root "villa" -> "level_L" (one per floor) -> the room nodes (each room's floor, named after
 // the room: "kitchen_0/0") and the groups "walls_L", "doors_L", "windows_L", "stairs_L", "terraces_L"
 // holding one node per wall piece / door leaf / pane / staircase, named after the layout element
 // ("living0_kitchen0"); the roof hangs under the top level. Materials per room category and part
 // (glass: alpha 0.35, blend). glTF frame: metres, +Y up; plan (x, y) at height z becomes (x, z, -y).
-// Room nodes carry metadata (category, area_m2, level), written as glTF node extras where the
-// exporter supports it (see docs/BUILDING.md for what survives a re-import).
+// In the .glb every named node carries its exact name in `extras.name` (viewers such as three.js strip
+// "/", ":" and "." from names); room nodes also carry category, area_m2 and level. Base colour factors
+// are linear (the palette's sRGB inverted), as glTF defines them. A floor slab's edges (its steep faces,
+// on the facade and round stair holes) take the exterior wall's material, so the facade shows no band of
+// room colour at the floor lines. Furniture (villa furnish) hangs under the room nodes, one node per
+// object sharing one mesh per asset.
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "building/building.h"
+#include "building/materials.h"
 #include "render/palette.h"
 #include "util/result.h"
 
@@ -24,8 +34,33 @@ enum class MeshFormat { kGlb, kObj };
 // "glb" / "obj"; nullopt for anything else.
 std::optional<MeshFormat> ParseMeshFormat(std::string_view name);
 
-// The .glb file's bytes (OBJ is several files: use ExportBuilding).
-Result<std::string> BuildingToGlb(const BuildingMesh& building);
+// Objects placed in the building (villa furnish), written into the .glb with it.
+struct ExportAssetMesh {
+  std::string name;  // the asset id
+  struct Part {
+    const TriangleMesh* mesh = nullptr;  // borrowed; asset frame (metres, z up, origin bottom centre)
+    PartMaterial material;               // sRGB colour (written linear)
+  };
+  std::vector<Part> parts;  // parts without triangles are skipped
+};
+struct ExportObject {
+  std::string name;     // the object id: the node's name and extras.name
+  std::string room;     // the room node it hangs under (a room of the building)
+  int mesh = -1;        // index into ExportFurniture::meshes (shared: instancing)
+  Vec3 position;        // world, building frame (z up): where the asset's origin goes
+  double yaw = 0.0;     // rad, counter-clockwise about +z
+  Vec3 scale{1.0, 1.0, 1.0};  // along the asset's x, y, z
+  nlohmann::ordered_json extras = nlohmann::ordered_json::object();  // written first; "name" added
+};
+struct ExportFurniture {
+  std::vector<ExportAssetMesh> meshes;
+  std::vector<ExportObject> objects;
+  nlohmann::ordered_json asset_extras;  // glTF asset.extras (credits), written when not null
+};
+
+// The .glb file's bytes (OBJ is several files: use ExportBuilding). `furniture` may be null. Fails for an
+// object naming a room or mesh that does not exist.
+Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurniture* furniture = nullptr);
 
 // Writes `out` atomically; OBJ also writes the .mtl beside it (same stem). Errors name the file.
 Status ExportBuilding(const BuildingMesh& building, const std::filesystem::path& out, MeshFormat format);
@@ -37,13 +72,16 @@ struct SceneNodeInfo {
   std::string path;                 // "villa/level_0/walls_0/exterior_0_1"
   std::vector<int> meshes;          // indices into SceneInfo::meshes
   std::map<std::string, std::string> metadata;  // key -> value as text ("utility-room", "16", "0")
+  std::array<double, 16> local{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};   // row-major, to the parent's frame
+  std::array<double, 16> global{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // row-major, to the file's frame
 };
 struct SceneMeshInfo {
   std::string name;
   int material = 0;
   int vertices = 0;
   int triangles = 0;
-  Box3 bounds;  // file frame (glTF: +Y up)
+  Box3 bounds;        // the mesh's own frame (glTF: +Y up)
+  TriangleMesh mesh;  // its triangles in that frame
 };
 struct SceneMaterialInfo {
   std::string name;

@@ -10,6 +10,7 @@
 #include "assets/asset_library.h"
 #include "assets/category.h"
 #include "assets/embedder.h"
+#include "assets/procedural.h"
 #include "assets/retrieval.h"
 #include "assets/sh3d_import.h"
 #include "cli/command.h"
@@ -170,6 +171,7 @@ struct SearchCommand {
   std::vector<double> size;
   std::string placement;
   bool json = false;
+  bool no_procedural = false;
   RetrievalQuery query;
 };
 
@@ -196,6 +198,8 @@ void RunSearch(SearchCommand& command) {
     SetExitCode(kExitFailure);
     return;
   }
+  // Procedural generators offer an asset of the query's category at the wanted size, ranked with the rest.
+  if (!command.no_procedural) retriever->SetOffer(ProceduralOffer);
   RetrievalOptions options;
   options.k = command.k;
   Result<RetrievalResult> result = retriever->Rank(command.query, options);
@@ -276,7 +280,8 @@ Registration registration{70, [](CLI::App& app) {
       "search",
       "Rank the library's assets for a query: cosine similarity of text embeddings (offline lexical\n"
       "embedding of names, categories, tags and synonyms) plus the fit of their size to --size (or to the\n"
-      "category's usual sizes) plus a bonus for the query's category.");
+      "category's usual sizes) plus a bonus for the query's category. The procedural generator of the\n"
+      "query's category offers one asset at the wanted size (ids proc:...), ranked with the library's.");
   sub->add_option("text", search->text, "what to look for, e.g. \"dark leather couch\"")->required();
   sub->add_option("--library", search->library, "library folder");
   sub->add_option("-k", search->k, "answers to print (default 10)")->transform(WholeIn(1, 1000000));
@@ -288,6 +293,7 @@ Registration registration{70, [](CLI::App& app) {
   sub->add_flag("--needs-surface", search->query.needs_surface, "only assets with a support surface");
   sub->add_flag("--needs-cavity", search->query.needs_cavity, "only assets with a cavity");
   sub->add_option("--placement", search->placement, "only assets placed so: floor, wall, ceiling or surface");
+  sub->add_flag("--no-procedural", search->no_procedural, "rank the library's records only (no procedural offer)");
   sub->add_flag("--json", search->json, "one JSON object a line: id, score, similarity, size_fit, name, category");
   sub->callback([search] { RunSearch(*search); });
 }};

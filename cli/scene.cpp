@@ -1,6 +1,6 @@
-// villa scene plan LAYOUT --room NAME [--text "..."] [--seed N] -o graph.json: one room's A-PSSG (objects
-// with affordances, physical and semantic edges, interaction zones; no poses, no assets yet) from the
-// built-in room priors and the request text.
+// villa scene plan LAYOUT --room NAME [--text "..."] [--seed N] [--library DIR | --procedural] -o graph.json:
+// one room's A-PSSG (objects with affordances, physical and semantic edges, interaction zones, the chosen
+// assets; no poses yet) from the built-in room priors and the request text.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "cli/flags.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
+#include "scene/acquire.h"
 #include "scene/file_digest.h"
 #include "scene/planner.h"
 #include "scene/room_context.h"
@@ -29,6 +30,8 @@ struct PlanCommand {
   bool force = false;
   bool quiet = false;
   bool allow_invalid = false;
+  std::string library;
+  bool procedural = false;
   scene::PlannerOptions options;
 };
 
@@ -80,13 +83,22 @@ void Run(PlanCommand& command) {
   auto plan = planner.Plan({&*context, command.text, command.seed});
   if (!plan) return Fail(plan.error());
 
+  auto library = scene::OpenFurnishingLibrary(command.library, command.procedural);
+  if (!library) return Fail(library.error());
+  auto acquirer = scene::AssetAcquirer::Make(*library->library, {}, command.seed, command.text);
+  if (!acquirer) return Fail(acquirer.error());
+  auto assets = (*acquirer)->Acquire(*context, plan->objects);
+  if (!assets) return Fail(assets.error());
+
   auto digest = scene::FileSha256(command.layout);
   if (!digest) return Fail(digest.error());
   scene::SceneFile file =
       scene::PlanSceneFile({LayoutReference(command.layout, command.output), *digest}, build, context->name, *plan);
+  file.library = library->file;
   scene::ValidateOptions plan_rules;
   plan_rules.all_rooms = false;
-  auto findings = scene::ValidateScene(file, *layout, nullptr, plan_rules);
+  const scene::AssetLookup lookup = [&](std::string_view id) { return (*acquirer)->Find(id); };
+  auto findings = scene::ValidateScene(file, *layout, lookup, plan_rules);
   if (!findings.empty())
     return Fail("the planned graph breaks the scene rules (a bug; nothing written):\n" + scene::FormatFindings(findings));
   if (Status s = scene::WriteScene(file, command.output); !s) return Fail(s.error());
@@ -99,7 +111,10 @@ void Run(PlanCommand& command) {
               << sum.target_min << "-" << sum.target_max << "), " << sum.from_prompt << " from the request, "
               << plan->edges.size() << " semantic edges, floor objects cover " << FormatPercent(sum.floor_used, 1.0)
               << "; " << scene::PlanOutcomeName(sum.outcome) << "\n"
-              << "assets are not chosen yet: every object's \"asset\" is \"\"\n"
+              << "assets: " << assets->summary.distinct_assets << " distinct, " << assets->summary.library
+              << " from the library, " << assets->summary.procedural << " procedural ("
+              << assets->summary.fallbacks << " fallbacks), style " << (*acquirer)->style()
+              << (library->note.empty() ? "" : "; " + library->note) << "\n"
               << scene::PlanTable(*plan, context->name) << "wrote " << command.output << "\n";
   }
   SetExitCode(kExitOk);
@@ -113,10 +128,13 @@ Registration registration{70, [](CLI::App& app) {
       "plan",
       "Plan one room's A-PSSG: the objects the request names (with counts, containers, places and relations)\n"
       "plus the room type's priors, each with its affordances (V_con, V_pro, V_int), one physical edge\n"
-      "(parent + relation) and its interaction zone, and the semantic edges between them. Written as a scene\n"
-      "file (shared/design/SCENE.md) holding that room; no poses and no assets yet (\"asset\": \"\").\n"
-      "Deterministic for a seed. Exit status: 0 planned, 1 unreadable or unbuildable layout, 2 usage\n"
-      "(including a --room the layout does not have).");
+      "(parent + relation) and its interaction zone, and the semantic edges between them; then an asset for\n"
+      "every object: storage holding things from its procedural generator (exact shelves and compartments),\n"
+      "everything else ranked from the asset library and procedural offers together, a category the library\n"
+      "lacks from its generator (no library installed: procedural assets only). Written as a scene file\n"
+      "(shared/design/SCENE.md) holding that room; no poses yet (`villa furnish` places them).\n"
+      "Deterministic for a seed. Exit status: 0 planned, 1 unreadable or unbuildable layout or library,\n"
+      "2 usage (including a --room the layout does not have).");
   plan->add_option("layout", command->layout, "layout file (.json)")->required();
   plan->add_option("--room", command->room, "the room to plan, as the layout names it (living-room_0/0)")->required();
   plan->add_option("--text", command->text,
@@ -126,6 +144,10 @@ Registration registration{70, [](CLI::App& app) {
   plan->add_option("-o,--output", command->output, "the graph file to write (.json)")->required();
   plan->add_flag("--force", command->force, "overwrite an existing output file");
   plan->add_flag("--allow-invalid", command->allow_invalid, "plan even when the layout breaks the geometric rules");
+  plan->add_option("--library", command->library,
+                   "asset library folder (default: $VILLA_ASSETS, else ~/.local/share/villa/assets when installed, "
+                   "else procedural assets only)");
+  plan->add_flag("--procedural", command->procedural, "procedural assets only, whatever library is installed");
   plan->add_flag("-q,--quiet", command->quiet, "print nothing on success");
   plan->add_option("--floor-share", command->options.floor_share,
                    "share of the furnishable floor the priors' floor objects may cover")

@@ -729,7 +729,10 @@ SceneFile PlanSceneFile(const FileRef& layout, const BuildOptions& build, const 
 std::string PlanTable(const RoomPlan& plan, const std::string& room) {
   const std::string prefix = room + "/";
   auto local = [&](const std::string& id) { return id.rfind(prefix, 0) == 0 ? id.substr(prefix.size()) : id; };
-  TextTable table({"id", "category", "parent / relation", "affordances", "zone", "origin"});
+  const bool assets = std::any_of(plan.objects.begin(), plan.objects.end(), [](const SceneObject& o) { return !o.asset.empty(); });
+  std::vector<std::string> header{"id", "category", "parent / relation", "affordances", "zone", "origin"};
+  if (assets) header.push_back("asset");
+  TextTable table(header);
   for (const SceneObject& o : plan.objects) {
     std::string affordances;
     for (const std::string& a : AffordanceNames(o.affordances)) affordances += (affordances.empty() ? "" : " ") + a;
@@ -740,8 +743,10 @@ std::string PlanTable(const RoomPlan& plan, const std::string& room) {
     }
     std::string origin(OriginName(o.origin));
     for (const std::string& h : o.hints) origin += ", " + h;
-    table.AddRow({local(o.id), o.category, local(o.parent) + " / " + std::string(RelationName(o.relation)), affordances,
-                  zone, origin});
+    std::vector<std::string> row{local(o.id), o.category, local(o.parent) + " / " + std::string(RelationName(o.relation)),
+                                 affordances, zone, origin};
+    if (assets) row.push_back(o.asset);
+    table.AddRow(row);
   }
   std::string out = table.Render();
   if (!plan.edges.empty()) {

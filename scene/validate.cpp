@@ -129,13 +129,13 @@ class Checker {
     if (!(p.affordances & kProvider)) Add(o.id, "provider", "parent " + Quoted(p.id) + " is not V_pro");
     const AssetRecord* asset = Asset(p.asset);
     if (o.relation == Relation::kOnTop) {
-      if (asset && !o.surface) Add(o.id, "surface", "ontop " + Quoted(p.id) + " names no surface");
+      if (asset && o.pose && !o.surface) Add(o.id, "surface", "ontop " + Quoted(p.id) + " names no surface");
       if (asset && o.surface && *o.surface >= static_cast<int>(asset->support_surfaces.size()))
         Add(o.id, "surface", "surface " + std::to_string(*o.surface) + " but asset " + Quoted(p.asset) + " has " +
                                  std::to_string(asset->support_surfaces.size()));
     }
     if (o.relation == Relation::kInside) {
-      if (asset && !o.cavity) Add(o.id, "cavity", "inside " + Quoted(p.id) + " names no cavity");
+      if (asset && o.pose && !o.cavity) Add(o.id, "cavity", "inside " + Quoted(p.id) + " names no cavity");
       if (asset && o.cavity && *o.cavity >= static_cast<int>(asset->cavities.size()))
         Add(o.id, "cavity", "cavity " + std::to_string(*o.cavity) + " but asset " + Quoted(p.asset) + " has " +
                                 std::to_string(asset->cavities.size()));

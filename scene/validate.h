@@ -20,7 +20,8 @@
 //   zone            interaction zones only on V_int objects; exempt ids exist
 //   edge            semantic edges join two different objects of that room
 //   hint            hints are known words
-// Until an asset is chosen (asset ""), surface and cavity indices cannot be checked and may be absent.
+// Until an asset is chosen (asset ""), surface and cavity indices cannot be checked and may be absent; the
+// solver chooses them, so an object without a pose (a plan with assets) may leave them unnamed too.
 #include <functional>
 #include <string>
 #include <string_view>

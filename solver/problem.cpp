@@ -12,7 +12,8 @@ namespace villa::solver {
 namespace {
 
 constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip",  "open_passage",  "window_zone",
-                                              "staircase",  "stair_hole", "stair_arrival", "other"};
+                                              "staircase",  "stair_hole", "stair_arrival", "other",
+                                              "walkway"};
 constexpr std::string_view kRelationNames[] = {"ontop", "inside", "against_wall", "on_wall", "hanging"};
 constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named"};
 constexpr std::string_view kSemanticNames[] = {"face_to", "front_of", "behind", "left_of", "right_of",
@@ -63,6 +64,39 @@ int RoomProblem::Find(std::string_view id) const {
     if (objects[i].id == id) return static_cast<int>(i);
   }
   return -1;
+}
+
+OrientedBox StandingBox(const ProblemObject& object, const Pose& pose) {
+  const Vec3& s = object.asset.size;
+  OrientedBox b;
+  b.c = {pose.x, pose.y};
+  b.yaw = pose.yaw;
+  b.hx = 0.5 * s.x * pose.scale;
+  b.hy = 0.5 * s.y * pose.scale;
+  b.z0 = pose.z;
+  b.z1 = pose.z + s.z * pose.scale;
+  return b;
+}
+
+bool IsFloorCovering(const ProblemObject& object) {
+  return object.parent == "floor" && object.relation == Relation::kOnTop && object.asset.size.z <= 0.03;
+}
+
+std::string MeshOutsideAssetBox(const AssetRecord& asset, const AssetMesh& mesh) {
+  const Vec3& s = asset.size;
+  const Box3 b = mesh.Bounds();
+  const double lo[3] = {-0.5 * s.x, -0.5 * s.y, 0.0}, hi[3] = {0.5 * s.x, 0.5 * s.y, s.z};
+  const double mlo[3] = {b.min.x, b.min.y, b.min.z}, mhi[3] = {b.max.x, b.max.y, b.max.z};
+  for (int k = 0; k < 3; ++k) {
+    const double tolerance = std::max(0.01, 0.01 * (hi[k] - lo[k]));
+    if (mlo[k] < lo[k] - tolerance || mhi[k] > hi[k] + tolerance) {
+      std::ostringstream m;
+      m << "mesh reaches [" << mlo[k] << ", " << mhi[k] << "] along " << "xyz"[k] << ", outside the asset box [" << lo[k]
+        << ", " << hi[k] << "] of its size";
+      return m.str();
+    }
+  }
+  return "";
 }
 
 std::vector<WallEdge> WallsAlongFloor(const Ring& free_floor) {
@@ -120,20 +154,7 @@ Status RoomProblem::Check() const {
                   std::to_string(s.z) + "]");
     }
     if (!o.mesh || o.mesh->TriangleCount() == 0) return fail(at + ": has no mesh (the exact check needs one)");
-    // The optimiser's boxes are the record's size (origin at the bottom centre): a mesh reaching outside
-    // them would collide where the optimiser sees none.
-    const Box3 b = o.mesh->Bounds();
-    const double lo[3] = {-0.5 * s.x, -0.5 * s.y, 0.0}, hi[3] = {0.5 * s.x, 0.5 * s.y, s.z};
-    const double mlo[3] = {b.min.x, b.min.y, b.min.z}, mhi[3] = {b.max.x, b.max.y, b.max.z};
-    for (int k = 0; k < 3; ++k) {
-      const double tolerance = std::max(0.01, 0.01 * (hi[k] - lo[k]));
-      if (mlo[k] < lo[k] - tolerance || mhi[k] > hi[k] + tolerance) {
-        std::ostringstream m;
-        m << at << ": mesh reaches [" << mlo[k] << ", " << mhi[k] << "] along " << "xyz"[k] << ", outside the asset box ["
-          << lo[k] << ", " << hi[k] << "] of its size";
-        return fail(m.str());
-      }
-    }
+    if (std::string outside = MeshOutsideAssetBox(o.asset, *o.mesh); !outside.empty()) return fail(at + ": " + outside);
     if (!(o.scale_min > 0.49 && o.scale_min <= 1.0 && o.scale_max >= 1.0 && o.scale_max < 2.01)) {
       return fail(at + ": scale range [" + std::to_string(o.scale_min) + ", " + std::to_string(o.scale_max) +
                   "] must hold 1 within [0.5, 2]");

@@ -77,7 +77,7 @@ bool SolveOptions::IsValid(std::string* message) const {
 }
 
 struct RoomSolver::Impl {
-  const RoomProblem& problem;
+  RoomProblem problem;  // the solver's own copy: AddKeepOut extends it
   SolveOptions options;
   ExactCheckOptions check_options;
   RoomState state;
@@ -523,13 +523,27 @@ struct RoomSolver::Impl {
       if (A.priority != B.priority) return A.priority < B.priority ? a : b;
       return Volume(A, state.placements[a].pose.scale) <= Volume(B, state.placements[b].pose.scale) ? a : b;
     };
+    // Objects in trouble with the building (a wall, a door leaf or sweep, the stairs): a child there because
+    // its parent is there gives way only through its parent (books in a bookcase that stands in a door's
+    // sweep cannot leave it by moving along their shelf).
+    std::set<int> with_building;
+    for (const CollisionPair& pair : metrics.pairs)
+      if (pair.building) with_building.insert(state.Find(pair.a));
+    for (const auto& [a_id, b_id] : energy.overlaps)
+      if (state.Find(b_id) < 0) with_building.insert(state.Find(a_id));
+    auto carrier = [&](int i) {
+      int top = i;
+      for (int p = state.parent[i]; p >= 0; p = state.parent[p])
+        if (with_building.count(p)) top = p;
+      return top;
+    };
     for (const CollisionPair& pair : metrics.pairs) {
       const int a = state.Find(pair.a), b = pair.building ? -1 : state.Find(pair.b);
-      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : carrier(a));
     }
     for (const auto& [a_id, b_id] : energy.overlaps) {
       const int a = state.Find(a_id), b = state.Find(b_id);
-      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : a);
+      if (a >= 0) set.insert(b >= 0 ? lesser(a, b) : carrier(a));
     }
     for (size_t i = 0; i < state.objects.size(); ++i) {
       const ObjectCheck& c = metrics.per_object[i];
@@ -554,10 +568,21 @@ struct RoomSolver::Impl {
   int LeastImportant(int i) const {
     std::vector<int> set = {i};
     const std::string& id = state.objects[i].id;
+    bool with_objects = false;
     for (const CollisionPair& pair : metrics.pairs) {
       if (pair.building) continue;
       if (pair.a == id) set.push_back(state.Find(pair.b));
       if (pair.b == id) set.push_back(state.Find(pair.a));
+      with_objects = with_objects || pair.a == id || pair.b == id;
+    }
+    // In trouble with the building alone (a window's zone above the sill): what stands on it and rises
+    // above it is part of the conflict (a counter under a window is low enough once the bottle on it goes).
+    if (!with_objects) {
+      const double top = state.placements[i].pose.z + state.objects[i].asset.size.z * state.placements[i].pose.scale;
+      for (int c : state.children[i]) {
+        const double child_top = state.placements[c].pose.z + state.objects[c].asset.size.z * state.placements[c].pose.scale;
+        if (state.objects[c].relation == Relation::kOnTop && child_top > top + 1e-6) set.push_back(c);
+      }
     }
     const int p = state.parent[i];
     if (p >= 0) {
@@ -617,6 +642,17 @@ struct RoomSolver::Impl {
         a.id = state.objects[victim].id;
         a.reason = victim == i ? "no free slot even at its smallest scale: remove it (least important of its conflict)"
                                : "no room for both: remove the least important object of the conflict with " + id;
+        if (victim == i) ++n;  // nothing is left to try for it
+        return a;
+      }
+      if (n == 3) {
+        // Its conflict gave way and it is still in trouble (a thing on a surface its shrunk parent no longer
+        // holds): it goes itself, so the room ends physically valid.
+        ++n;
+        Action a;
+        a.kind = ActionKind::kRemoveEntity;
+        a.id = id;
+        a.reason = "still colliding, floating or out of bounds after its conflict gave way: remove it";
         return a;
       }
     }
@@ -737,6 +773,28 @@ void RoomSolver::RunAgent() {
   if (!im.initialised) return;
   im.RunAgent();
   im.summary.seconds = Since(im.start);
+}
+
+const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
+
+Status RoomSolver::AddKeepOuts(const std::vector<KeepOut>& zones) {
+  Impl& im = *impl_;
+  if (!im.initialised) return Error{"room " + im.problem.room + ": the solver is not initialised"};
+  const size_t before = im.problem.keep_outs.size();
+  im.problem.keep_outs.insert(im.problem.keep_outs.end(), zones.begin(), zones.end());
+  if (Status s = im.problem.Check(); !s.ok()) {
+    im.problem.keep_outs.resize(before);
+    return s;
+  }
+  // The arrangement is judged anew against the zones: every remedy may be tried again on what stands in
+  // them, and the best state so far is the present one (the old best never saw them).
+  im.tries.clear();
+  im.semantic_tried.clear();
+  im.have_best = false;
+  im.Check();
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  return Status::Ok();
 }
 
 RoomSolution RoomSolver::Solution() const {

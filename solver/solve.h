@@ -71,7 +71,8 @@ Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& o
 
 // The same solver as a session a critic can drive: Initialise() places everything, Apply() takes one
 // action through the path the rule agent uses (repaired or refused when it would break a hard
-// constraint), RunAgent() lets the rule agent finish. The problem must outlive the solver.
+// constraint), RunAgent() lets the rule agent finish. The solver keeps its own copy of the problem;
+// AddKeepOuts() extends it (the reachability feedback's walkways, solver/reach_feedback.h).
 class RoomSolver {
  public:
   RoomSolver(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check = {});
@@ -83,6 +84,11 @@ class RoomSolver {
   Status Initialise();
   ActionResult Apply(const Action& action);
   void RunAgent();
+  // Adds zones no object may enter (checked like the problem's own), checks the arrangement against them
+  // and lets the agent's remedies (move, shrink, remove) apply anew to what stands in them; call RunAgent()
+  // next. An error (nothing changed) when a zone is malformed or the solver is not initialised.
+  Status AddKeepOuts(const std::vector<KeepOut>& zones);
+  const RoomProblem& Problem() const;
   RoomSolution Solution() const;
 
  private:

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "building/export.h"
+#include "building/glb_writer.h"
 #include "test_support.h"
 
 using namespace villa;
@@ -30,7 +31,11 @@ TEST_CASE("the .glb re-imports with a node per level, room and element, and the 
   REQUIRE(ExportBuilding(b, out, MeshFormat::kGlb));
   auto scene = ReadSceneInfo(out);
   REQUIRE(scene);
-  CHECK(scene->meshes.size() == b.parts.size());
+  // Every part's triangles, no more, no fewer (a slab's edges are a second primitive of its mesh).
+  size_t triangles = 0, expected = 0;
+  for (const SceneMeshInfo& m : scene->meshes) triangles += m.triangles;
+  for (const MeshPart& p : b.parts) expected += p.mesh.triangles.size();
+  CHECK(triangles == expected);
   for (int level = 0; level < 3; ++level) {
     const SceneNodeInfo* node = scene->Find("level_" + std::to_string(level));
     REQUIRE(node);
@@ -40,7 +45,7 @@ TEST_CASE("the .glb re-imports with a node per level, room and element, and the 
     const SceneNodeInfo* node = scene->Find(r.name());
     REQUIRE(node);
     CHECK(node->path == "villa/level_" + std::to_string(r.level) + "/" + r.name());
-    CHECK(node->meshes.size() == 1);
+    CHECK(node->meshes.size() == 2);  // top and bottom in the room's colour, edges in the facade's
     // Room metadata written as glTF extras comes back as node metadata.
     CHECK(node->metadata.at("category") == std::string(CategoryName(r.category)));
     CHECK(std::stod(node->metadata.at("area_m2")) == Approx(Area(r.polygon)).margin(0.01));
@@ -79,7 +84,7 @@ TEST_CASE("the .glb re-imports with a node per level, room and element, and the 
   CHECK(materials["glass"].alpha < 1.0);
   CHECK(materials["glass"].alpha_mode == "BLEND");
   REQUIRE(materials.count("floor-kitchen"));
-  CHECK(materials["floor-kitchen"].color.r == Approx(CategoryColor(Category::kKitchen).r).margin(1e-6));
+  CHECK(materials["floor-kitchen"].color.r == Approx(gltf::SrgbToLinear(CategoryColor(Category::kKitchen).r)).margin(1e-6));
   CHECK(materials["exterior-wall"].alpha == Approx(1.0));
   fs::remove_all(dir);
 }
@@ -133,4 +138,88 @@ TEST_CASE("export errors name the file") {
   CHECK_THAT(status.error(), Catch::Contains("/nonexistent-dir/villa.glb"));
   CHECK(ParseMeshFormat("glb") == MeshFormat::kGlb);
   CHECK_FALSE(ParseMeshFormat("fbx"));
+}
+
+namespace {
+
+nlohmann::json GlbJson(const std::string& g) {
+  uint32_t json_len;
+  std::memcpy(&json_len, g.data() + 12, 4);
+  return nlohmann::json::parse(g.substr(20, json_len));
+}
+
+}  // namespace
+
+TEST_CASE("issue 18: base colours are the palette's values made linear, as glTF defines them") {
+  CHECK(gltf::SrgbToLinear(0.0) == 0.0);
+  CHECK(gltf::SrgbToLinear(1.0) == Approx(1.0));
+  CHECK(gltf::SrgbToLinear(0.5) == Approx(0.214041).margin(1e-6));
+  CHECK(gltf::SrgbToLinear(0.04) == Approx(0.04 / 12.92));
+  for (double c : {0.0, 0.02, 0.1, 0.37, 0.5, 0.8, 1.0}) CHECK(gltf::LinearToSrgb(gltf::SrgbToLinear(c)) == Approx(c).margin(1e-12));
+
+  const BuildingMesh& b = ThreeFloorBuilding();
+  auto bytes = BuildingToGlb(b);
+  REQUIRE(bytes);
+  auto json = GlbJson(*bytes);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& m : json["materials"]) by_name[m["name"]] = m;
+  // Every part's material: the factor is the linear value of the sRGB colour in the shared table.
+  for (const MeshPart& part : b.parts) {
+    const PartMaterial m = MaterialOf(part);
+    INFO(m.name);
+    REQUIRE(by_name.count(m.name));
+    const auto& f = by_name[m.name]["pbrMetallicRoughness"]["baseColorFactor"];
+    CHECK(f[0].get<double>() == Approx(gltf::SrgbToLinear(m.color.r)).margin(1e-6));
+    CHECK(f[1].get<double>() == Approx(gltf::SrgbToLinear(m.color.g)).margin(1e-6));
+    CHECK(f[2].get<double>() == Approx(gltf::SrgbToLinear(m.color.b)).margin(1e-6));
+    CHECK(f[3].get<double>() == Approx(m.alpha));
+  }
+  // The roof's brown (111, 73, 61 in the preview) is written dark, not the pale sRGB value.
+  const auto& roof = by_name["roof"]["pbrMetallicRoughness"]["baseColorFactor"];
+  CHECK(roof[0].get<double>() < 0.3);
+}
+
+TEST_CASE("issue 18: no slab edge carries a room colour, every named node carries its exact name in extras") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  auto bytes = BuildingToGlb(b);
+  REQUIRE(bytes);
+  auto json = GlbJson(*bytes);
+  // Every node with a name has it, byte for byte, in extras.name ("kitchen_0/0", "name:2").
+  int named = 0;
+  for (const auto& node : json["nodes"]) {
+    if (!node.contains("name")) continue;
+    ++named;
+    INFO(node["name"]);
+    REQUIRE(node.contains("extras"));
+    CHECK(node["extras"]["name"] == node["name"]);
+  }
+  CHECK(named == static_cast<int>(json["nodes"].size()));
+  CHECK(named > static_cast<int>(b.parts.size()));  // parts, groups, levels and the root
+
+  // Re-read through assimp: every steep triangle of a floor or terrace slab is in the exterior wall's
+  // material; the room colour stays on the flat faces.
+  fs::path dir = TempDir("edges");
+  REQUIRE(ExportBuilding(b, dir / "villa.glb", MeshFormat::kGlb));
+  auto scene = ReadSceneInfo(dir / "villa.glb");
+  REQUIRE(scene);
+  int steep = 0;
+  for (const MeshPart& part : b.parts) {
+    if (part.kind != PartKind::kFloor) continue;
+    const SceneNodeInfo* node = scene->Find(part.name);
+    REQUIRE(node);
+    for (int m : node->meshes) {
+      const SceneMeshInfo& mesh = scene->meshes[m];
+      const std::string& material = scene->materials[mesh.material].name;
+      for (const auto& t : mesh.mesh.triangles) {
+        // In the file's +Y-up frame "steep" means a small y component of the normal.
+        const Vec3 n = Cross(mesh.mesh.vertices[t[1]] - mesh.mesh.vertices[t[0]], mesh.mesh.vertices[t[2]] - mesh.mesh.vertices[t[0]]);
+        const bool is_steep = std::abs(n.y) < 0.5 * Norm(n);
+        steep += is_steep;
+        INFO(part.name << " " << material);
+        CHECK(material == (is_steep ? std::string("exterior-wall") : MaterialOf(part).name));
+      }
+    }
+  }
+  CHECK(steep > 0);
+  fs::remove_all(dir);
 }

@@ -6,10 +6,12 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "assets/procedural.h"
 #include "layout/layout_io.h"
 #include "scene/file_digest.h"
 #include "scene/scene.h"
 #include "scene/validate.h"
+#include "villa_cli.h"
 
 using namespace villa;
 using namespace villa::scene;
@@ -17,19 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
-Run Villa(const std::string& args) {
-  fs::path log = fs::temp_directory_path() / ("villa_scene_cli_" + std::to_string(::getpid()) + ".log");
-  int status = std::system((std::string(VILLA_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  Run run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, std::string((std::istreambuf_iterator<char>(in)), {})};
-  fs::remove(log);
-  return run;
-}
+using Run = testing::CliRun;
+Run Villa(const std::string& args) { return testing::RunVilla(args); }
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
@@ -49,13 +40,13 @@ const std::string kExample = std::string(VILLA_SOURCE_DIR) + "/examples/l-shaped
 TEST_CASE("villa scene plan writes a plan that reads back, validates and names its layout", "[scene][cli]") {
   TempDir dir;
   fs::path out = dir.path / "graph.json";
-  Run run = Villa("scene plan " + kExample + " --room living-room_0/0 --seed 4 --text " +
+  Run run = Villa("scene plan " + kExample + " --room living-room_0/0 --seed 4 --procedural --text " +
                   Quote("two armchairs and bookshelves full of books") + " -o " + out.string());
   INFO(run.out);
   REQUIRE(run.status == 0);
   CHECK(run.out.find("living-room_0/0 (living-room, 49.0 m2") != std::string::npos);
   CHECK(run.out.find("armchair-1") != std::string::npos);
-  CHECK(run.out.find("assets are not chosen yet") != std::string::npos);
+  CHECK(run.out.find("procedural assets only") != std::string::npos);
   auto scene = ReadScene(out);
   REQUIRE(scene.ok());
   REQUIRE(scene->rooms.size() == 1);
@@ -64,10 +55,17 @@ TEST_CASE("villa scene plan writes a plan that reads back, validates and names i
   CHECK(scene->rooms[0].plan->seed == 4);
   CHECK(scene->rooms[0].plan->text == "two armchairs and bookshelves full of books");
   CHECK(scene->objects.size() >= 22);
+  // Every object has an asset (procedural here: --procedural), whose size it carries; no poses yet.
   for (const SceneObject& o : scene->objects) {
-    CHECK(o.asset.empty());
+    INFO(o.id);
+    REQUIRE(o.asset.rfind("proc:", 0) == 0);
+    auto made = MakeProceduralAsset(o.asset);
+    REQUIRE(made.ok());
+    CHECK(made->record.category == o.category);
+    CHECK(o.size == made->record.size);
     CHECK_FALSE(o.pose);
   }
+  CHECK_FALSE(scene->library);
   // The layout by a path relative to the plan's folder, with its hash.
   CHECK(fs::weakly_canonical(dir.path / scene->layout.file) == fs::weakly_canonical(kExample));
   CHECK(scene->layout.sha256 == *FileSha256(kExample));
@@ -76,10 +74,18 @@ TEST_CASE("villa scene plan writes a plan that reads back, validates and names i
   ValidateOptions plan;
   plan.all_rooms = false;
   CHECK(ValidateScene(*scene, *layout, nullptr, plan).empty());
+  std::vector<AssetRecord> records;
+  for (const SceneObject& o : scene->objects) records.push_back(MakeProceduralAsset(o.asset)->record);
+  const AssetLookup lookup = [&](std::string_view id) -> const AssetRecord* {
+    for (const AssetRecord& r : records)
+      if (r.id == id) return &r;
+    return nullptr;
+  };
+  CHECK(ValidateScene(*scene, *layout, lookup, plan).empty());
 
   // The same seed writes the same bytes.
   fs::path again = dir.path / "again.json";
-  REQUIRE(Villa("scene plan " + kExample + " --room living-room_0/0 --seed 4 --text " +
+  REQUIRE(Villa("scene plan " + kExample + " --room living-room_0/0 --seed 4 --procedural --text " +
                 Quote("two armchairs and bookshelves full of books") + " -q -o " + again.string())
               .status == 0);
   std::ifstream a(out), b(again);
@@ -132,6 +138,14 @@ TEST_CASE("villa scene plan: usage errors exit 2, bad layouts exit 1, nothing is
   auto written = ReadScene(other);
   REQUIRE(written.ok());
   CHECK(written->rooms[0].plan->text.find("\xef\xbf\xbd") != std::string::npos);
+
+  // A --library that holds no library is a failure naming the folder; nothing is written.
+  fs::path third = dir.path / "third.json";
+  Run no_library = Villa("scene plan " + kExample + " --room living-room_0/0 --library " + (dir.path / "empty").string() +
+                         " -o " + third.string());
+  CHECK(no_library.status == 1);
+  CHECK(no_library.out.find((dir.path / "empty").string()) != std::string::npos);
+  CHECK_FALSE(fs::exists(third));
 
   Run help = Villa("scene plan --help");
   CHECK(help.status == 0);

@@ -123,11 +123,17 @@ TEST_CASE("the validator catches each broken rule and names the object", "[scene
       {"child on another level", [](SceneFile& s) { s.objects[3].level = 1; }, room + "table-lamp-0", "level"},
       {"parent not V_pro", [](SceneFile& s) { s.objects[2].affordances = kConsumer; }, room + "table-lamp-0", "provider"},
       {"cavity beyond the asset's", [](SceneFile& s) { s.objects[1].cavity = 2; }, room + "books-0", "cavity"},
-      {"inside without a cavity once the asset is known", [](SceneFile& s) { s.objects[1].cavity.reset(); }, room + "books-0", "cavity"},
-      {"ontop without a surface once the asset is known",
+      {"inside without a cavity once posed on a known asset",
+       [](SceneFile& s) {
+         s.objects[1].cavity.reset();
+         s.objects[1].pose = Pose{0.5, 0.5, 0.2, 0.0};
+       },
+       room + "books-0", "cavity"},
+      {"ontop without a surface once posed on a known asset",
        [](SceneFile& s) {
          s.objects[1].relation = Relation::kOnTop;
          s.objects[1].cavity.reset();
+         s.objects[1].pose = Pose{0.5, 0.5, 1.975, 0.0};
        },
        room + "books-0", "surface"},
       {"surface beyond the asset's",
@@ -184,4 +190,15 @@ TEST_CASE("a plan may list some rooms and leave surfaces and cavities to the ass
   // The same as a full scene misses rooms.
   std::vector<std::string> rules = Rules(ValidateScene(scene, layout, nullptr));
   CHECK(std::count(rules.begin(), rules.end(), std::string("rooms")) == static_cast<long>(layout.rooms.size() - 1));
+}
+
+TEST_CASE("a plan with assets chosen leaves surfaces and cavities to the solver until it poses the objects", "[scene][validate]") {
+  Layout layout = HouseLayout();
+  SceneFile scene = ValidScene(layout);
+  scene.objects[1].cavity.reset();  // the bookcase's asset is known, the books not yet placed
+  const AssetRecord bookcase = Bookcase();
+  AssetLookup lookup = [&](std::string_view id) -> const AssetRecord* { return id == bookcase.id ? &bookcase : nullptr; };
+  CHECK(!Has(ValidateScene(scene, layout, lookup), "living-room_0/0/books-0", "cavity"));
+  scene.objects[1].pose = Pose{0.5, 0.5, 0.2, 0.0};
+  CHECK(Has(ValidateScene(scene, layout, lookup), "living-room_0/0/books-0", "cavity"));
 }

@@ -1,0 +1,217 @@
+// villa_bench_furnish: `villa furnish` end to end on the bundled examples and on synthesized villas (the
+// layouts `villa synth --count N --seed S` writes): per room type and room shape, the exact metrics (CR, FR,
+// OBR, CSR), NO, outcomes and the seconds a room (thread CPU time: rooms run one at a time here), seconds
+// by object count, the mean NO over the five rich room types, every room that did not end clean with its
+// reason, and the ratio to the paper's ~15 minutes a room. `make bench` runs it with procedural assets;
+//   villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--verbose]
+// --library furnishes with an imported asset library instead (villa assets import --library DIR).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "assets/procedural.h"
+#include "layout/geometry.h"
+#include "layout/layout_io.h"
+#include "partitioner/dataset.h"
+#include "scene/acquire.h"
+#include "solver/furnish.h"
+#include "util/text_table.h"
+
+using namespace villa;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPaperSecondsPerRoom = 15.0 * 60.0;
+
+struct Villa {
+  std::string name;
+  Layout layout;
+};
+
+struct Tally {
+  int rooms = 0, converged = 0, clean = 0, objects = 0, colliding = 0, floating = 0, consumers = 0, out = 0, inside = 0,
+      contained = 0, removed = 0;
+  std::vector<double> seconds;
+  void Add(const solver::RoomReport& r) {
+    const solver::ExactMetrics& m = r.solve->metrics;
+    ++rooms;
+    converged += r.solve->outcome == solver::Outcome::kConverged;
+    clean += m.Clean();
+    objects += m.objects, colliding += m.colliding, floating += m.floating, consumers += m.consumers;
+    out += m.out_of_bounds, inside += m.inside_edges, contained += m.contained;
+    removed += static_cast<int>(r.solve->removed.size());
+    seconds.push_back(r.cpu_seconds);
+  }
+  double Mean() const {
+    double s = 0;
+    for (double x : seconds) s += x;
+    return seconds.empty() ? 0.0 : s / seconds.size();
+  }
+  double Quantile(double q) const {
+    if (seconds.empty()) return 0.0;
+    std::vector<double> v = seconds;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))];
+  }
+  std::vector<std::string> Row(const std::string& label) const {
+    auto pct = [](double n, double d) { return FormatFixed(d > 0 ? 100.0 * n / d : 0.0, 1); };
+    return {label, std::to_string(rooms), FormatFixed(rooms ? double(objects) / rooms : 0.0, 1), pct(colliding, objects),
+            pct(floating, consumers), pct(out, objects), inside ? pct(contained, inside) : "-", pct(converged, rooms),
+            std::to_string(removed), FormatFixed(Mean(), 3), FormatFixed(Quantile(0.95), 3), FormatFixed(Quantile(1.0), 3)};
+  }
+};
+const std::vector<std::string> kHeader{"", "rooms", "NO", "CR %", "FR %", "OBR %", "CSR %", "conv %", "removed", "s mean", "s p95", "s max"};
+
+// Rectangle (4 right angles), L (non-convex, axis-aligned), angled (an edge off the axes).
+std::string ShapeOf(const Ring& polygon) {
+  const Ring ring = WithoutCollinearCorners(polygon, 1e-6);
+  bool angled = false;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+    angled = angled || (std::abs(a.x - b.x) > 1e-6 && std::abs(a.y - b.y) > 1e-6);
+  }
+  if (angled) return "angled";
+  return IsConvex(ring) ? "rectangle" : "L / non-convex";
+}
+
+std::vector<Villa> Examples() {
+  std::vector<Villa> out;
+  for (const char* name : {"l-shaped-house", "two-floor-house", "three-floor-villa", "u-shaped-bungalow"}) {
+    auto layout = LoadLayout(std::string(VILLA_SOURCE_DIR) + "/examples/" + name + ".json");
+    if (!layout.ok()) {
+      std::fprintf(stderr, "%s\n", layout.error().c_str());
+      std::exit(1);
+    }
+    out.push_back({std::string("examples/") + name, *layout});
+  }
+  return out;
+}
+
+std::vector<Villa> Synthesized(uint64_t count, uint64_t seed) {
+  SynthOptions options;
+  options.count = count;
+  options.seed = seed;
+  std::vector<Villa> out;
+  std::vector<std::string> failures;
+  SynthesizeShard(
+      options,
+      [&](const std::string& line) {
+        const Json record = Json::parse(line);
+        auto layout = LayoutFromJson(record["layout"], record["id"].get<std::string>());
+        if (layout.ok()) out.push_back({record["id"].get<std::string>(), *layout});
+      },
+      [](std::size_t) {}, &failures);
+  for (const std::string& f : failures) std::fprintf(stderr, "synth: %s\n", f.c_str());
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  uint64_t villas = 50, seed = 7;
+  std::string library_dir;
+  bool verbose = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--villas" && i + 1 < argc) villas = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--library" && i + 1 < argc) library_dir = argv[++i];
+    else if (a == "--verbose") verbose = true;
+    else {
+      std::fprintf(stderr, "usage: villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--verbose]\n");
+      return 2;
+    }
+  }
+  auto library = scene::OpenFurnishingLibrary(library_dir, library_dir.empty());
+  if (!library.ok()) {
+    std::fprintf(stderr, "%s\n", library.error().c_str());
+    return 1;
+  }
+  std::printf("furnish: the 4 examples and %llu villas of `villa synth --count %llu --seed %llu`, assets: %s\n",
+              static_cast<unsigned long long>(villas), static_cast<unsigned long long>(villas),
+              static_cast<unsigned long long>(seed),
+              library_dir.empty() ? "procedural only" : ("library " + library_dir + " (" +
+                                                         std::to_string(library->library->records().size()) + " records)").c_str());
+  std::vector<Villa> all = Examples();
+  for (Villa& v : Synthesized(villas, seed)) all.push_back(std::move(v));
+
+  std::map<std::string, Tally> by_type, by_shape, by_count;
+  Tally total, rich, small_bath;
+  int library_assets = 0, procedural_assets = 0, fallbacks = 0;
+  std::vector<std::string> failures;
+  double wall = 0.0;
+  for (const Villa& v : all) {
+    solver::FurnishOptions options;
+    options.jobs = 1;
+    options.seed = seed;
+    options.check_reach = false;  // the solver alone; bench/reach.cpp measures reachability and its feedback
+    auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
+    if (!furnished.ok()) {
+      std::fprintf(stderr, "%s: %s\n", v.name.c_str(), furnished.error().c_str());
+      return 1;
+    }
+    wall += furnished->summary.seconds;
+    library_assets += furnished->summary.library_assets;
+    procedural_assets += furnished->summary.procedural_assets;
+    for (const solver::RoomReport& r : furnished->rooms) {
+      for (const scene::AcquiredAsset& a : r.assets) fallbacks += a.rule == scene::AcquireRule::kFallback;
+      if (!r.solve) continue;  // nothing to place (a staircase room)
+      const std::string type(CategoryName(r.category));
+      const Room& room = v.layout.rooms[v.layout.FindRoom(r.room)];
+      by_type[type].Add(r);
+      by_shape[ShapeOf(room.polygon)].Add(r);
+      const int n = r.solve->metrics.objects;
+      by_count[n < 10 ? "0-9" : n < 20 ? "10-19" : n < 30 ? "20-29" : "30+"].Add(r);
+      total.Add(r);
+      if (r.category == Category::kLivingRoom || r.category == Category::kDiningRoom || r.category == Category::kBedroom ||
+          r.category == Category::kKitchen || r.category == Category::kChildrenRoom)
+        rich.Add(r);
+      if (r.category == Category::kBathroom && r.area < 7.0) small_bath.Add(r);
+      const solver::ExactMetrics& m = r.solve->metrics;
+      if (!m.Clean() || !r.solve->removed.empty() || verbose) {
+        std::string line = v.name + " " + r.room + " (" + FormatFixed(r.area, 1) + " m2, " + ShapeOf(room.polygon) + "): " +
+                           r.outcome + ", " + std::to_string(m.objects) + " objects";
+        if (!m.Clean())
+          line += ", NOT CLEAN: colliding " + std::to_string(m.colliding) + ", floating " + std::to_string(m.floating) +
+                  ", out " + std::to_string(m.out_of_bounds) + ", contained " + std::to_string(m.contained) + "/" +
+                  std::to_string(m.inside_edges);
+        if (!r.solve->removed.empty()) {
+          line += ", removed";
+          for (const std::string& id : r.solve->removed) {
+            line += ' ';
+            line.append(id, r.room.size() + 1);  // the id without its room
+          }
+        }
+        line += " (" + r.reason + ")";
+        failures.push_back(line);
+      }
+    }
+  }
+
+  TextTable types(kHeader);
+  for (const auto& [name, t] : by_type) types.AddRow(t.Row(name));
+  types.AddRow(total.Row("all"));
+  std::printf("%zu villas, %d rooms with objects; seconds are thread CPU seconds a room (plan + assets + solve)\n\nby room type:\n%s",
+              all.size(), total.rooms, types.Render().c_str());
+  TextTable shapes(kHeader);
+  for (const auto& [name, t] : by_shape) shapes.AddRow(t.Row(name));
+  shapes.AddRow(small_bath.Row("bathrooms < 7 m2"));
+  std::printf("\nby room shape:\n%s", shapes.Render().c_str());
+  TextTable counts(kHeader);
+  for (const auto& [name, t] : by_count) counts.AddRow(t.Row(name + " objects"));
+  std::printf("\nby object count:\n%s", counts.Render().c_str());
+  std::printf("\nmean NO over living, dining, bed, kitchen and children's rooms: %.1f (%d rooms)\n",
+              rich.rooms ? double(rich.objects) / rich.rooms : 0.0, rich.rooms);
+  std::printf("assets: %d objects from the library, %d procedural (%d fallbacks)\n", library_assets, procedural_assets, fallbacks);
+  std::printf("mean %.3f s a room, %.0fx faster than the paper's ~15 min a room; %.1f s wall for all villas\n", total.Mean(),
+              total.Mean() > 0 ? kPaperSecondsPerRoom / total.Mean() : 0.0, wall);
+  std::printf("\nrooms not clean or with objects removed (%zu):\n", failures.size());
+  for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
+  return 0;
+}

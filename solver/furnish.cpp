@@ -1,0 +1,820 @@
+#include "solver/furnish.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <set>
+#include <thread>
+
+#include <time.h>
+
+#include "building/export.h"
+#include "building/view_scene.h"
+#include "layout/layout_io.h"
+#include "layout/validate.h"
+#include "scene/file_digest.h"
+#include "scene/random.h"
+#include "scene/validate.h"
+#include "solver/scene_problem.h"
+#include "util/atomic_file.h"
+
+namespace villa::solver {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+// CPU time of the calling thread, s.
+double ThreadCpuSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+double Round4(double v) {
+  const double r = std::round(v * 1e4) / 1e4;
+  return r == 0.0 ? 0.0 : r;
+}
+double Round3(double v) { return std::round(v * 1e3) / 1e3; }
+
+constexpr const char* kSceneFile = "scene.json";
+constexpr const char* kGlbFile = "furnished.glb";
+constexpr const char* kReportFile = "report.json";
+constexpr const char* kCreditsFile = "CREDITS";
+constexpr const char* kPlanPicture = "plan.png";
+
+// What one room's worker hands back.
+struct RoomResult {
+  RoomReport report;
+  scene::RoomEntry entry;
+  std::vector<scene::SceneObject> objects;
+  std::string error;  // set when the room could not be furnished for a reason that is not an outcome
+  // A solved room keeps its solver for the reachability feedback, with what mapping its solution back needs.
+  std::unique_ptr<RoomSolver> solver;
+  std::vector<scene::SceneObject> planned;
+  std::vector<scene::SemanticEdge> planned_edges;
+  std::vector<std::string> dropped_ids;
+};
+
+scene::Metrics RoomMetrics(const ExactMetrics& m) {
+  return {{{"CR", Round4(m.cr)}, {"FR", Round4(m.fr)}, {"OBR", Round4(m.obr)}, {"CSR", Round4(m.csr)}, {"NO", double(m.objects)}}};
+}
+
+// The scene's view of a solved room from its solver's present state: the posed objects, the solve record
+// and metrics, the report's outcome, and the plan's edges between objects still there. Called after the
+// solve and again after the reachability feedback changed the room.
+void TakeSolution(RoomResult& out) {
+  const RoomSolution solution = out.solver->Solution();
+  const SolveSummary& s = solution.summary;
+  out.objects = SolvedSceneObjects(out.solver->Problem(), solution, out.planned);
+  scene::RoomSolve record;
+  record.outcome = *scene::ParseSolveOutcome(OutcomeName(s.outcome));
+  record.iterations = s.iterations;
+  record.energy = s.energy.total;
+  record.removed = out.dropped_ids;
+  record.removed.insert(record.removed.end(), s.removed.begin(), s.removed.end());
+  record.actions = Json::array();
+  for (const ActionResult& a : s.actions) record.actions.push_back(ActionResultToJson(a));
+  record.note = s.reason;
+  out.entry.solve = record;
+  out.entry.metrics = RoomMetrics(s.metrics);
+  out.report.outcome = std::string(OutcomeName(s.outcome));
+  out.report.reason = s.reason;
+  out.report.solve = s;
+  std::set<std::string> kept;
+  for (const scene::SceneObject& o : out.objects) kept.insert(o.id);
+  out.entry.edges_sem.clear();
+  for (const scene::SemanticEdge& e : out.planned_edges)
+    if (kept.count(e.source) && kept.count(e.target)) out.entry.edges_sem.push_back(e);
+  out.report.objects = static_cast<int>(out.objects.size());
+}
+
+// One room: plan, acquire, map, solve, and the scene's view of the result.
+RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& context, bool asked,
+                       const scene::GraphPlanner& planner, const FurnishOptions& options) {
+  RoomResult out;
+  RoomReport& report = out.report;
+  report.room = context.name;
+  report.category = context.category;
+  report.level = context.level;
+  report.area = context.area;
+  report.furnishable_area = context.furnishable_area;
+  report.asked = asked;
+  out.entry.name = context.name;
+  const auto start = Clock::now();
+  const double cpu_start = ThreadCpuSeconds();
+  auto settle = [&](scene::SolveOutcome outcome, const std::string& reason) {
+    out.entry.solve = scene::RoomSolve{outcome, 0, 0.0, {}, Json::array(), reason};
+    report.outcome = std::string(scene::SolveOutcomeName(outcome));
+    report.reason = reason;
+  };
+  if (!asked) {
+    settle(scene::SolveOutcome::kConverged, "not asked for (the run named other rooms)");
+    return out;
+  }
+
+  auto t = Clock::now();
+  auto plan = planner.Plan({&context, options.text, options.seed});
+  if (!plan.ok()) {
+    out.error = context.name + ": " + plan.error();
+    return out;
+  }
+  report.seconds_plan = Since(t);
+  report.plan = plan->summary;
+  report.plan_notes = plan->record.notes;
+  out.entry.plan = plan->record;
+
+  t = Clock::now();
+  auto assets = villa.assets->Acquire(context, plan->objects);
+  if (!assets.ok()) {
+    out.error = context.name + ": " + assets.error();
+    return out;
+  }
+  report.seconds_acquire = Since(t);
+  report.assets = assets->choices;
+  report.acquire = assets->summary;
+
+  const AssetResolver resolve = [&](const std::string& id) -> Result<std::pair<AssetRecord, std::shared_ptr<const AssetMesh>>> {
+    const AssetRecord* record = villa.assets->Find(id);
+    if (!record) return Error{"asset " + id + " is not in the library"};
+    auto mesh = villa.library->Mesh(id);
+    if (!mesh.ok()) return Error{mesh.error()};
+    return std::make_pair(*record, *mesh);
+  };
+  auto mapped = RoomProblemOf(context, villa.building, plan->objects, plan->edges, resolve);
+  if (!mapped.ok()) {
+    out.error = context.name + ": " + mapped.error();
+    return out;
+  }
+  report.dropped = mapped->dropped;
+  report.notes = mapped->notes;
+  std::vector<std::string> dropped_ids;
+  for (const std::string& d : mapped->dropped) dropped_ids.push_back(d.substr(0, d.find(": ")));
+
+  if (mapped->problem.free_floor.size() < 3 && !mapped->problem.objects.empty()) {
+    settle(scene::SolveOutcome::kInfeasible, "the room has no free floor inside its walls: nothing placed");
+    out.entry.solve->removed = dropped_ids;
+    for (const ProblemObject& o : mapped->problem.objects) out.entry.solve->removed.push_back(o.id);
+  } else if (mapped->problem.objects.empty()) {
+    std::string why = "nothing to place";
+    if (!plan->record.notes.empty()) why += ": " + plan->record.notes.front();
+    settle(scene::SolveOutcome::kConverged, why);
+    out.entry.solve->removed = dropped_ids;
+  } else {
+    SolveOptions solve = options.solve;
+    solve.seed = scene::SplitMix64(options.seed ^ scene::NameHash(context.name)).Next();
+    t = Clock::now();
+    out.solver = std::make_unique<RoomSolver>(mapped->problem, solve, options.check);
+    if (Status s = out.solver->Initialise(); !s.ok()) {
+      out.error = context.name + ": " + s.error();
+      return out;
+    }
+    out.solver->RunAgent();
+    report.seconds_solve = Since(t);
+    out.planned = plan->objects;
+    out.planned_edges = plan->edges;
+    out.dropped_ids = dropped_ids;
+    TakeSolution(out);
+  }
+  report.seconds = Since(start);
+  report.cpu_seconds = ThreadCpuSeconds() - cpu_start;
+  return out;
+}
+
+// The parts of a path walked on each level (its points on a stair's way, level -1, are left out).
+std::vector<ReachFigures::Path> PathPieces(const ReachPath& path) {
+  std::vector<ReachFigures::Path> out;
+  ReachFigures::Path piece;
+  piece.level = -1;
+  auto close = [&] {
+    if (piece.points.size() >= 2) out.push_back(piece);
+    piece.points.clear();
+  };
+  for (size_t k = 0; k < path.points.size() && k < path.level.size(); ++k) {
+    if (path.level[k] != piece.level) {
+      close();
+      piece.level = path.level[k];
+    }
+    if (piece.level >= 0) piece.points.push_back({path.points[k].x, path.points[k].y});
+  }
+  close();
+  return out;
+}
+
+// Reachability on the furnished building (docs/REACH.md), with the feedback loop acting on the rooms'
+// solvers: rooms it changed (walkways laid, actions taken) take their solver's new state. Errors: a
+// building reachability cannot read (no entrance, a staircase without a foot), bad options.
+Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh& building, std::vector<RoomResult>& results,
+                                       const FurnishOptions& options) {
+  const auto start = Clock::now();
+  auto input = BuildingReachInput(layout, building, options.build, options.reach.reach);
+  if (!input.ok()) return Error{input.error()};
+  std::map<std::string, RoomSolver*> solvers;
+  std::map<std::string, RoomResult*> by_room;
+  for (RoomResult& r : results) {
+    if (!r.solver) continue;
+    solvers[r.report.room] = r.solver.get();
+    by_room[r.report.room] = &r;
+  }
+  auto loop = FreeBlockedWays(*input, solvers, options.reach);
+  if (!loop.ok()) return Error{loop.error()};
+  ReachFigures f;
+  std::set<std::string> changed;
+  for (const FeedbackRound& round : loop->rounds) {
+    for (const Walkway& w : round.walkways) changed.insert(w.room);
+    for (const RoomAction& a : round.actions) changed.insert(a.room);
+    f.actions += static_cast<int>(round.actions.size());
+  }
+  for (const std::string& room : changed) TakeSolution(*by_room.at(room));
+
+  const ReachReport& last = loop->last;
+  f.outcome = loop->reason;
+  f.rooms = last.rooms;
+  f.rooms_reachable = last.rooms_reachable;
+  f.zones = last.zones;
+  f.zones_reachable = last.zones_reachable;
+  f.acc_mean = last.Acc();
+  for (const TargetResult& t : last.targets) {
+    (t.kind == TargetKind::kRoom ? f.rch : f.acc)[t.name] = t.share;
+    if (t.path) {
+      for (ReachFigures::Path& piece : PathPieces(*t.path)) f.paths.push_back(std::move(piece));
+    }
+  }
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.2f", options.reach.reach.radius);
+  f.note = std::string("a person (a disc of radius ") + radius +
+           " m) from the entrance to every room and V_int interaction zone, across floors by the stairs; a 2 cm raster "
+           "decides, OMPL draws the paths (PRM per level, RRTConnect); feedback: " + loop->reason;
+  f.levels = last.levels;
+  f.record = last.ToJson();
+  f.record["radius"] = options.reach.reach.radius;
+  f.record["feedback"] = loop->ToJson();
+  f.seconds = Since(start);
+  f.record["seconds"] = Round4(f.seconds);
+  return f;
+}
+
+// Room means of the per-room metrics, over the rooms that hold objects.
+scene::Metrics BuildingMetrics(const std::vector<RoomReport>& rooms) {
+  double cr = 0, fr = 0, obr = 0, csr = 0, no = 0;
+  int n = 0;
+  for (const RoomReport& r : rooms) {
+    if (!r.solve) continue;
+    const ExactMetrics& m = r.solve->metrics;
+    cr += m.cr, fr += m.fr, obr += m.obr, csr += m.csr, no += m.objects;
+    ++n;
+  }
+  if (n == 0) return {};
+  return {{{"CR", Round4(cr / n)}, {"FR", Round4(fr / n)}, {"OBR", Round4(obr / n)}, {"CSR", Round4(csr / n)}, {"NO", Round4(no / n)}}};
+}
+
+Json StringArray(const std::vector<std::string>& v) { return Json(v); }
+
+Json RoomJson(const RoomReport& r, const std::optional<ReachFigures>& reach, const std::vector<scene::SceneObject>& objects) {
+  Json j;
+  j["room"] = r.room;
+  j["category"] = std::string(CategoryName(r.category));
+  j["level"] = r.level;
+  j["area_m2"] = Round3(r.area);
+  j["furnishable_m2"] = Round3(r.furnishable_area);
+  j["asked"] = r.asked;
+  j["outcome"] = r.outcome;
+  j["reason"] = r.reason;
+  if (!r.asked) return j;
+  j["plan"] = {{"outcome", std::string(scene::PlanOutcomeName(r.plan.outcome))},
+               {"objects", r.plan.objects},
+               {"target", {r.plan.target_min, r.plan.target_max}},
+               {"notes", StringArray(r.plan_notes)}};
+  j["assets"] = {{"library", r.acquire.library},
+                 {"procedural", r.acquire.procedural},
+                 {"fallbacks", r.acquire.fallbacks},
+                 {"distinct", r.acquire.distinct_assets}};
+  std::map<std::string, std::string> placed;
+  for (const scene::SceneObject& o : objects)
+    if (o.room == r.room) placed[o.id] = o.asset;
+  Json list = Json::array();
+  for (const scene::AcquiredAsset& a : r.assets) {
+    Json o{{"id", a.object}, {"asset", a.asset}, {"rule", std::string(scene::AcquireRuleName(a.rule))}, {"placed", placed.count(a.object) > 0}};
+    if (!a.note.empty()) o["note"] = a.note;
+    list.push_back(std::move(o));
+  }
+  j["objects"] = std::move(list);
+  j["dropped"] = StringArray(r.dropped);
+  if (!r.notes.empty()) j["notes"] = StringArray(r.notes);
+  Json metrics;
+  if (r.solve) {
+    const SolveSummary& s = *r.solve;
+    const ExactMetrics& m = s.metrics;
+    metrics = {{"CR", Round4(m.cr)}, {"FR", Round4(m.fr)}, {"OBR", Round4(m.obr)}, {"CSR", Round4(m.csr)}, {"NO", m.objects}};
+    j["iterations"] = s.iterations;
+    j["energy"] = {{"total", Round4(s.energy.total)},
+                   {"collision", Round4(s.energy.collision)},
+                   {"support", Round4(s.energy.support)},
+                   {"semantic", Round4(s.energy.semantic)}};
+    Json trace = Json::array();
+    for (double e : s.energy_trace) trace.push_back(Round4(e));
+    j["energy_trace"] = std::move(trace);
+    Json actions = Json::array();
+    for (const ActionResult& a : s.actions) actions.push_back(ActionResultToJson(a));
+    j["actions"] = std::move(actions);
+    j["removed"] = StringArray(s.removed);
+    Json collisions = Json::array();
+    for (const CollisionPair& p : m.pairs) collisions.push_back({p.a, p.b});
+    j["collisions"] = std::move(collisions);
+    j["clearance_m"] = m.min_clearance < 0 ? Json(nullptr) : Json(Round4(m.min_clearance));
+    j["log"] = StringArray(s.log);
+  } else {
+    metrics = {{"NO", 0}};
+  }
+  if (reach) {
+    auto rch = reach->rch.find(r.room);
+    metrics["RCH"] = rch == reach->rch.end() ? Json(nullptr) : Json(Round4(rch->second));
+    Json acc = Json::object();
+    for (const scene::SceneObject& o : objects)
+      if (o.room == r.room)
+        if (auto it = reach->acc.find(o.id); it != reach->acc.end()) acc[o.id] = Round4(it->second);
+    metrics["ACC"] = std::move(acc);
+  } else {
+    metrics["RCH"] = nullptr;  // not measured: no reachability check plugged in (issue 13)
+    metrics["ACC"] = nullptr;
+  }
+  j["metrics"] = std::move(metrics);
+  j["seconds"] = {{"plan", Round4(r.seconds_plan)}, {"acquire", Round4(r.seconds_acquire)}, {"solve", Round4(r.seconds_solve)},
+                  {"total", Round4(r.seconds)}, {"cpu", Round4(r.cpu_seconds)}};
+  return j;
+}
+
+// Per room type over the rooms that hold objects: rooms, mean NO, pooled CR/FR/OBR/CSR, outcomes, time.
+Json ByRoomType(const std::vector<RoomReport>& rooms) {
+  struct Sum {
+    int rooms = 0, converged = 0, objects = 0, colliding = 0, floating = 0, consumers = 0, out = 0, inside = 0, contained = 0;
+    double seconds = 0;
+  };
+  std::map<std::string, Sum> by;
+  for (const RoomReport& r : rooms) {
+    if (!r.solve) continue;
+    Sum& s = by[std::string(CategoryName(r.category))];
+    const ExactMetrics& m = r.solve->metrics;
+    ++s.rooms;
+    s.converged += r.solve->outcome == Outcome::kConverged;
+    s.objects += m.objects, s.colliding += m.colliding, s.floating += m.floating, s.consumers += m.consumers;
+    s.out += m.out_of_bounds, s.inside += m.inside_edges, s.contained += m.contained;
+    s.seconds += r.seconds;
+  }
+  Json out = Json::object();
+  for (const auto& [type, s] : by)
+    out[type] = {{"rooms", s.rooms},
+                 {"converged", s.converged},
+                 {"NO_mean", Round4(double(s.objects) / s.rooms)},
+                 {"CR", Round4(s.objects ? double(s.colliding) / s.objects : 0.0)},
+                 {"FR", Round4(s.consumers ? double(s.floating) / s.consumers : 0.0)},
+                 {"OBR", Round4(s.objects ? double(s.out) / s.objects : 0.0)},
+                 {"CSR", Round4(s.inside ? double(s.contained) / s.inside : 1.0)},
+                 {"seconds_mean", Round4(s.seconds / s.rooms)}};
+  return out;
+}
+
+std::vector<std::string> OutputNames(const Layout& layout, bool pictures) {
+  std::vector<std::string> names{kSceneFile, kGlbFile, kReportFile, kCreditsFile};
+  if (pictures) {
+    names.push_back(kPlanPicture);
+    for (const Room& r : layout.rooms) names.push_back(RoomPictureName(r.name()));
+  }
+  return names;
+}
+
+Status RefuseExisting(const fs::path& dir, const std::vector<std::string>& names) {
+  std::error_code ec;
+  for (const std::string& name : names)
+    if (fs::exists(dir / name, ec))
+      return Error{"usage: " + (dir / name).string() + " exists (an earlier run's output); pass --force to overwrite it"};
+  return Status::Ok();
+}
+
+}  // namespace
+
+std::string FurnishOptions::Check() const {
+  if (jobs < 0 || jobs > 256) return "jobs = " + std::to_string(jobs) + ": must be in [0, 256]";
+  if (std::string p = build.Check(); !p.empty()) return p;
+  if (std::string p = planner.Check(); !p.empty()) return "planner: " + p;
+  if (std::string p = acquire.Check(); !p.empty()) return "assets: " + p;
+  std::string message;
+  if (!solve.IsValid(&message)) return "solver: " + message;
+  if (!check.IsValid(&message)) return "exact check: " + message;
+  if (check_reach && !reach.IsValid(&message)) return "reach: " + message;
+  return "";
+}
+
+std::string RoomPictureName(const std::string& room) {
+  std::string name = room;
+  std::replace(name.begin(), name.end(), '/', '_');
+  return "rooms/" + name + ".png";
+}
+
+std::string FurnishSummary::BriefReport() const {
+  auto pct = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", 100.0 * v);
+    return std::string(text);
+  };
+  std::string out;
+  out += std::to_string(furnished) + " of " + std::to_string(rooms) + " rooms furnished: " + std::to_string(converged) +
+         " converged, " + std::to_string(budget) + " budget, " + std::to_string(infeasible) + " infeasible\n";
+  out += std::to_string(objects) + " objects placed of " + std::to_string(planned) + " planned (" + std::to_string(removed) +
+         " removed by the solver, " + std::to_string(dropped) + " left out before solving); assets " +
+         std::to_string(library_assets) + " from the library, " + std::to_string(procedural_assets) + " procedural\n";
+  out += "CR " + pct(cr()) + " %  FR " + pct(fr()) + " %  OBR " + pct(obr()) + " %  CSR " + pct(csr()) + " % (" +
+         std::to_string(contained) + "/" + std::to_string(inside_edges) + ")\n";
+  char time[128];
+  std::snprintf(time, sizeof time, "%.2f s (%.2f s of room work, %.3f s a room)\n", seconds, room_seconds,
+                furnished ? room_seconds / furnished : 0.0);
+  out += "time: " + std::string(time);
+  if (reach_checked) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "reach: RCH %s %% (%d/%d rooms), ACC %s %% (%d/%d zones reachable); %d action(s) cleared ways; %.2f s\n",
+                  pct(rch()).c_str(), rooms_reachable, reach_rooms, pct(acc()).c_str(), zones_reachable, reach_zones,
+                  reach_actions, reach_seconds);
+    out += line + ("  " + reach_note + "\n");
+  } else if (!reach_note.empty()) {
+    out += "reach: " + reach_note + "\n";
+  }
+  return out;
+}
+
+Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef& layout_ref,
+                                     std::shared_ptr<const AssetLibrary> library, std::optional<scene::FileRef> library_ref,
+                                     const FurnishOptions& options) {
+  const auto start = Clock::now();
+  if (std::string problem = options.Check(); !problem.empty()) return Error{"usage: " + problem};
+  if (!library) return Error{"no asset library given (a bug: OpenFurnishingLibrary makes one)"};
+  std::set<std::string> asked(options.rooms.begin(), options.rooms.end());
+  for (const std::string& name : asked)
+    if (layout.FindRoom(name) < 0) {
+      std::string names;
+      for (const Room& r : layout.rooms) names += (names.empty() ? "" : ", ") + r.name();
+      return Error{"usage: --room " + name + ": no such room in the layout (rooms: " + names + ")"};
+    }
+
+  FurnishedVilla villa;
+  villa.layout = layout;
+  villa.library = library;
+  auto building = BuildBuilding(layout, options.build);
+  if (!building.ok()) return Error{building.error()};
+  villa.building = std::move(*building);
+  auto contexts = scene::RoomContexts(villa.layout, villa.building, options.build);
+  if (!contexts.ok()) return Error{contexts.error()};
+  villa.contexts = std::move(*contexts);
+  auto acquirer = scene::AssetAcquirer::Make(*library, options.acquire, options.seed, options.text);
+  if (!acquirer.ok()) return Error{acquirer.error()};
+  villa.assets = *acquirer;
+
+  // Rooms in parallel; results land in layout order, so the output does not depend on the job count.
+  const scene::PriorsPlanner planner(options.planner);
+  const size_t n = villa.contexts.size();
+  if (options.on_start) options.on_start(asked.empty() ? n : asked.size());
+  std::vector<RoomResult> results(n);
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i = next++; i < n; i = next++) {
+      const scene::RoomContext& context = villa.contexts[i];
+      try {
+        results[i] = FurnishRoom(villa, context, asked.empty() || asked.count(context.name), planner, options);
+      } catch (const std::exception& e) {
+        results[i].error = context.name + ": " + e.what();
+      }
+      if (options.on_room_done && (asked.empty() || asked.count(context.name))) options.on_room_done(context.name);
+    }
+  };
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const size_t jobs = std::min<size_t>(n, options.jobs > 0 ? options.jobs : hardware);
+  if (jobs <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> threads;
+    for (size_t j = 0; j < jobs; ++j) threads.emplace_back(worker);
+    for (std::thread& t : threads) t.join();
+  }
+
+  for (const RoomResult& r : results)
+    if (!r.error.empty()) return Error{r.error};
+  FurnishSummary& sum = villa.summary;
+  // Reachability before the rooms are gathered: its feedback may still change them.
+  if (options.check_reach) {
+    auto reach = CheckReachability(villa.layout, villa.building, results, options);
+    if (reach.ok()) {
+      villa.reach = std::move(*reach);
+      sum.reach_checked = true;
+      sum.reach_rooms = villa.reach->rooms;
+      sum.rooms_reachable = villa.reach->rooms_reachable;
+      sum.reach_zones = villa.reach->zones;
+      sum.zones_reachable = villa.reach->zones_reachable;
+      sum.reach_acc = villa.reach->acc_mean;
+      sum.reach_actions = villa.reach->actions;
+      sum.reach_note = villa.reach->outcome;
+      sum.reach_seconds = villa.reach->seconds;
+    } else {
+      sum.reach_note = "not measured: " + reach.error();
+    }
+  }
+
+  scene::SceneFile& s = villa.scene;
+  s.layout = layout_ref;
+  s.library = library_ref;
+  s.build = {options.build.slab_thickness, options.build.exterior_wall_thickness, options.build.interior_wall_thickness};
+  sum.rooms = static_cast<int>(n);
+  for (RoomResult& r : results) {
+    s.rooms.push_back(std::move(r.entry));
+    for (scene::SceneObject& o : r.objects) s.objects.push_back(std::move(o));
+    const RoomReport& rep = r.report;
+    villa.rooms.push_back(rep);
+    if (!rep.asked) continue;
+    ++sum.furnished;
+    sum.planned += rep.plan.objects;
+    sum.dropped += static_cast<int>(rep.dropped.size());
+    sum.room_seconds += rep.seconds;
+    for (const scene::AcquiredAsset& a : rep.assets) (a.rule == scene::AcquireRule::kLibrary ? sum.library_assets : sum.procedural_assets)++;
+    if (!rep.solve) {
+      ++sum.converged;
+      continue;
+    }
+    const SolveSummary& so = *rep.solve;
+    sum.converged += so.outcome == Outcome::kConverged;
+    sum.budget += so.outcome == Outcome::kBudget;
+    sum.infeasible += so.outcome == Outcome::kInfeasible;
+    sum.removed += static_cast<int>(so.removed.size());
+    const ExactMetrics& m = so.metrics;
+    sum.objects += m.objects, sum.colliding += m.colliding, sum.floating += m.floating, sum.out_of_bounds += m.out_of_bounds;
+    sum.consumers += m.consumers, sum.inside_edges += m.inside_edges, sum.contained += m.contained;
+  }
+  if (auto metrics = BuildingMetrics(villa.rooms); !metrics.values.empty()) s.metrics = metrics;
+
+  // The scene must pass its own validator before anyone reads it.
+  const scene::AssetLookup lookup = [&](std::string_view id) { return villa.assets->Find(id); };
+  auto findings = scene::ValidateScene(s, villa.layout, lookup);
+  if (!findings.empty()) return Error{"the furnished scene breaks the scene rules (a bug; nothing written):\n" + scene::FormatFindings(findings)};
+
+  sum.seconds = Since(start);
+  return villa;
+}
+
+Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& options) {
+  const FurnishSummary& s = villa.summary;
+  Json j;
+  j["format"] = "villa-furnish-report/1";
+  j["layout"] = villa.scene.layout.file;
+  j["seed"] = options.seed;
+  j["text"] = options.text;
+  j["library"] = {{"file", villa.scene.library ? Json(villa.scene.library->file) : Json(nullptr)},
+                  {"records", villa.library->records().size()},
+                  {"note", villa.library_note}};
+  j["style"] = villa.assets->style();
+  j["jobs"] = options.jobs;
+  j["totals"] = {{"rooms", s.rooms},
+                 {"furnished", s.furnished},
+                 {"converged", s.converged},
+                 {"budget", s.budget},
+                 {"infeasible", s.infeasible},
+                 {"planned", s.planned},
+                 {"objects", s.objects},
+                 {"removed", s.removed},
+                 {"dropped", s.dropped},
+                 {"assets_library", s.library_assets},
+                 {"assets_procedural", s.procedural_assets},
+                 {"CR", Round4(s.cr())},
+                 {"FR", Round4(s.fr())},
+                 {"OBR", Round4(s.obr())},
+                 {"CSR", Round4(s.csr())},
+                 {"NO_mean", Round4(s.furnished ? double(s.objects) / s.furnished : 0.0)},
+                 {"RCH", s.reach_checked ? Json(Round4(s.rch())) : Json(nullptr)},
+                 {"ACC", s.reach_checked ? Json(Round4(s.acc())) : Json(nullptr)},
+                 {"seconds", Round4(s.seconds)},
+                 {"room_seconds", Round4(s.room_seconds)}};
+  j["by_room_type"] = ByRoomType(villa.rooms);
+  Json rooms = Json::array();
+  for (const RoomReport& r : villa.rooms) rooms.push_back(RoomJson(r, villa.reach, villa.scene.objects));
+  j["rooms"] = std::move(rooms);
+  if (villa.reach) {
+    Json r;
+    r["note"] = villa.reach->note;
+    for (const auto& [key, value] : villa.reach->record.items()) r[key] = value;
+    j["reachability"] = std::move(r);
+  } else {
+    // Not asked for (null), or asked for and not measurable (why).
+    j["reachability"] = s.reach_note.empty() ? Json(nullptr) : Json{{"note", s.reach_note}};
+  }
+  return j;
+}
+
+Result<std::string> FurnishedGlb(const FurnishedVilla& villa) {
+  ExportFurniture furniture;
+  std::map<std::string, int> mesh_of;
+  std::vector<std::shared_ptr<const AssetMesh>> keep;  // the borrowed meshes live until the export is done
+  Json assets = Json::array();
+  std::vector<std::string> credits;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!o.pose) continue;
+    const AssetRecord* record = villa.assets->Find(o.asset);
+    if (!record) return Error{o.id + ": asset " + o.asset + " is not in the library"};
+    auto [it, added] = mesh_of.emplace(o.asset, static_cast<int>(furniture.meshes.size()));
+    if (added) {
+      auto mesh = villa.library->Mesh(o.asset);
+      if (!mesh.ok()) return Error{o.id + ": " + mesh.error()};
+      keep.push_back(*mesh);
+      ExportAssetMesh m;
+      m.name = o.asset;
+      for (const AssetMeshPart& part : (*mesh)->parts)
+        m.parts.push_back({&part.mesh, PartMaterial{part.material.name, {part.material.r, part.material.g, part.material.b},
+                                                    part.material.alpha, 0.7}});
+      furniture.meshes.push_back(std::move(m));
+      assets.push_back({{"id", record->id}, {"name", record->name}, {"license", record->license}, {"creator", record->creator}});
+      if (std::string credit = record->Credit(); !credit.empty()) credits.push_back(credit);
+    }
+    ExportObject node;
+    node.name = o.id;
+    node.room = o.room;
+    node.mesh = it->second;
+    node.position = {o.pose->x, o.pose->y, o.pose->z};
+    node.yaw = o.pose->yaw;
+    node.scale = {o.scale[0], o.scale[1], o.scale[2]};
+    Json& e = node.extras;
+    e["id"] = o.id;
+    e["category"] = o.category;
+    e["asset"] = o.asset;
+    e["room"] = o.room;
+    e["level"] = o.level;
+    e["parent"] = o.parent;
+    e["relation"] = std::string(scene::RelationName(o.relation));
+    if (o.surface) e["surface"] = *o.surface;
+    if (o.cavity) e["cavity"] = *o.cavity;
+    if (o.wall) e["wall"] = o.wall->edge;
+    e["license"] = record->license;
+    e["creator"] = record->creator;
+    furniture.objects.push_back(std::move(node));
+  }
+  furniture.asset_extras = {{"assets", std::move(assets)}, {"credits", credits}};
+  return BuildingToGlb(villa.building, &furniture);
+}
+
+std::string FurnishCredits(const FurnishedVilla& villa) {
+  std::set<std::string> seen;
+  std::string lines;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!seen.insert(o.asset).second) continue;
+    const AssetRecord* record = villa.assets->Find(o.asset);
+    if (!record) continue;
+    if (std::string credit = record->Credit(); !credit.empty()) {
+      lines += "- " + credit;
+      if (!record->source.package.empty() || !record->source.library.empty())
+        lines += "; from " + record->source.library + (record->source.package.empty() ? "" : " (" + record->source.package + ")");
+      lines += "\n";
+    }
+  }
+  std::string out = "Credits for the 3D models placed in furnished.glb (scene.json names every object's asset).\n";
+  out += lines.empty() ? "No placed model needs credit (every one is CC0 or made by villa's procedural generators).\n"
+                       : "These models are licensed under Creative Commons Attribution and are credited as their licence asks:\n" + lines;
+  return out;
+}
+
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
+  PlanOverlay overlay;
+  std::map<std::string, Category> category_of;
+  for (const Room& r : villa.layout.rooms) category_of[r.name()] = r.category;
+  std::vector<const scene::SceneObject*> objects;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.pose && o.relation != scene::Relation::kHanging) objects.push_back(&o);
+  // Lowest first; at one height the larger footprint first, so a rug or a table never hides what is on it.
+  std::stable_sort(objects.begin(), objects.end(), [](const scene::SceneObject* a, const scene::SceneObject* b) {
+    if (a->pose->z != b->pose->z) return a->pose->z < b->pose->z;
+    return a->size.x * a->size.y > b->size.x * b->size.y;
+  });
+  auto mix = [](Rgb a, Rgb b, double t) { return Rgb{a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t}; };
+  for (const scene::SceneObject* o : objects) {
+    auto it = category_of.find(o->room);
+    const Category category = it == category_of.end() ? Category::kRoom : it->second;
+    const double c = std::cos(o->pose->yaw), s = std::sin(o->pose->yaw);
+    const double hx = o->size.x / 2.0, hy = o->size.y / 2.0;
+    PlanOverlay::Shape shape;
+    shape.level = o->level;
+    for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}})
+      shape.outline.push_back({o->pose->x + c * x - s * y, o->pose->y + s * x + c * y});
+    shape.fill = mix(CategoryColor(category), CategoryInk(category), 0.4);
+    shape.fill_alpha = 0.9;
+    shape.ink = mix(CategoryInk(category), Rgb{0.1, 0.1, 0.1}, 0.3);
+    overlay.shapes.push_back(std::move(shape));
+  }
+  if (villa.reach)
+    for (const ReachFigures::Path& p : villa.reach->paths)
+      overlay.paths.push_back({p.level, p.points, Rgb{0.07, 0.36, 0.66}, 1.6});
+  return overlay;
+}
+
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa) {
+  PlanRenderOptions options;
+  options.source_name = villa.scene.layout.file + " (furnished)";
+  return RenderPlanPng(villa.layout, FurnishedPlanOverlay(villa), options);
+}
+
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options) {
+  ViewScene view = ViewSceneOf(villa.building);
+  // The objects' meshes moved into the world frame; the scene borrows them until the picture is made.
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!o.pose) continue;
+    auto asset = villa.library->Mesh(o.asset);
+    if (!asset.ok()) return Error{o.id + ": " + asset.error()};
+    const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw);
+    const bool hung = o.relation == scene::Relation::kOnWall || o.relation == scene::Relation::kHanging;
+    for (const AssetMeshPart& part : (*asset)->parts) {
+      if (part.mesh.triangles.empty()) continue;
+      auto world = std::make_unique<TriangleMesh>(part.mesh);
+      for (Vec3& v : world->vertices) {
+        const double x = v.x * o.scale[0], y = v.y * o.scale[1];
+        v = {o.pose->x + c * x - s * y, o.pose->y + s * x + c * y, o.pose->z + v.z * o.scale[2]};
+      }
+      ViewMesh mesh;
+      mesh.mesh = world.get();
+      mesh.color = {part.material.r, part.material.g, part.material.b};
+      mesh.alpha = part.material.alpha;
+      mesh.level = o.level;
+      mesh.cut = hung ? CutAway::kCut : CutAway::kKeep;
+      view.meshes.push_back(mesh);
+      meshes.push_back(std::move(world));
+    }
+  }
+  return RenderPreview(view, options);
+}
+
+Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
+                                                     const FurnishOptions& options) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return Error{dir.string() + ": cannot create the folder: " + ec.message()};
+  const std::vector<std::string> names = OutputNames(villa.layout, options.pictures);
+  if (!options.force)
+    if (Status refused = RefuseExisting(dir, names); !refused) return Error{refused.error()};
+
+  std::vector<std::string> written;
+  auto write = [&](const std::string& name, const std::string& bytes) -> Status {
+    if (Status s = WriteFileAtomic(dir / name, bytes); !s) return s;
+    written.push_back(name);
+    return Status::Ok();
+  };
+  auto glb = FurnishedGlb(villa);
+  if (!glb.ok()) return Error{(dir / kGlbFile).string() + ": " + glb.error()};
+  if (Status s = write(kSceneFile, scene::SceneToText(villa.scene)); !s) return Error{s.error()};
+  if (Status s = write(kGlbFile, *glb); !s) return Error{s.error()};
+  if (Status s = write(kCreditsFile, FurnishCredits(villa)); !s) return Error{s.error()};
+  if (options.pictures) {
+    auto plan = FurnishedPlanPng(villa);
+    if (!plan.ok()) return Error{(dir / kPlanPicture).string() + ": " + plan.error()};
+    if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
+  }
+  if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
+
+  return written;
+}
+
+Result<FurnishSummary> FurnishLayoutFile(const fs::path& layout_path, const fs::path& dir, const FurnishOptions& options) {
+  if (std::string problem = options.Check(); !problem.empty()) return Error{"usage: " + problem};
+  std::error_code ec;
+  if (!fs::exists(layout_path, ec)) return Error{"usage: " + layout_path.string() + ": no such file"};
+  if (!options.force)
+    if (Status refused = RefuseExisting(dir, {kSceneFile, kGlbFile, kReportFile, kCreditsFile, kPlanPicture}); !refused)
+      return Error{refused.error()};
+  auto layout = LoadLayout(layout_path.string());
+  if (!layout.ok()) return Error{layout.error()};
+  if (!options.force)
+    if (Status refused = RefuseExisting(dir, OutputNames(*layout, options.pictures)); !refused) return Error{refused.error()};
+  ValidateOptions vo;
+  vo.check_architecture = false;
+  ValidationReport report = ValidateLayout(*layout, vo);
+  if (!report.geometric_ok() && !options.allow_invalid) {
+    std::string why;
+    for (const Violation& v : report.violations)
+      if (v.rule <= 5) why += "\n  rule " + std::to_string(v.rule) + ": " + v.message;
+    return Error{layout_path.string() + ": breaks the geometric rules 1-5; not furnished (--allow-invalid furnishes it anyway)" + why};
+  }
+  auto digest = scene::FileSha256(layout_path);
+  if (!digest.ok()) return Error{digest.error()};
+  // The scene names the layout relative to its own folder when it can.
+  fs::path absolute_dir = fs::absolute(dir, ec);
+  fs::path relative = fs::relative(fs::absolute(layout_path, ec), absolute_dir, ec);
+  const std::string layout_file = ec || relative.empty() ? fs::absolute(layout_path, ec).string() : relative.generic_string();
+
+  auto library = scene::OpenFurnishingLibrary(options.library, options.procedural_only);
+  if (!library.ok()) return Error{library.error()};
+  auto villa = FurnishLayout(*layout, {layout_file, *digest}, library->library, library->file, options);
+  if (!villa.ok()) return Error{villa.error()};
+  villa->library_note = library->note;
+  auto written = WriteFurnishedVilla(*villa, dir, options);
+  if (!written.ok()) return Error{written.error()};
+  FurnishSummary summary = villa->summary;
+  summary.written = *written;
+  return summary;
+}
+
+}  // namespace villa::solver
