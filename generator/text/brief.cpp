@@ -2,6 +2,10 @@
 // (counts, floors, connections, attachments). See brief.h for what it understands.
 #include "generator/text/brief.h"
 
+#ifdef VILLA_HAVE_ASSET_VOCABULARY
+#include "assets/category.h"
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -51,6 +55,7 @@ std::string Singular(const std::string& w) {
       {"spaces", "space"}, {"places", "place"}, {"sides", "side"}, {"suites", "suite"},
   };
   if (auto it = kIrregular.find(w); it != kIrregular.end()) return it->second;
+  if (w.size() > 7 && w.ends_with("shelves")) return w.substr(0, w.size() - 3) + "f";  // "bookshelves"
   if (w.size() > 4 && w.ends_with("ies")) return w.substr(0, w.size() - 3) + "y";
   if (w.size() > 4 && (w.ends_with("ches") || w.ends_with("shes") || w.ends_with("sses") || w.ends_with("xes")))
     return w.substr(0, w.size() - 2);
@@ -525,6 +530,7 @@ struct Mention {
   bool in_attachment = false;  // furniture, panoramic, side or entrance refer to it
   int first = 0;  // token range of the whole phrase (quantifier included)
   int last = 0;
+  int per_level = -1;  // "six bedrooms on the upper two floors, three on each": this many on each level of `ref`
 };
 
 class Parser {
@@ -548,10 +554,13 @@ class Parser {
   bool RoomStartsWithin(std::size_t i, int span) const;
   bool IsBedroomCount(std::size_t i) const;
   bool FurnitureStartsWithin(std::size_t i, int span) const;
+  int ObjectWordsAt(std::size_t i) const;
 
   // interpretation
   void Quantify(Mention& m);
   void PlaceLevels();
+  void Distribute();
+  std::vector<int> RefLevels(int ref_item) const;
   void Connect();
   void Attach();
   void Finish(Brief& brief);
@@ -619,10 +628,39 @@ bool Parser::RoomStartsWithin(std::size_t i, int span) const {
 bool Parser::FurnitureStartsWithin(std::size_t i, int span) const {
   for (std::size_t k = i; k < tokens_.size() && k < i + span; ++k) {
     if (tokens_[k].punct) return false;
-    for (const auto& w : FurnitureLexicon())
-      if (MatchPhrase(tokens_, k, w)) return true;
+    if (ObjectWordsAt(k) > 0) return true;
   }
   return false;
+}
+
+// Length of the words naming an object at tokens[i] (0 if none): the furniture lexicon above, then the
+// furnishing stage's own vocabulary (assets/category.h: "books", "clock", "plant", ...) when the build has
+// it, so that a furniture wish is read as one for the furnish stage, not left as words not understood. A
+// vocabulary word right before a room word names the room ("art studio"), not an object.
+int Parser::ObjectWordsAt(std::size_t i) const {
+  if (i >= tokens_.size() || IsBedroomCount(i)) return 0;
+  int best = 0;
+  for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
+#ifdef VILLA_HAVE_ASSET_VOCABULARY
+  const Token& t = tokens_[i];
+  if (best == 0 && !t.punct && t.item < 0 && !IsFiller(t) && !Cardinal(t) && !IsFloorNoun(t) &&
+      !RoomStartsWithin(i, 1)) {
+    for (int len = 2; len >= 1 && best == 0; --len) {
+      if (i + len > tokens_.size()) continue;
+      std::string phrase;
+      bool plain = true;
+      for (int k = 0; k < len; ++k) {
+        const Token& w = tokens_[i + k];
+        if (w.punct || w.item >= 0 || w.sentence != t.sentence) plain = false;
+        if (k > 0) phrase += ' ';
+        phrase += w.word;
+      }
+      if (plain && CategoryForWord(phrase)) best = len;
+    }
+    if (best > 0 && RoomStartsWithin(i + best, 1)) best = 0;
+  }
+#endif
+  return best;
 }
 
 int Parser::TryFloorCount(std::size_t i, Item& item) {
@@ -690,6 +728,13 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
   if (In(t, {"top", "uppermost", "highest", "topmost", "last"}) && floor_at(i + 1)) {
     item.ref = RefType::kTop;
     return 2;
+  }
+  // "the upper two floors", "the top 2 levels": the highest n floors together.
+  if (In(t, {"upper", "higher", "top", "uppermost", "topmost"}) && i + 1 < tokens_.size() && Cardinal(tokens_[i + 1]) &&
+      *Cardinal(tokens_[i + 1]) > 0 && floor_at(i + 2) && !In(tokens_[i + 1], {"single", "double", "triple"})) {
+    item.ref = RefType::kUpper;
+    item.n = *Cardinal(tokens_[i + 1]);
+    return 3;
   }
   if (In(t, {"upper", "higher"}) && floor_at(i + 1)) {
     item.ref = RefType::kUpper;
@@ -865,12 +910,19 @@ int Parser::TryPanoramic(std::size_t i, Item& item) {
 }
 
 int Parser::TryFurniture(std::size_t i, Item& item) {
-  if (IsBedroomCount(i)) return 0;
-  int best = 0;
-  for (const auto& p : FurnitureLexicon()) best = std::max(best, MatchPhrase(tokens_, i, p));
+  int best = ObjectWordsAt(i);
   if (best == 0) return 0;
   // "flat-screen TV": the first noun is a modifier of the next one.
   if (FurnitureStartsWithin(i + best, 1)) return 0;
+  // "bookshelves full of books", "a cabinet filled with toys": the contents belong to the wish.
+  for (auto contents : {"full of", "filled with", "stocked with", "packed with", "loaded with", "lined with"}) {
+    int len = MatchPhrase(tokens_, i + best, Split(contents));
+    if (len == 0) continue;
+    std::size_t k = i + best + len;
+    while (k < tokens_.size() && !tokens_[k].punct && In(tokens_[k], {"a", "an", "some", "many", "lots", "of"})) ++k;
+    if (int n = ObjectWordsAt(k); n > 0) best = static_cast<int>(k - i) + n;
+    break;
+  }
   // "a dining table for six": the seats belong to the item.
   if (i + best + 1 < tokens_.size() && tokens_[i + best].word == "for" && Cardinal(tokens_[i + best + 1]) &&
       tokens_[i + best + 1].sentence == tokens_[i].sentence)
@@ -1106,6 +1158,15 @@ void Parser::Quantify(Mention& m) {
       m.every = true;
       m.first = k;
       determined = true;
+    } else if (t->word == "both" && m.plural &&
+               std::none_of(mentions_.begin(), mentions_.end(),
+                            [&](const Mention& o) { return o.category == item.category; })) {
+      // "both bathrooms on the ground floor" with no bathrooms named before: two of them.
+      m.counting = true;
+      m.min = m.max = 2;
+      m.first = k;
+      tokens_[k].consumed = true;
+      determined = true;
     } else if (In(*t, {"some"})) {
       m.counting = true;
       m.min = 1;
@@ -1293,6 +1354,55 @@ void Parser::PlaceLevels() {
   }
 }
 
+// "..., three on each", "..., two per floor" right after a mention's floor phrase: a count for every level
+// that phrase names, instead of one total for them together.
+void Parser::Distribute() {
+  for (Mention& m : mentions_) {
+    if (m.ref < 0 || !m.counting) continue;
+    int sentence = tokens_[items_[m.ref].first].sentence;
+    auto at = [&](int k) -> const Token* {
+      return k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence ? &tokens_[k] : nullptr;
+    };
+    int k = items_[m.ref].last + 1;
+    while (at(k) && (at(k)->punct == ',' || In(*at(k), {"with", "and"}))) ++k;
+    const Token* count = at(k);
+    if (!count || count->item >= 0 || count->consumed || !Cardinal(*count)) continue;
+    int n = *Cardinal(*count);
+    int j = k + 1;
+    if (at(j) && at(j)->item < 0 && In(*at(j), {"on", "in"})) ++j;
+    const Token* each = at(j);
+    if (!each) continue;
+    int end = -1;
+    if (each->item >= 0 && items_[each->item].kind == ItemKind::kFloorRef && items_[each->item].ref == RefType::kEach)
+      end = items_[each->item].last;
+    else if (each->item < 0 && In(*each, {"each", "every"}))
+      end = j;
+    if (end < 0) continue;
+    m.per_level = n;
+    Consume(k, end);
+    m.last = std::max(m.last, end);
+  }
+}
+
+// The levels a floor phrase names, each on its own: "the upper two floors" of three -> 1, 2; "each floor"
+// -> every level when the number of floors is known (else none).
+std::vector<int> Parser::RefLevels(int ref_item) const {
+  const Item& r = items_[ref_item];
+  int floors = floors_.value_or(std::max(floors_min_, 0));
+  if (r.ref == RefType::kUpper) {
+    int n = r.n > 0 ? r.n : floors - 1;
+    std::vector<int> levels;
+    for (int l = std::max(1, floors - n); l < floors; ++l) levels.push_back(l);
+    return levels;
+  }
+  if (r.ref == RefType::kEach) {
+    std::vector<int> levels;
+    for (int l = 0; l < (floors_ ? *floors_ : 0); ++l) levels.push_back(l);
+    return levels;
+  }
+  return {ResolveRef(ref_item)};
+}
+
 std::vector<int> Parser::MentionLevels(const Mention& m) const {
   if (m.ref >= 0) return {ResolveRef(m.ref)};
   std::vector<int> levels;
@@ -1325,6 +1435,16 @@ void Parser::Connect() {
     const Item& cue = items_[ci];
     if (cue.kind != ItemKind::kCue) continue;
     int sentence = tokens_[cue.first].sentence;
+    // A room followed by a cue of its own is the subject of the next clause ("the kitchen opens onto the
+    // dining room and the dining room opens onto the living room"), not another target of this one.
+    auto starts_clause = [&](int mi) {
+      for (int k = items_[mentions_[mi].item].last + 1; k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence; ++k) {
+        const Token& t = tokens_[k];
+        if (t.item >= 0) return items_[t.item].kind == ItemKind::kCue;
+        if (t.punct || !(IsFiller(t) || IsAdjective(t))) return false;
+      }
+      return false;
+    };
     auto walk = [&](int start, int step, bool left, bool* entrance) {
       std::vector<int> found;
       bool relative = false;  // "the kitchen, which is open to ...": "which" points at the room before it
@@ -1342,6 +1462,7 @@ void Parser::Connect() {
             // "open to the living room and an office": a new, indefinite room after a definite one is the
             // next item of a list, not a second target.
             if (!left && !found.empty() && mentions_[mi].definite != mentions_[found.front()].definite) break;
+            if (!left && !found.empty() && starts_clause(mi)) break;
             if (std::find(found.begin(), found.end(), mi) == found.end()) found.push_back(mi);
             k = step < 0 ? it.first : it.last;
             continue;
@@ -1379,9 +1500,23 @@ void Parser::Connect() {
       used_right[right.front()] = true;
       continue;
     }
+    // "two balconies, each reached from a bedroom": every room on the left has its own link, and "a
+    // bedroom" is one of the bedrooms counted before (not another one) when the text has counted some.
+    bool distributive = false;
+    if (!left.empty())
+      for (int k = mentions_[left.back()].last + 1; k < cue.first; ++k)
+        if (In(tokens_[k], {"each", "every"})) distributive = true;
+    if (distributive)
+      for (int b : right) {
+        Mention& mb = mentions_[b];
+        bool counted_before = std::any_of(mentions_.begin(), mentions_.begin() + b, [&](const Mention& o) {
+          return o.category == mb.category && o.counting && o.max != 0;
+        });
+        if (mb.counting && mb.min == 1 && mb.max == 1 && counted_before) mb.counting = false;
+      }
     if (!left.empty() && !right.empty() && !(cue.mutual && right.empty())) {
       for (int a : left)
-        for (int b : right) add(a, b, cue.link, mentions_[a].every, source);
+        for (int b : right) add(a, b, cue.link, mentions_[a].every || distributive, source);
       for (int b : right) used_right[b] = true;
     } else if (left.size() >= 2 && (cue.mutual || right.empty())) {
       for (std::size_t k = 1; k < left.size(); ++k) add(left[0], left[k], cue.link, false, source);
@@ -1534,7 +1669,8 @@ void Parser::Finish(Brief& brief) {
     switch (item.ref) {
       case RefType::kOrdinal: need = british_ ? item.n + 1 : item.n; break;
       case RefType::kNumbered: need = zero_based_numbers_ ? item.n + 1 : item.n; break;
-      case RefType::kTop: case RefType::kUpper: need = 2; break;
+      case RefType::kTop: need = 2; break;
+      case RefType::kUpper: need = std::max(2, item.n + 1); break;
       case RefType::kMiddle: need = 3; break;
       default: break;
     }
@@ -1598,7 +1734,7 @@ void Parser::Finish(Brief& brief) {
     std::vector<int> levels = MentionLevels(m);
     TextSpan source = Span(m.first, m.last);
     int cat = static_cast<int>(m.category);
-    auto add_count = [&](int level) {
+    auto add_count = [&](int level, int min, int max) {
       Acc& acc = counts[{cat, level}];
       if (!acc.counting) {
         acc.source = source;
@@ -1606,14 +1742,22 @@ void Parser::Finish(Brief& brief) {
       } else {
         acc.source.text += "; " + source.text;
       }
-      acc.min += m.min;
-      acc.max = (acc.max < 0 || m.max < 0) ? -1 : acc.max + m.max;
+      acc.min += min;
+      acc.max = (acc.max < 0 || max < 0) ? -1 : acc.max + max;
     };
-    if (counting) {
+    std::vector<int> each_levels = counting && m.per_level >= 0 ? RefLevels(m.ref) : std::vector<int>{};
+    if (!each_levels.empty()) {
+      const int spread = m.per_level * static_cast<int>(each_levels.size());
+      if (spread != m.min || (m.max >= 0 && spread != m.max))
+        conflicts_.push_back(std::to_string(m.min) + " " + std::string(CategoryName(m.category)) + " asked as " +
+                             std::to_string(m.per_level) + " on each of " + std::to_string(each_levels.size()) +
+                             " floors; using " + std::to_string(m.per_level) + " on each");
+      for (int l : each_levels) add_count(l, m.per_level, m.per_level);
+    } else if (counting) {
       if (levels.size() == 1) {
-        add_count(levels[0]);
+        add_count(levels[0], m.min, m.max);
       } else {
-        add_count(kAnyLevel);
+        add_count(kAnyLevel, m.min, m.max);
         for (int l : levels) references.push_back({{cat, l}, source});
       }
     } else if (!m.in_connection) {
@@ -1861,6 +2005,7 @@ Brief Parser::Run() {
     bare_.push_back(bare_mention_);
   }
   PlaceLevels();
+  Distribute();
   Connect();
   Attach();
   Finish(brief);

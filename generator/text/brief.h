@@ -14,8 +14,9 @@
 //   connections   kitchen open to the dining room, living room reaching the kitchen, en-suite bathroom,
 //                 bedroom / children's room reaching a balcony, "the entrance opens into the living room"
 //   windows       panoramic (floor-to-ceiling) windows in a room or on a floor
-//   furniture     "a TV in the meeting room", "place a double bed in the children's room": kept for the
-//                 furnishing stage, not checked against a layout
+//   furniture     "a TV in the meeting room", "place a double bed in the children's room", "bookshelves
+//                 full of books": kept for the furnishing stage, not checked against a layout (object words:
+//                 its own list, and assets/category.h's vocabulary when villa_assets is built)
 // Words it cannot attach to any of these are returned in `unparsed` with their place in the text; they
 // are never dropped silently.
 //
@@ -32,6 +33,7 @@
 //                                                                upper levels together (kUpperLevels)
 //                                                                in a three-floor one
 //   "middle floor"                                            -> level 1
+//   "the upper two floors" (", three on each")                -> the highest two levels (three on each)
 //   "on each floor", "on every level", "on both floors"       -> every level (kEachLevel)
 #include <optional>
 #include <string>

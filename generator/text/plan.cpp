@@ -86,7 +86,8 @@ PlanSummary PlanLayout(const std::string& text, const PlanOptions& options) {
     summary.unmet = summary.check.unmet();
   }
   if (summary.valid()) {
-    summary.outcome = summary.unmet.empty() ? PlanOutcome::kMet : PlanOutcome::kPartial;
+    // Words the parser could not place may hold a requirement it missed: never "met" then (issue 17).
+    summary.outcome = summary.unmet.empty() && summary.brief.unparsed.empty() ? PlanOutcome::kMet : PlanOutcome::kPartial;
     summary.error.clear();
   } else if (summary.layout || summary.attempts > 0) {
     summary.outcome = PlanOutcome::kInvalid;
@@ -113,6 +114,8 @@ std::string PlanSummary::BriefReport() const {
   out << "; " << (seconds < 1.0 ? Number(std::round(seconds * 10000) / 10) + " ms" : Number(std::round(seconds * 100) / 100) + " s")
       << "\n";
   out << "brief: " << BriefOneLine(brief) << "\n";
+  for (const auto& f : brief.furniture)
+    out << "furnishing wish (for the furnish stage, not a layout requirement): \"" << f.source.text << "\"\n";
   for (const auto& u : brief.unparsed) out << "not understood: \"" << u.text << "\"\n";
   for (const auto& c : brief.conflicts) out << "conflict: " << c << "\n";
   for (const auto& u : unmet) out << "unmet: " << u.requirement << (u.detail.empty() ? "" : " (" + u.detail + ")") << "\n";

@@ -57,7 +57,8 @@ struct PlanOptions {
 
 enum class PlanOutcome {
   kMet,          // a valid layout that meets every requirement of the brief
-  kPartial,      // a valid layout; some requirements are unmet (listed in `unmet`)
+  kPartial,      // a valid layout; some requirements are unmet (listed in `unmet`), or some words of the
+                 // request were not understood (brief.unparsed), so the brief may miss a requirement
   kInvalid,      // only invalid layouts (or none that parsed) came out of all rounds / attempts
   kFailed,       // no answer at all: transport failure, refused request, bad options
 };

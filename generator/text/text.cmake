@@ -18,3 +18,9 @@ if(TARGET villa_building)
   target_link_libraries(villa_generator PUBLIC villa_building)
 endif()
 villa_add_commands(plan.cpp eval.cpp)
+# The furnishing stage's object vocabulary (assets/category.h) lets the brief parser read furniture wishes
+# it has no word for in its own lexicon ("bookshelves full of books") as wishes, not as words not understood.
+if(TARGET villa_assets)
+  target_link_libraries(villa_generator PUBLIC villa_assets)
+  target_compile_definitions(villa_generator PRIVATE VILLA_HAVE_ASSET_VOCABULARY=1)
+endif()

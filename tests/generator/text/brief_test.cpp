@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "generator/text/brief.h"
+#include "generator/text/plan.h"
 #include "layout/layout_io.h"
 
 namespace villa {
@@ -360,6 +361,101 @@ TEST_CASE("any text parses: random word soup keeps every span inside the text") 
     CHECK_NOTHROW(BriefToJson(brief).dump());
     CHECK(brief.RequirementCount() >= 0);
   }
+}
+
+// Issue 17 defect 7: four requests the parser used to misread while reporting them met.
+
+TEST_CASE("'each reached from a bedroom' links the balconies to the bedrooms already counted") {
+  Brief brief = ParseBrief(
+      "A two-story villa with two bedrooms upstairs, and two balconies upstairs, each reached from a bedroom.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(Exact(brief, Category::kBedroom, 1) == 2);
+  CHECK(Exact(brief, Category::kBalcony, 1) == 2);
+  CHECK(!FindRooms(brief, Category::kBedroom, kAnyLevel));
+  REQUIRE(HasConnection(brief, Category::kBalcony, Category::kBedroom, LinkKind::kAny, 1));
+  for (const auto& c : brief.connections)
+    if (c.from == Category::kBalcony) CHECK(c.every);
+  CHECK(brief.unparsed.empty());
+}
+
+TEST_CASE("chained 'opens onto' gives both openings") {
+  Brief brief = ParseBrief(
+      "A two-story villa where the kitchen opens onto the dining room and the dining room opens onto the living "
+      "room.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(HasConnection(brief, Category::kKitchen, Category::kDiningRoom, LinkKind::kOpen, kAnyLevel));
+  CHECK(HasConnection(brief, Category::kDiningRoom, Category::kLivingRoom, LinkKind::kOpen, kAnyLevel));
+  CHECK(brief.connections.size() == 2);
+  CHECK(brief.unparsed.empty());
+}
+
+TEST_CASE("'six bedrooms on the upper two floors, three on each' gives three on each upper floor") {
+  Brief brief = ParseBrief("A three-story villa with six bedrooms on the upper two floors, three on each.");
+  INFO(BriefToJson(brief).dump(2));
+  REQUIRE(brief.floors == 3);
+  CHECK(Exact(brief, Category::kBedroom, 1) == 3);
+  CHECK(Exact(brief, Category::kBedroom, 2) == 3);
+  CHECK(!FindRooms(brief, Category::kBedroom, 0));
+  CHECK(!FindRooms(brief, Category::kBedroom, kAnyLevel));
+  CHECK(!FindRooms(brief, Category::kBedroom, kUpperLevels));
+  CHECK(brief.conflicts.empty());
+  CHECK(brief.unparsed.empty());
+}
+
+TEST_CASE("'three on each' that does not add up to the total is a conflict") {
+  Brief brief = ParseBrief("A three-story villa with five bedrooms on the upper two floors, three on each.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(Exact(brief, Category::kBedroom, 1) == 3);
+  CHECK(Exact(brief, Category::kBedroom, 2) == 3);
+  CHECK(brief.conflicts.size() == 1);
+}
+
+TEST_CASE("'both bathrooms on the ground floor' asks for two there") {
+  Brief brief = ParseBrief("A two-story villa with both bathrooms on the ground floor.");
+  INFO(BriefToJson(brief).dump(2));
+  CHECK(Exact(brief, Category::kBathroom, 0) == 2);
+  CHECK(brief.unparsed.empty());
+  // "both" after the bathrooms were counted refers to them, it adds none.
+  Brief again = ParseBrief("Two bathrooms and a kitchen. Both bathrooms are on the ground floor.");
+  INFO(BriefToJson(again).dump(2));
+  CHECK(Exact(again, Category::kBathroom) == 2);
+  const BriefRooms* ground = FindRooms(again, Category::kBathroom, 0);
+  REQUIRE(ground);
+  CHECK(ground->min == 1);  // a reference: at least one of the two there
+}
+
+TEST_CASE("a request with words not understood is partial, never met, and the report quotes them") {
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  PlanSummary plan = PlanLayout("A two-story villa with a kitchen and a flurbish upstairs.", options);
+  INFO(plan.BriefReport());
+  REQUIRE(plan.valid());
+  CHECK(plan.check.met() == plan.check.total());  // every requirement it did read is met...
+  REQUIRE(plan.brief.unparsed.size() == 1);
+  CHECK(plan.brief.unparsed[0].text == "flurbish");
+  CHECK(plan.outcome == PlanOutcome::kPartial);  // ...but not the word it could not place
+  CHECK(plan.BriefReport().find("not understood: \"flurbish\"") != std::string::npos);
+  CHECK(plan.BriefReport().rfind("partial", 0) == 0);
+}
+
+TEST_CASE("make run's request is met, its furniture wishes go to the furnish stage") {
+  const std::string request =
+      "I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the ground "
+      "floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic windows on "
+      "the top floor. Put a TV in the living room and bookshelves full of books in the children's room.";
+  PlanOptions options;
+  options.seed = 7;
+  PlanSummary plan = PlanLayout(request, options);
+  INFO(plan.BriefReport());
+  CHECK(plan.brief.unparsed.empty());
+  REQUIRE(plan.brief.furniture.size() == 2);
+  CHECK(plan.brief.furniture[0].item == "TV");
+  CHECK(plan.brief.furniture[0].category == Category::kLivingRoom);
+  CHECK(plan.brief.furniture[1].item == "bookshelves full of books");
+  CHECK(plan.brief.furniture[1].category == Category::kChildrenRoom);
+  CHECK(plan.outcome == PlanOutcome::kMet);
+  CHECK(plan.BriefReport().find("furnishing wish") != std::string::npos);
+  CHECK(plan.BriefReport().find("not understood") == std::string::npos);
 }
 
 }  // namespace villa
