@@ -54,6 +54,35 @@ struct ReachFigures {
 struct FurnishedVilla;
 using ReachCheck = std::function<Result<ReachFigures>(const FurnishedVilla& villa)>;
 
+// What a critic (issue 14, critic/) is given for one room. It drives the room's solver session
+// (RoomSolver: Initialise, Apply, RunAgent) in place of SolveRoom and hands back the solution with its
+// own record. Everything pointed to outlives the call; critics run on the room workers' threads.
+struct RoomCriticInput {
+  const scene::RoomContext* context = nullptr;
+  const BuildingMesh* building = nullptr;
+  const RoomProblem* problem = nullptr;
+  const std::vector<scene::SceneObject>* planned = nullptr;  // the plan's objects, assets chosen
+  const std::vector<scene::SemanticEdge>* edges = nullptr;   // the plan's semantic edges
+  std::string text;       // the request ("" = priors only)
+  SolveOptions solve;     // the room's seed already mixed in
+  ExactCheckOptions check;
+  AssetResolver resolve;  // add_entity's asset ids to records and meshes
+};
+// What report.json says of a room's critic.
+struct CriticFigures {
+  std::string critic;  // "offline", "mllm"
+  int rounds = 0;
+  int requests = 0, cache_hits = 0;  // questions sent to a model / answered from the answer cache
+  int prompt_tokens = 0, completion_tokens = 0;
+  double seconds = 0.0;              // wall time of the critic's rounds (after the first solve)
+  nlohmann::ordered_json record;     // the critic's own account: rounds, scores, relations before and after
+};
+struct RoomCriticResult {
+  RoomSolution solution;
+  CriticFigures figures;
+};
+using RoomCritic = std::function<Result<RoomCriticResult>(const RoomCriticInput& input)>;
+
 struct FurnishOptions {
   // Rooms to furnish, as the layout names them ("living-room_0/0"); empty: every room. The others are
   // listed in the scene with no objects and the note "not asked for".
@@ -75,6 +104,10 @@ struct FurnishOptions {
   bool pictures = true;        // rooms/<room>.png and plan.png
   bool force = false;          // overwrite the outputs of an earlier run in the folder (never other files)
   ReachCheck reach;            // issue 13 plugs reachability in here
+  // Issue 14: a critic drives each room's solver (critic/critic.h makes one); unset: the rule agent alone.
+  RoomCritic critic;
+  // The A-PSSG planner (an MLLM that revises the priors' graph, critic/); unset: PriorsPlanner(planner).
+  std::shared_ptr<const scene::GraphPlanner> graph_planner;
 
   // Progress (the CLI's bar), both may be empty: on_start once with the number of rooms to furnish, then
   // on_room_done from the worker threads as each room finishes.
@@ -100,6 +133,7 @@ struct RoomReport {
   std::vector<std::string> dropped;  // left out before solving, with why
   std::vector<std::string> notes;    // approximations of the problem mapping
   std::optional<SolveSummary> solve;  // absent when nothing was placed (no objects, not asked)
+  std::optional<CriticFigures> critic;  // when a critic drove the solver
   std::string outcome;               // "converged" / "budget" / "infeasible"
   std::string reason;                // why, in words
   int objects = 0;                   // NO: objects placed
