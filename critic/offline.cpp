@@ -202,6 +202,10 @@ std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const s
   const double face = std::atan2(ob.c.x - now.pose.x, -(ob.c.y - now.pose.y));
   std::vector<double> yaws{now.pose.yaw, face, face + std::numbers::pi};
   for (int k = 0; k < 4; ++k) yaws.push_back(ob.yaw + k * kHalfPi);
+  // Turned a little either way, and half way to facing: a second face_to of the object may still hold.
+  for (int k = -4; k <= 4; ++k)
+    if (k != 0) yaws.push_back(now.pose.yaw + k * std::numbers::pi / 18.0);
+  yaws.push_back(now.pose.yaw + 0.5 * solver::WrapAngle(face - now.pose.yaw));
   for (double yaw : yaws) out.push_back({{now.pose.x, now.pose.y, now.pose.z, solver::WrapAngle(yaw), scale}, -1});
   // Around the other object: on each of its sides, at the relation's gaps, along the side.
   const double hx = 0.5 * o.asset.size.x * scale, hy = 0.5 * o.asset.size.y * scale;

@@ -10,8 +10,10 @@ namespace villa::critic {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-// Measurements within this of a bound count as meeting it (float noise, not geometry).
-constexpr double kSlack = 1e-6;
+// The measures' resolution: a relation within a millimetre (lengths) or a tenth of a degree (angles) of
+// its bound holds; finer misses are the optimiser's float noise, not something a person could see.
+constexpr double kSlack = 1e-3;
+constexpr double kAngleSlack = 0.1;
 
 std::string Fixed(double v, int digits) {
   char text[64];
@@ -60,7 +62,7 @@ EdgeCheck CheckEdge(const scene::SemanticEdge& edge, const ObjectBox& s, const O
       const double dx = t.c.x - s.c.x, dy = t.c.y - s.c.y;
       const double angle = std::abs(std::atan2(fx * dy - fy * dx, fx * dx + fy * dy + 1e-12)) / kDeg;
       c.value = angle;
-      c.satisfied = angle <= *p.max_deg + 1e-4;
+      c.satisfied = angle <= *p.max_deg + kAngleSlack;
       c.violation = std::max(0.0, angle - *p.max_deg) / 30.0;
       c.detail = "facing off by " + Fixed(angle, 1) + " deg, at most " + Fixed(*p.max_deg, 0);
       break;
@@ -102,7 +104,7 @@ EdgeCheck CheckEdge(const scene::SemanticEdge& edge, const ObjectBox& s, const O
       const double d = 4.0 * (s.yaw - t.yaw);
       const double deviation = std::abs(std::atan2(std::sin(d), std::cos(d)) / 4.0) / kDeg;
       c.value = deviation;
-      c.satisfied = deviation <= *p.max_deg + 1e-4;
+      c.satisfied = deviation <= *p.max_deg + kAngleSlack;
       c.violation = std::max(0.0, deviation - *p.max_deg) / 30.0;
       c.detail = "turned " + Fixed(deviation, 1) + " deg from the target's axes, at most " + Fixed(*p.max_deg, 0);
       break;

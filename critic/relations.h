@@ -20,8 +20,10 @@
 //   zone      an interaction zone (its owner's full width, `depth` m deep, its height, on its side) holds
 //             no part of another object's box: a box overlapping it in plan by more than 1 mm with a
 //             height range that meets it; exempt objects, what stands on them, the owner's own things and
-//             floor coverings (rugs) do not count
-// Angles in degrees, lengths in metres, the world frame of SCENE.md.
+//             floor coverings (rugs) do not count (an overlap of 1 mm or less does not either)
+// A bound is met within the measures' resolution: 1 mm for lengths, 0.1 degree for angles (the optimiser
+// ends a hair past a bound; no person could see it). Angles in degrees, lengths in metres, the world frame
+// of SCENE.md.
 #include <map>
 #include <string>
 #include <vector>
