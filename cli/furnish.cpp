@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/embedding_flags.h"
 #include "critic/critic.h"
 #include "critic/graph_planner.h"
 #include "solver/furnish.h"
@@ -29,6 +30,7 @@ struct FurnishCommand {
   bool no_cache = false;
   bool no_critic_log = false;
   critic::CriticOptions critic_options;
+  EmbeddingFlags embeddings;
 };
 
 // The critic of the run from its flags (a usage error for a bad combination).
@@ -67,6 +69,9 @@ void ApplyCriticFlags(FurnishCommand& command) {
 
 void Run(FurnishCommand& command) {
   ApplyCriticFlags(command);
+  // The embeddings' key: the critic's --api-key-env unless the endpoints differ in need (one key flag).
+  command.embeddings.api_key_env = command.api_key_env;
+  command.options.acquire.embedder = EmbedderFrom(command.embeddings, "furnish");
   if (std::string problem = command.options.Check(); !problem.empty()) throw UsageError("furnish: " + problem);
   std::unique_ptr<ProgressBar> progress;
   if (!command.quiet) {
@@ -153,6 +158,10 @@ Registration registration{75, [](CLI::App& app) {
   sub->add_flag("--no-cache", command->no_cache, "mllm: neither read nor write cached answers");
   sub->add_flag("--no-schema", [&c](std::int64_t) { c.json_schema = false; },
                 "mllm: do not send response_format json_schema (servers without structured output)");
+  sub->add_option("--embeddings", command->embeddings.url,
+                  "rank library assets by the embeddings of this OpenAI-compatible server (with --embeddings-model) "
+                  "instead of the offline lexical ones; cached on disk by text");
+  sub->add_option("--embeddings-model", command->embeddings.model, "the embedding model's name");
   sub->add_flag("--critic-pictures", c.log_pictures, "offline: log the pictures of every round too (slower)");
   sub->add_flag("--no-critic-log", command->no_critic_log, "do not write DIR/critic/");
   sub->add_flag("-q,--quiet", command->quiet, "print nothing on success");

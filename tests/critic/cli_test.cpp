@@ -18,15 +18,8 @@ namespace villa {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::TempDir;
 using testing::Json;
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("villa_critic_cli_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 std::string Read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -39,6 +32,7 @@ const std::string kFurnish = "furnish " + testing::kHouse + " --procedural -q ";
 
 TEST_CASE("villa furnish refuses bad critic flags with exit 2", "[critic][cli]") {
   TempDir out("usage");
+  fs::remove_all(out.path);
   const std::string o = " -o " + out.path.string();
   auto no_url = testing::RunVilla(kFurnish + "--critic mllm --model m" + o);
   CHECK(no_url.status == 2);

@@ -21,6 +21,7 @@ namespace villa {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::TempDir;
 using testing::Json;
 using testing::Reply;
 using testing::ScriptedServer;
@@ -47,15 +48,6 @@ Json Action(const std::string& kind, const std::string& id) {
   return {{"action", kind}, {"id", id}, {"x", nullptr}, {"y", nullptr}, {"yaw", nullptr}, {"scale", nullptr}, {"wall", nullptr},
           {"category", nullptr}, {"parent", nullptr}, {"relation", nullptr}, {"reason", "the reviewer asked"}};
 }
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("villa_critic_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 critic::CriticOptions ModelCritic(const ScriptedServer& server, int rounds = 1, int size_px = 256) {
   critic::CriticOptions o;

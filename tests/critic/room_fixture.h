@@ -2,6 +2,9 @@
 // One room of a fixture layout made ready for the critic, as the furnish pipeline makes it: the layout
 // built, the room's context, the priors' graph, procedural assets, the solver's problem, and the
 // RoomCriticInput that points at all of them.
+#include <unistd.h>
+
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,6 +33,17 @@ struct CriticRoom {
   scene::RoomPlan plan;
   solver::SceneRoomProblem mapped;
   solver::RoomCriticInput input;
+};
+
+// A folder of its own under the system's temporary folder, removed afterwards.
+struct TempDir {
+  std::filesystem::path path;
+  explicit TempDir(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / ("villa_critic_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
 };
 
 inline const std::string kHouse = std::string(VILLA_FIXTURE_DIR) + "/layouts/house_one_floor.json";
