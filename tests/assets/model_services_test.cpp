@@ -155,7 +155,7 @@ TEST_CASE("Turning an asset to its picked front turns its mesh, size, surfaces a
   CHECK(back.record.cavities[0].open == "-y");
 }
 
-TEST_CASE("The model picks the front from four views; the library is rewritten with the turned asset and who decided", "[assets][front]") {
+TEST_CASE("The model picks the front from four views, the library is rewritten with the turned asset and who decided", "[assets][front]") {
   const fs::path dir = ImportedLibrary("front");
   auto library = AssetLibrary::Open(dir / "lib");
   REQUIRE(library.ok());

@@ -50,7 +50,7 @@ TEST_CASE("villa furnish refuses bad critic flags with exit 2", "[critic][cli]")
   CHECK_FALSE(fs::exists(out.path / "scene.json"));
 }
 
-TEST_CASE("villa furnish: the offline critic by default, its report and round logs, a picture per room; --critic none", "[critic][cli]") {
+TEST_CASE("villa furnish: the offline critic by default, its report and round logs, a picture per room, --critic none", "[critic][cli]") {
   TempDir out("offline"), none("none");
   auto run = testing::RunVilla(kFurnish + "--room living-room_0/0 --room bathroom_0/0 -o " + out.path.string());
   REQUIRE(run.status == 0);

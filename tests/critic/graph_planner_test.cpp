@@ -87,7 +87,7 @@ TEST_CASE("A model's revision of the priors' graph is taken when the structural 
   CHECK(planner.requests() == 1);
 }
 
-TEST_CASE("A revision the validator refuses goes back with its findings; with none usable the draft stays", "[critic][graph]") {
+TEST_CASE("A revision the validator refuses goes back with its findings, with none usable the draft stays", "[critic][graph]") {
   auto room = testing::MakeCriticRoom(kRoom);
   const scene::PlanRequest request{room->context, "", 3, &room->layout};
   auto draft = scene::PriorsPlanner().Plan(request);

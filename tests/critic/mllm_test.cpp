@@ -92,7 +92,7 @@ std::string ReadAll(const fs::path& p) {
 
 }  // namespace
 
-TEST_CASE("The model critic's requests carry five PNG views as data URIs, the state and strict schemas; a second run is answered from the cache", "[critic][mllm]") {
+TEST_CASE("The model critic's requests carry five PNG views as data URIs, the state and strict schemas, a second run is answered from the cache", "[critic][mllm]") {
   auto room = testing::MakeCriticRoom("living-room_0/0");
   TempDir cache("cache");
   ScriptedServer server({Answer(Evaluation(6.5, {{{"sofa-0", "tv-stand-0"}, "the sofa is far from the screen"}})),
@@ -150,7 +150,7 @@ TEST_CASE("The model critic's requests carry five PNG views as data URIs, the st
   for (size_t i = 0; i < first->solution.placements.size(); ++i) CHECK(second->solution.placements[i].pose.x == first->solution.placements[i].pose.x);
 }
 
-TEST_CASE("An answer that removes an object removes it (and what stands on it); the room stays physically valid", "[critic][mllm]") {
+TEST_CASE("An answer that removes an object removes it (and what stands on it), the room stays physically valid", "[critic][mllm]") {
   auto room = testing::MakeCriticRoom("living-room_0/0");
   const std::string lamp = "living-room_0/0/floor-lamp-0", table = "living-room_0/0/coffee-table-0";
   REQUIRE(room->mapped.problem.Find(lamp) >= 0);
@@ -174,7 +174,7 @@ TEST_CASE("An answer that removes an object removes it (and what stands on it); 
   CHECK(removals == 2);
 }
 
-TEST_CASE("update_pose from the model moves the TV stand to face the sofa; the solver keeps CR at 0", "[critic][mllm]") {
+TEST_CASE("update_pose from the model moves the TV stand to face the sofa, the solver keeps CR at 0", "[critic][mllm]") {
   auto room = testing::MakeCriticRoom("living-room_0/0");
   const std::string sofa_id = "living-room_0/0/sofa-0", stand_id = "living-room_0/0/tv-stand-0";
   // The arrangement the critic starts from (the same solve: same problem, same seed).
@@ -299,7 +299,7 @@ TEST_CASE("Every round is logged for replay, and the API key is sent only in the
   CHECK(result->figures.record.dump().find("SECRET") == std::string::npos);
 }
 
-TEST_CASE("A model that names unknown objects or actions is asked again; a server that fails leaves the solver's room", "[critic][mllm]") {
+TEST_CASE("A model that names unknown objects or actions is asked again, a server that fails leaves the solver's room", "[critic][mllm]") {
   auto room = testing::MakeCriticRoom("bathroom_0/0");
   Json bad = Action("remove_entity", "sofa-9");
   ScriptedServer server({Answer(Evaluation(6)), Answer(Json{{"actions", Json::array({bad})}}),

@@ -68,7 +68,7 @@ TEST_CASE("Side relations are bands: past the target's centre line and within it
   CHECK(far.violation == Approx(0.3));
 }
 
-TEST_CASE("next_to, near and far read the gap between the boxes; align the yaws; centered the lateral offset", "[critic][relations]") {
+TEST_CASE("next_to, near and far read the gap between the boxes, align the yaws, centered the lateral offset", "[critic][relations]") {
   const ObjectBox bed = Box(0, 0, 0, 1.6, 2.0);
   CHECK(critic::PlanGap(Box(1.05, 0, 0, 0.4, 0.4), bed) == Approx(0.05));
   CHECK(CheckEdge(Edge(R::kNextTo), Box(1.05, 0, 0, 0.4, 0.4), bed).satisfied);

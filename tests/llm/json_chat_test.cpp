@@ -48,7 +48,7 @@ std::string Legs(const nlohmann::json& j) {
 
 }  // namespace
 
-TEST_CASE("A JSON answer is accepted as it comes; fences and prose around it are taken off", "[llm][json_chat]") {
+TEST_CASE("A JSON answer is accepted as it comes, fences and prose around it are taken off", "[llm][json_chat]") {
   ScriptedServer server({Completion("Sure:\n```json\n{\"legs\": 4}\n```")});
   JsonChatResult r = AskJson(OptionsFor(server), kQuestion, nullptr, Legs, {});
   REQUIRE(r.accepted);
