@@ -161,6 +161,7 @@ void OfflineRounds(LoopState& st) {
   std::set<std::string> given_up;
   double best_score = -1.0;
   int tries = 0;
+  bool escalating = false;  // the last round gave single moves up: group moves come next
   OfflineProposalOptions proposal;
   proposal.clearance = st.options.clearance;
   for (int round = 1; round <= st.options.rounds; ++round) {
@@ -190,7 +191,8 @@ void OfflineRounds(LoopState& st) {
       st.log_errors.insert(st.log_errors.end(), log.errors().begin(), log.errors().end());
     };
     if (problems.empty()) return finish_round("every relation of the graph holds and every zone is clear");
-    if (now.summary.energy.total <= st.options.energy_threshold && score <= best_score + 1e-9)
+    // A round that only gave problems up still has their group moves to try in the next one.
+    if (now.summary.energy.total <= st.options.energy_threshold && score <= best_score + 1e-9 && !escalating)
       return finish_round("E <= " + std::to_string(st.options.energy_threshold).substr(0, 4) + " and the score stopped improving");
     best_score = std::max(best_score, score);
     if (tries >= st.options.max_tries) return finish_round("the critic's tries are spent");
@@ -198,6 +200,7 @@ void OfflineRounds(LoopState& st) {
     if (attempts.empty()) return finish_round("no candidate pose is left for the unmet relations");
     Json tried = Json::array();
     int kept = 0;
+    escalating = false;
     for (const Attempt& attempt : attempts) {
       if (tries >= st.options.max_tries) break;
       const solver::RoomSolution before = st.session.Solution();
@@ -250,7 +253,10 @@ void OfflineRounds(LoopState& st) {
       }
       entry["kept"] = helped;
       kept += helped;
-      if (!helped) given_up.insert(attempt.problem);
+      if (!helped) {
+        given_up.insert(attempt.problem);
+        escalating = escalating || attempt.problem.find(" [group]") == std::string::npos;
+      }
       tried.push_back(std::move(entry));
     }
     record["attempts"] = std::move(tried);

@@ -73,7 +73,10 @@ struct Room {
   }
   // The placements with object i moved to `pose` (scale included) and what stands on it carried along.
   std::vector<solver::ObjectPlacement> Moved(int i, const solver::Pose& pose, int wall) const {
-    std::vector<solver::ObjectPlacement> out = solution.placements;
+    return Moved(solution.placements, i, pose, wall);
+  }
+  std::vector<solver::ObjectPlacement> Moved(std::vector<solver::ObjectPlacement> out, int i, const solver::Pose& pose,
+                                             int wall) const {
     const solver::Pose old = out[i].pose;
     const double turn = pose.yaw - old.yaw, c = std::cos(turn), s = std::sin(turn), k = pose.scale / old.scale;
     for (int d : Descendants(i)) {
@@ -97,35 +100,44 @@ struct Candidate {
   bool proven = false;            // the solver found it itself (RoomSolver::Suggest): it fits
 };
 
-// Whether object i at `pose` keeps `clearance` from the other free-standing objects, stays on the free
-// floor and out of the keep-outs. Only the object's own box is tested (what stands on it moves with it and
-// stays within it).
-bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, const std::set<int>& ignore = {}) {
+// The free-standing objects closer than `clearance` to object i at `pose` (none: it is free of them), or
+// nothing at all when the floor's edge or a keep-out is in the way (no object can be moved out of that).
+std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::Pose& pose, double clearance,
+                                         const std::set<int>& ignore = {}) {
   const solver::ProblemObject& o = room.solution.objects[i];
   solver::ObjectPlacement pl = room.solution.placements[i];
   pl.pose = pose;
   ObjectBox box = BoxOf(o, pl);
   const double top = pose.z + (room.stack_top[i] - room.solution.placements[i].pose.z) * pose.scale / room.solution.placements[i].pose.scale;
   const bool covering = Covering(o, pose.scale);
+  std::vector<int> blockers;
   for (size_t j = 0; j < room.solution.objects.size(); ++j) {
     if (static_cast<int>(j) == i || room.parent[j] >= 0 || ignore.count(static_cast<int>(j))) continue;
     const solver::ProblemObject& other = room.solution.objects[j];
     if (covering || Covering(other, room.solution.placements[j].pose.scale)) continue;
     const ObjectBox b = BoxOf(other, room.solution.placements[j]);
     if (std::min(top, room.stack_top[j]) - std::max(box.z0, b.z0) <= 0.0) continue;
-    if (PlanGap(box, b) < clearance) return false;
+    if (PlanGap(box, b) < clearance) blockers.push_back(static_cast<int>(j));
   }
   if (o.relation != solver::Relation::kOnWall) {
     for (const Point& p : box.Footprint())
-      if (!PointInRing(p, room.problem.free_floor, 0.0) || DistanceToBoundary(p, room.problem.free_floor) < 0.012) return false;
+      if (!PointInRing(p, room.problem.free_floor, 0.0) || DistanceToBoundary(p, room.problem.free_floor) < 0.012) return std::nullopt;
   }
   box.z1 = top;
   const Ring footprint = box.Footprint();
   for (const solver::KeepOut& k : room.problem.keep_outs) {
     if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
-    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return false;
+    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return std::nullopt;
   }
-  return true;
+  return blockers;
+}
+
+// Whether object i at `pose` keeps `clearance` from the other free-standing objects, stays on the free
+// floor and out of the keep-outs. Only the object's own box is tested (what stands on it moves with it and
+// stays within it).
+bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, const std::set<int>& ignore = {}) {
+  auto blockers = Blockers(room, i, pose, clearance, ignore);
+  return blockers && blockers->empty();
 }
 
 // Poses along a wall for a wall-bound object: its back at its gap from the wall, facing the room, at
@@ -416,6 +428,69 @@ namespace {
 
 using Suggestions = std::function<const std::vector<Candidate>&(int object)>;
 
+// Poses near where object k stands (a step of 0.25 to 1.2 m in eight directions, or along its wall), for
+// making room: `away` is the box it must keep clear of.
+std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away, double clearance) {
+  const solver::ProblemObject& o = room.solution.objects[k];
+  const solver::ObjectPlacement& now = room.solution.placements[k];
+  std::vector<Candidate> out;
+  if (WallBound(o)) {
+    const int w = now.wall;
+    if (w < 0) return out;
+    const solver::WallEdge& wall = room.problem.walls[w];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+    const double t = geo::Dot(geo::Sub({now.pose.x, now.pose.y}, wall.a), d);
+    for (double step : {0.25, 0.5, 0.8, 1.2})
+      for (double sign : {-1.0, 1.0})
+        if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
+  } else if (!OnObject(o)) {
+    for (double step : {0.25, 0.5, 0.8, 1.2})
+      for (int dir = 0; dir < 8; ++dir) {
+        const double a = dir * std::numbers::pi / 4.0;
+        out.push_back({{now.pose.x + step * std::cos(a), now.pose.y + step * std::sin(a), now.pose.z, now.pose.yaw, now.pose.scale}, -1});
+      }
+  }
+  std::vector<Candidate> kept;
+  for (const Candidate& c : out) {
+    solver::ObjectPlacement pl = now;
+    pl.pose = c.pose;
+    if (PlanGap(BoxOf(o, pl), away) >= clearance) kept.push_back(c);
+  }
+  return kept;
+}
+
+// Moves that make room: a pose of object m where the edge would hold but one free-standing object k stands
+// in the way; k steps aside first (to a free pose clear of m's new box), then m moves. Kept when the two
+// together leave fewer unmet relations.
+void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>& candidates, const Unmet& now, double clearance,
+                const std::string& why, std::vector<Ranked>& out) {
+  int tried = 0;
+  for (const Candidate& c : candidates) {
+    if (tried >= 40) break;
+    auto blockers = Blockers(room, m, c.pose, clearance);
+    if (!blockers || blockers->size() != 1) continue;
+    const int k = (*blockers)[0];
+    if (k == other || !room.children[k].empty() || Covering(room.solution.objects[k], room.solution.placements[k].pose.scale)) continue;
+    ++tried;
+    solver::ObjectPlacement moved = room.solution.placements[m];
+    moved.pose = c.pose;
+    const ObjectBox m_box = BoxOf(room.solution.objects[m], moved);
+    for (const Candidate& aside : StepsAside(room, k, m_box, clearance)) {
+      if (!Free(room, k, aside.pose, clearance, {m})) continue;
+      const auto placements = room.Moved(room.Moved(k, aside.pose, aside.wall), m, c.pose, c.wall);
+      const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
+      if (!(u < now)) continue;
+      std::vector<Step> steps = Steps(ActionsFor(room, k, aside, why + " (making room)"));
+      const std::vector<Step> then = Steps(ActionsFor(room, m, c, why));
+      steps.insert(steps.end(), then.begin(), then.end());
+      out.push_back({u, std::hypot(c.pose.x - room.solution.placements[m].pose.x, c.pose.y - room.solution.placements[m].pose.y) +
+                            std::hypot(aside.pose.x - room.solution.placements[k].pose.x, aside.pose.y - room.solution.placements[k].pose.y),
+                     room.solution.objects[k].id, aside, std::move(steps)});
+      break;  // the nearest free step for this candidate
+    }
+  }
+}
+
 // Moves of one object (either end of the edge, or what carries it) that make the edge hold: the solver's
 // own suggestion, then the candidate poses of CandidatesFor, at the object's scale and, when none is
 // free, at its smallest.
@@ -430,9 +505,11 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
     if (mover != m) RankInto(room, mover, suggestion(mover), now, options.clearance, line, ranked);
     const solver::ProblemObject& o = room.solution.objects[mover];
     const double scale = room.solution.placements[mover].pose.scale;
-    RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, scale), now, options.clearance, line, ranked);
+    const std::vector<Candidate> candidates = CandidatesFor(room, mover, room.Root(other), c.edge, scale);
+    RankInto(room, mover, candidates, now, options.clearance, line, ranked);
     if (ranked.empty() && o.scale_min < scale - 1e-9)
       RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
+    if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
   }
   return Attempt{line, Best(session, std::move(ranked), options.alternatives)};
 }
