@@ -1,5 +1,6 @@
 // The critic loop: the solver's own solve, then rounds of observe / evaluate / act (critic/critic.h).
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -537,7 +538,17 @@ Result<solver::RoomCriticResult> CritiqueRoom(const solver::RoomCriticInput& inp
   // no critic's business).
   for (const scene::SemanticEdge& e : *input.edges)
     if (input.problem->Find(e.source) >= 0 && input.problem->Find(e.target) >= 0) st.graph.push_back(e);
-  if (!options.log_dir.empty()) st.room_log = options.log_dir / RoomLogFolder(input.problem->room);
+  if (!options.log_dir.empty()) {
+    st.room_log = options.log_dir / RoomLogFolder(input.problem->room);
+    // An earlier run's rounds of this room (ours: round-N folders and critic.json) would mix with these.
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(st.room_log, ec)) {
+      const std::string name = entry.path().filename().string();
+      const bool round = name.rfind("round-", 0) == 0 && name.size() > 6 &&
+                         std::all_of(name.begin() + 6, name.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+      if (round || name == "critic.json") fs::remove_all(entry.path(), ec);
+    }
+  }
   st.figures.critic = std::string(CriticKindName(options.kind));
   const RoomRelations before = Measure(st, session.Solution());
 

@@ -112,3 +112,25 @@ TEST_CASE("villa furnish with the offline critic reports the relations before an
 }
 
 }  // namespace villa
+
+namespace villa {
+
+TEST_CASE("A room's earlier round logs are replaced, not mixed with the new ones, and nothing else in the folder goes", "[critic][offline]") {
+  auto room = testing::MakeCriticRoom("bathroom_0/0");
+  testing::TempDir logs("relog");
+  const std::filesystem::path folder = logs.path / "bathroom_0_0";
+  std::filesystem::create_directories(folder / "round-17");
+  std::filesystem::create_directories(folder / "notes");
+  { std::ofstream(folder / "round-17" / "round.json") << "{}"; }
+  { std::ofstream(folder / "mine.txt") << "a person's note"; }
+  critic::CriticOptions options;
+  options.log_dir = logs.path;
+  REQUIRE(critic::CritiqueRoom(room->input, options).ok());
+  CHECK_FALSE(std::filesystem::exists(folder / "round-17"));
+  CHECK(std::filesystem::exists(folder / "round-1" / "round.json"));
+  CHECK(std::filesystem::exists(folder / "critic.json"));
+  CHECK(std::filesystem::exists(folder / "mine.txt"));
+  CHECK(std::filesystem::exists(folder / "notes"));
+}
+
+}  // namespace villa
