@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
     solver::FurnishOptions options;
     options.jobs = 1;
     options.seed = seed;
+    options.check_reach = false;  // the solver alone; bench/reach.cpp measures reachability and its feedback
     options.critic = critic::MakeRoomCritic(critic_options);
     auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
     if (!furnished.ok()) {

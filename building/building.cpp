@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <optional>
 #include <numbers>
 #include <sstream>
 
@@ -318,23 +320,52 @@ TriangleMesh BoxInFrame(const WallFrame& f, double s0, double s1, double q0, dou
 
 // ---------------------------------------------------------------------------------------------------
 // Staircases
+//
+// A switchback stair fills its room: flight 1 on one half of the width from the near side's strip to a
+// landing at the far side, flight 2 back on the other half. The only floor left at each level is the
+// strip along the near side, so every door of the stair room, on every level of its stack, must open onto
+// that strip: the near side is chosen once per stack from the doors of all its levels (ChooseStairSide).
 
-struct StairPlan {
-  Ring footprint;
-  TriangleMesh mesh;
-};
+constexpr double kServedOverlap = 0.45;  // m of a side door's width that must open onto the strip (> 2 x 0.2 m person radius)
+constexpr double kMinGoing = 0.25;       // m, the shortest going a deeper strip may shorten the treads to
+constexpr double kMinLanding = 0.8;      // m, the shallowest landing a deeper strip may leave at the far side
+constexpr double kSideTolerance = 0.05;  // m an opening's ends may lie off a side of the room's rectangle
+constexpr double kMinStairWidth = 1.8;   // m, two flights of 0.9 m when a passage runs beside them
+constexpr double kMinPassage = 0.9;      // m, the narrowest passage left beside narrowed flights
 
-// `near_side`: the side of the room's bounding rectangle (0..3) the flights start from; -1 picks the side
-// by the room's opening and returns it, so stairs stacked above reuse it (each starts where the one
-// below arrives: the only floor left around the hole).
-std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const Ring& footprint, int level,
-                                   double z0, const BuildOptions& options, int& near_side,
-                                   std::vector<std::string>& warnings) {
-  const Ring& poly = room.polygon;
-  // The room's minimum-area bounding rectangle over its edge directions.
-  double best_area = 1e300;
+// The room's minimum-area bounding rectangle over its edge directions, and the free rectangle inside
+// its walls (`f*`) the flights fill. Sides: 0 = v0 (bottom), 1 = u1 (right), 2 = v1 (top), 3 = u0 (left).
+struct StairBox {
   Point u{1, 0}, v{0, 1};
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  double fu0 = 0, fu1 = 0, fv0 = 0, fv1 = 0;
+  double inset[4] = {0, 0, 0, 0};  // m from the room's side to the free rectangle (the wall there + 2 cm)
+  bool rectangular = true;
+  Point At(double a, double b) const { return Add(Scale(u, a), Scale(v, b)); }
+  Point SideMid(int k) const {
+    switch (k) {
+      case 0: return At((u0 + u1) / 2, v0);
+      case 1: return At(u1, (v0 + v1) / 2);
+      case 2: return At((u0 + u1) / 2, v1);
+      default: return At(u0, (v0 + v1) / 2);
+    }
+  }
+  // Distance of `p` into the room from side k's line (m; negative outside).
+  double FromSide(int k, Point p) const {
+    switch (k) {
+      case 0: return Dot(p, v) - v0;
+      case 1: return u1 - Dot(p, u);
+      case 2: return v1 - Dot(p, v);
+      default: return Dot(p, u) - u0;
+    }
+  }
+  double Depth(int near) const { return near % 2 == 0 ? fv1 - fv0 : fu1 - fu0; }
+  double Width(int near) const { return near % 2 == 0 ? fu1 - fu0 : fv1 - fv0; }
+};
+
+StairBox StairBoxOf(const Ring& poly, const Ring& footprint, const BuildOptions& options) {
+  StairBox box;
+  double best_area = 1e300;
   for (size_t i = 0; i < poly.size(); ++i) {
     Point du = Unit(Sub(poly[(i + 1) % poly.size()], poly[i]));
     Point dv = Left(du);
@@ -347,63 +378,198 @@ std::optional<StairPlan> PlanStair(const Layout& layout, const Room& room, const
     }
     if ((a1 - a0) * (b1 - b0) < best_area - 1e-9) {
       best_area = (a1 - a0) * (b1 - b0);
-      u = du, v = dv, u0 = a0, u1 = a1, v0 = b0, v1 = b1;
+      box.u = du, box.v = dv, box.u0 = a0, box.u1 = a1, box.v0 = b0, box.v1 = b1;
     }
   }
-  if (Area(poly) < 0.98 * best_area)
-    warnings.push_back("staircase in " + room.name() + ": the room is not a rectangle; the stair uses its bounding box");
-  auto at = [&](double a, double b) { return Add(Scale(u, a), Scale(v, b)); };
-  // Rectangle sides: 0 = v0 (bottom), 1 = u1 (right), 2 = v1 (top), 3 = u0 (left); inset by the wall there.
-  Point side_mid[4] = {at((u0 + u1) / 2, v0), at(u1, (v0 + v1) / 2), at((u0 + u1) / 2, v1), at(u0, (v0 + v1) / 2)};
-  double inset[4];
+  box.rectangular = Area(poly) >= 0.98 * best_area;
   for (int k = 0; k < 4; ++k)
-    inset[k] = (DistanceToBoundary(side_mid[k], footprint) < kOnLine ? options.exterior_wall_thickness
-                                                             : options.interior_wall_thickness / 2.0) + 0.02;
-  double fu0 = u0 + inset[3], fu1 = u1 - inset[1], fv0 = v0 + inset[0], fv1 = v1 - inset[2];
-  // Arrive (and leave) beside the room's opening: on the level above, else this one.
-  std::optional<Point> access;
-  for (int l : {level + 1, level}) {
-    for (const auto* list : {&layout.opens, &layout.doors}) {
-      for (const Element& e : *list) {
-        Point mid = Lerp(e.shape.a, e.shape.b, 0.5);
-        if (e.OnLevel(l) && DistanceToBoundary(mid, poly) < kOnLine) access = mid;
-        if (access) break;
-      }
-      if (access) break;
-    }
-    if (access) break;
-  }
+    box.inset[k] = (DistanceToBoundary(box.SideMid(k), footprint) < kOnLine ? options.exterior_wall_thickness
+                                                                          : options.interior_wall_thickness / 2.0) + 0.02;
+  box.fu0 = box.u0 + box.inset[3], box.fu1 = box.u1 - box.inset[1];
+  box.fv0 = box.v0 + box.inset[0], box.fv1 = box.v1 - box.inset[2];
+  return box;
+}
+
+// Tread going and strip depth of the flights across a free depth. The default strip is half of what the
+// treads leave (the landing takes the other half); `strip` asks for a deeper one (m from the free
+// rectangle's near edge), paid for by shorter treads (down to kMinGoing) and a shallower landing (down to
+// kMinLanding). nullopt when the depth does not allow the strip asked for, or no stair at all.
+struct FlightSizes {
+  double going = 0.0;    // m per tread
+  double arrival = 0.0;  // m, the strip's depth from the free rectangle's near edge
+};
+
+std::optional<FlightSizes> SizeFlights(double depth, int treads, double strip) {
+  FlightSizes f;
+  f.going = std::min(0.28, (depth - 1.4) / treads);
+  if (f.going < 0.15) return std::nullopt;
+  f.arrival = (depth - treads * f.going) / 2.0;
+  if (strip <= f.arrival + 1e-9) return f;
+  f.going = std::min(f.going, (depth - strip - kMinLanding) / treads);
+  if (f.going < kMinGoing - 1e-9) return std::nullopt;
+  f.arrival = strip;
+  return f;
+}
+
+// A door or open of a stair room, on one level of its stack.
+struct StairDoor {
+  const Element* element = nullptr;
+  int level = 0;
+  int side = -1;  // side of the room's rectangle it lies on, -1 when on none (a room that is not a rectangle)
+};
+
+// The near side of a stack, the strip depth it gets, and the passage left beside narrowed flights.
+struct StairSide {
   int near = 0;
-  if (near_side >= 0) {
-    near = near_side;
-  } else if (access) {
-    double best = 1e300;
-    for (int k = 0; k < 4; ++k) {
-      double dist = Dist(*access, side_mid[k]);
-      if (dist < best) best = dist, near = k;
+  double strip = 0.0;          // m from the free rectangle's near edge; 0 keeps the default
+  int passage = -1;            // the side (adjacent to `near`) a passage runs along, the full depth; -1: none
+  double passage_width = 0.0;  // m of the free rectangle's width the passage takes
+};
+
+// The sides of the free rectangle at across = 0 and at across = width of near side `near`'s frame
+// (PlanStair): the two sides adjacent to `near`.
+int AcrossStart(int near) { return (near + 3) % 4; }
+int AcrossEnd(int near) { return (near + 1) % 4; }
+
+// The strip depth (m from the free rectangle's near edge) `side` needs to serve `door`: 0 when the
+// default strip does (a door on the near side itself, or on the passage's side), +inf when no strip can
+// (the far side beyond the passage, a side door too narrow, or a door on no side).
+double StripNeeded(const StairBox& box, const StairSide& side, const StairDoor& door) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const int near = side.near;
+  // Where the door starts (m from side k's line, >= 0) and how much of [0, hi] it covers.
+  auto overlap = [&](int k, double hi) {
+    double d0 = box.FromSide(k, door.element->shape.a), d1 = box.FromSide(k, door.element->shape.b);
+    if (d0 > d1) std::swap(d0, d1);
+    return std::pair{std::max(d0, 0.0), std::min(d1, hi) - std::max(d0, 0.0)};
+  };
+  if (door.side == near || (side.passage >= 0 && door.side == side.passage)) return 0.0;
+  if (door.side < 0) return kNever;
+  if (door.side == (near + 2) % 4) {
+    if (side.passage < 0) return kNever;
+    return overlap(side.passage, box.inset[side.passage] + side.passage_width).second >= kServedOverlap ? 0.0 : kNever;
+  }
+  auto [d0, width] = overlap(near, 1e300);
+  if (width < kServedOverlap) return kNever;
+  return std::max(0.0, d0 + kServedOverlap - box.inset[near]);
+}
+
+// Chooses the near side of a stair stack from the doors and opens of its room on every level the strip
+// serves (`levels`, ascending: the stairs' levels and the one above the top stair): the side that serves
+// the most levels, then the most doors, then the most doors on the near side or the passage's side (whole
+// doors on floor, not a corner of one), then a door on the lowest level, then full-width flights, then the
+// shallower strip, then the side lowest in the plan (y, then x) -- geometry only, never the order of
+// elements in the file. Warns, naming the room and the door, for each door the chosen side leaves out.
+StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox& box, const std::vector<int>& levels,
+                          int treads, std::vector<std::string>& warnings) {
+  const Ring& poly = room.polygon;
+  std::vector<StairDoor> doors;
+  for (int l : levels)
+    for (const auto* list : {&layout.entrances, &layout.doors, &layout.opens})
+      for (const Element& e : *list) {
+        if (!e.OnLevel(l) || DistanceToBoundary(Lerp(e.shape.a, e.shape.b, 0.5), poly) >= kOnLine) continue;
+        StairDoor d{&e, l, -1};
+        for (int k = 0; k < 4 && d.side < 0; ++k)
+          if (std::abs(box.FromSide(k, e.shape.a)) < kSideTolerance && std::abs(box.FromSide(k, e.shape.b)) < kSideTolerance)
+            d.side = k;
+        doors.push_back(d);
+      }
+  struct Score {
+    int levels = 0, doors = 0, whole = 0, lowest = 0;
+    bool passage = false;
+    double strip = 0.0;
+    Point mid;
+  };
+  auto better = [](const Score& a, const Score& b) {
+    if (a.levels != b.levels) return a.levels > b.levels;
+    if (a.doors != b.doors) return a.doors > b.doors;
+    if (a.whole != b.whole) return a.whole > b.whole;
+    if (a.lowest != b.lowest) return a.lowest > b.lowest;
+    if (a.passage != b.passage) return !a.passage;
+    if (std::abs(a.strip - b.strip) > 1e-9) return a.strip < b.strip;
+    if (std::abs(a.mid.y - b.mid.y) > 1e-6) return a.mid.y < b.mid.y;
+    return a.mid.x < b.mid.x;
+  };
+  StairSide best_side;
+  Score best;
+  bool have = false;
+  for (int k = 0; k < 4; ++k) {
+    // The deepest strip this side allows.
+    const double depth = box.Depth(k), width = box.Width(k);
+    double deepest = 0.0;
+    if (auto f = SizeFlights(depth, treads, 0.0)) deepest = std::max(f->arrival, depth - treads * kMinGoing - kMinLanding);
+    // Full-width flights, or flights narrowed to leave a passage along either adjacent side.
+    const double passage_width = width - std::max(kMinStairWidth, width / 2.0);
+    for (int passage : {-1, AcrossStart(k), AcrossEnd(k)}) {
+      if (passage >= 0 && passage_width < kMinPassage) continue;
+      StairSide candidate{k, 0.0, passage, passage >= 0 ? passage_width : 0.0};
+      Score s;
+      s.mid = box.SideMid(k);
+      s.passage = passage >= 0;
+      std::vector<bool> level_served(levels.size(), false);
+      for (const StairDoor& d : doors) {
+        double need = StripNeeded(box, candidate, d);
+        if (need > deepest + 1e-9) continue;
+        s.strip = std::max(s.strip, need);
+        ++s.doors;
+        s.whole += d.side == k || d.side == passage;
+        s.lowest += d.level == levels.front();
+        level_served[std::find(levels.begin(), levels.end(), d.level) - levels.begin()] = true;
+      }
+      s.levels = static_cast<int>(std::count(level_served.begin(), level_served.end(), true));
+      candidate.strip = s.strip;
+      if (!have || better(s, best)) best = s, best_side = candidate, have = true;
     }
   }
+  // Name the doors left opening onto the flights or the hole.
+  std::optional<FlightSizes> sizes = SizeFlights(box.Depth(best_side.near), treads, best_side.strip);
+  for (const StairDoor& d : doors)
+    if (!sizes || StripNeeded(box, best_side, d) > sizes->arrival + 1e-9)
+      warnings.push_back("staircase in " + room.name() + ": " + d.element->name + " (level " + std::to_string(d.level) +
+                         ") opens onto the flights or their hole, not onto the floor left beside them");
+  return best_side;
+}
+
+struct StairPlan {
+  Ring footprint;
+  TriangleMesh mesh;
+};
+
+// The stair of one level of a stack, starting from `side`'s strip (the one the stair below arrives on).
+std::optional<StairPlan> PlanStair(const Room& room, const StairBox& box, StairSide side, double z0,
+                                   const BuildOptions& options, std::vector<std::string>& warnings) {
+  if (!box.rectangular)
+    warnings.push_back("staircase in " + room.name() + ": the room is not a rectangle; the stair uses its bounding box");
+  auto at = [&](double a, double b) { return box.At(a, b); };
+  const double fu0 = box.fu0, fu1 = box.fu1, fv0 = box.fv0, fv1 = box.fv1;
   // Frame of the stair: origin at a corner of the free rectangle on the near side, `along` into the
   // room, `across` along the near side (so along x across points up: the solid maker orients faces).
   Point origin, along, across;
-  double depth, width;
-  switch (near) {
-    case 0: origin = at(fu0, fv0), along = v, across = u, depth = fv1 - fv0, width = fu1 - fu0; break;
-    case 1: origin = at(fu1, fv0), along = Scale(u, -1), across = v, depth = fu1 - fu0, width = fv1 - fv0; break;
-    case 2: origin = at(fu1, fv1), along = Scale(v, -1), across = Scale(u, -1), depth = fv1 - fv0, width = fu1 - fu0; break;
-    default: origin = at(fu0, fv1), along = u, across = Scale(v, -1), depth = fu1 - fu0, width = fv1 - fv0; break;
+  const Point u = box.u, v = box.v;
+  switch (side.near) {
+    case 0: origin = at(fu0, fv0), along = v, across = u; break;
+    case 1: origin = at(fu1, fv0), along = Scale(u, -1), across = v; break;
+    case 2: origin = at(fu1, fv1), along = Scale(v, -1), across = Scale(u, -1); break;
+    default: origin = at(fu0, fv1), along = u, across = Scale(v, -1); break;
   }
-  near_side = near;
+  const double depth = box.Depth(side.near);
+  double width = box.Width(side.near);
+  // A passage beside the flights: they narrow, and shift off it when it runs along the across = 0 side.
+  if (side.passage >= 0) {
+    width -= side.passage_width;
+    if (side.passage == AcrossStart(side.near)) origin = Add(origin, Scale(across, side.passage_width));
+  }
   const int risers = options.stair_risers / 2;  // per flight
   const int treads = risers - 1;
   const double r = kLevelHeight / options.stair_risers;
-  double g = std::min(0.28, (depth - 1.4) / treads);
-  if (g < 0.15 || width < 1.2) {
+  std::optional<FlightSizes> sizes = SizeFlights(depth, treads, side.strip);
+  if (!sizes || width < 1.2) {
     warnings.push_back("staircase in " + room.name() + ": the room is too small for two flights (" + Fmt(depth) +
                        " x " + Fmt(width) + " m free); no staircase");
     return std::nullopt;
   }
-  double arrival = (depth - treads * g) / 2.0;
+  const double g = sizes->going;
+  const double arrival = sizes->arrival;
   double run_end = arrival + treads * g;  // where flight 1 meets the landing
   auto profile = [&](double a_start, double z_base) {
     Ring ring = {{a_start, z_base}, {a_start + g, z_base}, {a_start + treads * g, z_base + (treads - 1) * r}};
@@ -523,19 +689,46 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
   }
 
   // Staircases: one in each utility room below the top level, with the hole it needs in the slab above.
-  std::map<std::vector<Key>, int> stack_side;  // utility room outline -> near side of its stair stack
+  // A stack is a run of utility rooms with the same outline on consecutive levels; its stairs share one
+  // near side (each starts where the one below arrives), chosen from the doors of every level it serves.
+  std::map<std::vector<Key>, std::vector<int>> by_outline;  // sorted outline -> room indices, level ascending
+  for (int level = 0; level < levels; ++level)
+    for (int i : layout.RoomsOnLevel(level)) {
+      if (layout.rooms[i].category != Category::kUtilityRoom) continue;
+      std::vector<Key> outline;
+      for (Point p : room_rings[i]) outline.push_back(KeyOf(p));
+      std::sort(outline.begin(), outline.end());
+      by_outline[outline].push_back(i);
+    }
+  std::map<int, StairSide> stair_side;  // stair room index -> the near side of its stack
+  for (const auto& [outline, rooms] : by_outline) {
+    for (size_t first = 0; first < rooms.size();) {
+      size_t last = first;
+      while (last + 1 < rooms.size() && layout.rooms[rooms[last + 1]].level == layout.rooms[rooms[last]].level + 1) ++last;
+      // The stairs of the run (every room below the top level) and the levels their strips serve.
+      std::vector<int> stairs, served;
+      for (size_t k = first; k <= last; ++k)
+        if (layout.rooms[rooms[k]].level + 1 < levels) stairs.push_back(rooms[k]);
+      if (!stairs.empty()) {
+        for (int i : stairs) served.push_back(layout.rooms[i].level);
+        served.push_back(served.back() + 1);
+        Room clean = layout.rooms[stairs.front()];
+        clean.polygon = room_rings[stairs.front()];
+        StairBox box = StairBoxOf(clean.polygon, footprints[clean.level], options);
+        StairSide side = ChooseStairSide(layout, clean, box, served, options.stair_risers / 2 - 1, building.warnings);
+        for (int i : stairs) stair_side[i] = side;
+      }
+      first = last + 1;
+    }
+  }
   for (int level = 0; level + 1 < levels; ++level) {
     for (int i : layout.RoomsOnLevel(level)) {
       const Room& room = layout.rooms[i];
       if (room.category != Category::kUtilityRoom) continue;
       Room clean = room;
       clean.polygon = room_rings[i];
-      std::vector<Key> outline;
-      for (Point p : clean.polygon) outline.push_back(KeyOf(p));
-      std::sort(outline.begin(), outline.end());
-      int& near_side = stack_side.emplace(outline, -1).first->second;
-      auto stair = PlanStair(layout, clean, footprints[level], level, building.FloorZ(level), options, near_side,
-                             building.warnings);
+      auto stair = PlanStair(clean, StairBoxOf(clean.polygon, footprints[level], options), stair_side.at(i),
+                             building.FloorZ(level), options, building.warnings);
       if (!stair) continue;
       bool above = false;
       for (int j : layout.RoomsOnLevel(level + 1))

@@ -117,10 +117,14 @@ Registration registration{75, [](CLI::App& app) {
       "  furnished.glb  the building as `villa build` writes it plus one node per object under its room,\n"
       "                 one shared mesh per asset, extras (id, category, asset, parent, relation, licence)\n"
       "  report.json    per room: objects and their assets, energy trace, actions, outcome and reason, CR,\n"
-      "                 FR, OBR, CSR, NO, seconds; totals and per room type\n"
+      "                 FR, OBR, CSR, NO, RCH, ACC, seconds; totals and per room type; reachability: every\n"
+      "                 room and zone reachable or not, its path and length, what blocks it, the feedback\n"
       "  CREDITS        the Creative Commons Attribution models placed, with their creators\n"
+      "  plan.png       the floor plans with every object's footprint and the walks from the entrance\n"
       "  rooms/ROOM.png each room from above and from its south-west corner\n"
       "  critic/ROOM/   every critic round: state, pictures (mllm), requests, answers, actions, energies\n"
+      "Reachability (docs/REACH.md): a person (a 0.2 m disc) from the entrance to every room and interaction\n"
+      "zone, across floors by the stairs; furniture in the way is moved or removed by the room's solver.\n"
       "A room that cannot be completed keeps its best state and says why (outcome budget or infeasible).\n"
       "Exit status: 0 furnished (whatever the rooms' outcomes), 1 unreadable or unbuildable layout, bad\n"
       "library or write failure, 2 usage (unknown --room, existing outputs without --force, bad values).");
@@ -138,6 +142,10 @@ Registration registration{75, [](CLI::App& app) {
   sub->add_flag("--procedural", o.procedural_only, "procedural assets only, whatever library is installed");
   sub->add_flag("--force", o.force, "overwrite the files of an earlier run in DIR");
   sub->add_flag("--allow-invalid", o.allow_invalid, "furnish even when the layout breaks the geometric rules 1-5");
+  sub->add_flag("--no-reach", [&o](std::int64_t) { o.check_reach = false; },
+                "skip reachability (a person walking from the entrance to every room and interaction zone, and the "
+                "feedback that clears what furniture blocks); RCH and ACC are then not measured");
+  sub->add_option("--radius", o.reach.reach.radius, "the person's radius for reachability, m")->capture_default_str();
   critic::CriticOptions& c = command->critic_options;
   sub->add_option("--critic", command->critic, "offline (default: geometric, no server), mllm (a multimodal model) or none")
       ->check(CLI::IsMember({"offline", "mllm", "none"}));

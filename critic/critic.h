@@ -66,8 +66,13 @@ struct CriticOptions {
 // The hook for FurnishOptions::critic; none when options.kind is kNone.
 solver::RoomCritic MakeRoomCritic(const CriticOptions& options);
 
-// One room through the loop (what the hook runs): the solver's own solve first, then the critic's rounds.
-Result<solver::RoomCriticResult> CritiqueRoom(const solver::RoomCriticInput& input, const CriticOptions& options);
+struct CritiqueResult {
+  solver::RoomSolution solution;  // the session's arrangement at the end
+  solver::CriticFigures figures;
+};
+// One room through the loop (what the hook runs) on `input.session` (initialised, the rule agent run), or,
+// when it is null, on a session of its own that first solves the room as the pipeline does.
+Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const CriticOptions& options);
 
 // "living-room_0/0" -> "living-room_0_0": the room's folder under the log folder.
 std::string RoomLogFolder(const std::string& room);

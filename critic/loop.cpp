@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 
 #include "assets/category.h"
@@ -526,11 +527,15 @@ std::string RoomLogFolder(const std::string& room) {
   return name;
 }
 
-Result<solver::RoomCriticResult> CritiqueRoom(const solver::RoomCriticInput& input, const CriticOptions& options) {
+Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const CriticOptions& options) {
   if (std::string problem = options.Check(); !problem.empty()) return Error{problem};
-  solver::RoomSolver session(*input.problem, input.solve, input.check);
-  if (Status s = session.Initialise(); !s.ok()) return Error{s.error()};
-  session.RunAgent();
+  std::unique_ptr<solver::RoomSolver> own;
+  if (!input.session) {
+    own = std::make_unique<solver::RoomSolver>(*input.problem, input.solve, input.check);
+    if (Status s = own->Initialise(); !s.ok()) return Error{s.error()};
+    own->RunAgent();
+  }
+  solver::RoomSolver& session = input.session ? *input.session : *own;
   const auto start = Clock::now();
 
   LoopState st{input, options, session, {}, {}, Json::array(), {}, {}, ""};
@@ -559,7 +564,7 @@ Result<solver::RoomCriticResult> CritiqueRoom(const solver::RoomCriticInput& inp
   }
   session.KeepCurrent();
   session.Finish();
-  solver::RoomCriticResult out;
+  CritiqueResult out;
   out.solution = session.Solution();
   const RoomRelations after = Measure(st, out.solution);
   st.figures.seconds = Since(start);
@@ -596,7 +601,11 @@ Result<solver::RoomCriticResult> CritiqueRoom(const solver::RoomCriticInput& inp
 
 solver::RoomCritic MakeRoomCritic(const CriticOptions& options) {
   if (options.kind == CriticKind::kNone) return {};
-  return [options](const solver::RoomCriticInput& input) { return CritiqueRoom(input, options); };
+  return [options](const solver::RoomCriticInput& input) -> Result<solver::CriticFigures> {
+    auto result = CritiqueRoom(input, options);
+    if (!result.ok()) return Error{result.error()};
+    return std::move(result->figures);
+  };
 }
 
 }  // namespace villa::critic

@@ -55,6 +55,7 @@ const Rgb kGlass{0.93, 0.97, 1.0};
 const Rgb kPanoramicGlass{0.56, 0.80, 0.97};
 const Rgb kPanoramicLine{0.05, 0.35, 0.70};
 const Rgb kRule{0.85, 0.86, 0.88};
+const Rgb kFurnitureLegend{0.62, 0.63, 0.66};
 
 std::string Format(const char* pattern, double value) {
   char buffer[64];
@@ -168,7 +169,7 @@ struct ArrowSpec {
 struct LegendEntry {
   enum Kind {
     kCategory, kExterior, kInterior, kDoor, kOpen, kWindow, kPanoramic, kEntrance, kStairs, kNoWall, kOffWall,
-    kGroupTitle,
+    kFurniture, kPath, kGroupTitle,
   } kind;
   Category category = Category::kRoom;
   std::string text;
@@ -240,6 +241,7 @@ struct Frame {
 
 struct Content {
   const Layout* layout = nullptr;
+  const PlanOverlay* overlay = nullptr;  // may be null
   std::vector<int> levels;
   std::vector<LevelGeometry> geometry;  // by position in `levels`
   std::string title_bold, title_rest;
@@ -262,10 +264,12 @@ Status CheckFinite(const Layout& layout) {
   return Status::Ok();
 }
 
-Result<Content> Analyse(const Layout& layout, const PlanRenderOptions& options, const TextMeasure& measure) {
+Result<Content> Analyse(const Layout& layout, const PlanOverlay* overlay, const PlanRenderOptions& options,
+                        const TextMeasure& measure) {
   if (Status finite = CheckFinite(layout); !finite.ok()) return Error{finite.error()};
   Content c;
   c.layout = &layout;
+  c.overlay = overlay;
   int level_count = layout.LevelCount();
   for (ElementKind kind : kAllElementKinds) {
     for (const Element& e : layout.elements(kind)) level_count = std::max(level_count, e.level + 1);
@@ -343,7 +347,12 @@ Result<Content> Analyse(const Layout& layout, const PlanRenderOptions& options, 
       {LegendEntry::kEntrance, "Entrance"},      {LegendEntry::kStairs, "Staircase"},
       {LegendEntry::kNoWall, "Shared edge without wall"},
       {LegendEntry::kOffWall, "Not on a wall (invalid)"},
+      {LegendEntry::kFurniture, "Furniture"},    {LegendEntry::kPath, "Walking path"},
   };
+  if (overlay) {
+    any[LegendEntry::kFurniture] = !overlay->shapes.empty();
+    any[LegendEntry::kPath] = !overlay->paths.empty();
+  }
   // A shared edge without an interior wall (nor a door or open cut into it) gets a hairline.
   for (const LevelGeometry& g : c.geometry) {
     std::vector<Segment> walls;
@@ -663,13 +672,39 @@ class PlanPainter {
                 fonts_.small, false, kMuted);
 
     for (int r : g.rooms) DrawRoom(g, r);
+    if (c_.overlay) DrawShapes(g.level);
     DrawWalls(g);
     for (const PlacedElement& e : g.opens) DrawOpen(e);
     for (const PlacedElement& e : g.windows) DrawWindow(g, e);
     for (const PlacedElement& e : g.doors) DrawDoor(e, false);
     for (const PlacedElement& e : g.entrances) DrawDoor(e, true);
+    if (c_.overlay) DrawPaths(g.level);
     placed_.clear();
     for (int r : g.rooms) DrawLabel(g, r);
+    paint_.End();
+  }
+
+  // -- overlay: furniture footprints and walking paths --------------------------------------------
+
+  void DrawShapes(int level) {
+    paint_.Begin("furniture-" + std::to_string(level), "Furniture");
+    const double ink = std::clamp(0.02 * s(), 0.6, 1.4);
+    for (const PlanOverlay::Shape& shape : c_.overlay->shapes) {
+      if (shape.level != level || shape.outline.size() < 3) continue;
+      Fill fill{shape.fill, shape.fill_alpha};
+      paint_.Polygon(ToPx(shape.outline), fill, Pen(shape.ink, ink));
+    }
+    paint_.End();
+  }
+
+  void DrawPaths(int level) {
+    paint_.Begin("paths-" + std::to_string(level), "Walking paths");
+    for (const PlanOverlay::Path& path : c_.overlay->paths) {
+      if (path.level != level || path.points.size() < 2) continue;
+      Stroke pen = Pen(path.color, path.width_px, LineCap::kRound);
+      pen.join = LineJoin::kRound;
+      paint_.Path({SubPath{ToPx(path.points), false}}, std::nullopt, pen);
+    }
     paint_.End();
   }
 
@@ -1161,6 +1196,16 @@ class PlanPainter {
       case LegendEntry::kOffWall:
         paint_.Line({x, mid}, {x1, mid}, Pen(kError, 3.0));
         break;
+      case LegendEntry::kFurniture:
+        paint_.Polygon({{x + 6, mid - 6}, {x1 - 6, mid - 6}, {x1 - 6, mid + 6}, {x + 6, mid + 6}}, Fill{kFurnitureLegend},
+                       Pen(kWallInk, 1.0));
+        break;
+      case LegendEntry::kPath: {
+        Stroke pen = Pen(kAccent, 1.6, LineCap::kRound);
+        paint_.Path({SubPath{{{x + 2, mid + 4}, {x + 12, mid - 3}, {x1 - 10, mid + 3}, {x1 - 2, mid - 4}}, false}},
+                    std::nullopt, pen);
+        break;
+      }
       case LegendEntry::kGroupTitle:
         break;
     }
@@ -1176,10 +1221,10 @@ class PlanPainter {
   std::vector<Placed> placed_;  // labels placed on the current floor
 };
 
-Result<Scene> BuildScene(const Layout& layout, const PlanRenderOptions& options) {
+Result<Scene> BuildScene(const Layout& layout, const PlanOverlay* overlay, const PlanRenderOptions& options) {
   if (std::string problem = options.Check(); !problem.empty()) return Error{problem};
   TextMeasure measure(options.font_family);
-  Result<Content> content = Analyse(layout, options, measure);
+  Result<Content> content = Analyse(layout, overlay, options, measure);
   if (!content.ok()) return Error{content.error()};
   Result<Frame> frame = MakeFrame(*content, options, measure);
   if (!frame.ok()) return Error{frame.error()};
@@ -1221,7 +1266,7 @@ Point PlanFrame::ToPixel(int level, Point p) const {
 Result<PlanFrame> ComputePlanFrame(const Layout& layout, const PlanRenderOptions& options) {
   if (std::string problem = options.Check(); !problem.empty()) return Error{problem};
   TextMeasure measure(options.font_family);
-  Result<Content> content = Analyse(layout, options, measure);
+  Result<Content> content = Analyse(layout, nullptr, options, measure);
   if (!content.ok()) return Error{content.error()};
   Result<Frame> frame = MakeFrame(*content, options, measure);
   if (!frame.ok()) return Error{frame.error()};
@@ -1230,8 +1275,10 @@ Result<PlanFrame> ComputePlanFrame(const Layout& layout, const PlanRenderOptions
 
 Point RoomLabelPoint(const Ring& polygon, double precision) { return plan::PoleOfInaccessibility(polygon, precision); }
 
-Result<std::string> RenderPlanPng(const Layout& layout, const PlanRenderOptions& options) {
-  Result<Scene> scene = BuildScene(layout, options);
+namespace {
+
+Result<std::string> PngOf(const Layout& layout, const PlanOverlay* overlay, const PlanRenderOptions& options) {
+  Result<Scene> scene = BuildScene(layout, overlay, options);
   if (!scene.ok()) return Error{scene.error()};
   std::string error;
   std::optional<std::string> png = plan::SceneToPng(*scene, options.png_compression, &error);
@@ -1239,10 +1286,21 @@ Result<std::string> RenderPlanPng(const Layout& layout, const PlanRenderOptions&
   return std::move(*png);
 }
 
-Result<std::string> RenderPlanSvg(const Layout& layout, const PlanRenderOptions& options) {
-  Result<Scene> scene = BuildScene(layout, options);
+Result<std::string> SvgOf(const Layout& layout, const PlanOverlay* overlay, const PlanRenderOptions& options) {
+  Result<Scene> scene = BuildScene(layout, overlay, options);
   if (!scene.ok()) return Error{scene.error()};
   return plan::SceneToSvg(*scene);
+}
+
+}  // namespace
+
+Result<std::string> RenderPlanPng(const Layout& layout, const PlanRenderOptions& options) { return PngOf(layout, nullptr, options); }
+Result<std::string> RenderPlanSvg(const Layout& layout, const PlanRenderOptions& options) { return SvgOf(layout, nullptr, options); }
+Result<std::string> RenderPlanPng(const Layout& layout, const PlanOverlay& overlay, const PlanRenderOptions& options) {
+  return PngOf(layout, &overlay, options);
+}
+Result<std::string> RenderPlanSvg(const Layout& layout, const PlanOverlay& overlay, const PlanRenderOptions& options) {
+  return SvgOf(layout, &overlay, options);
 }
 
 Status RenderPlan(const Layout& layout, const std::filesystem::path& out, const PlanRenderOptions& options) {

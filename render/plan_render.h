@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "layout/layout.h"
+#include "render/palette.h"
 #include "util/result.h"
 
 namespace villa {
@@ -53,6 +54,29 @@ struct PlanRenderOptions {
   std::string Check() const;
 };
 
+// What a furnished plan draws over the rooms, in plan metres: furniture footprints (`villa furnish`,
+// `villa generate`) and walking paths (reachability). Shapes go over the room fills and under the walls,
+// doors and labels, in the order given (floor objects first, so what stands on them shows on top); paths
+// go over the doors.
+struct PlanOverlay {
+  struct Shape {
+    int level = 0;
+    Ring outline;           // plan m, either winding, at least 3 points
+    Rgb fill;               // sRGB
+    double fill_alpha = 1.0;
+    Rgb ink;                // the outline's colour
+  };
+  struct Path {
+    int level = 0;
+    std::vector<Point> points;  // plan m, at least 2
+    Rgb color;
+    double width_px = 1.6;      // thin: it must not hide the furniture under it
+  };
+  std::vector<Shape> shapes;
+  std::vector<Path> paths;
+  bool empty() const { return shapes.empty() && paths.empty(); }
+};
+
 // Picks PNG (.png) or SVG (.svg) by the extension of `out` (case-insensitive); any other extension is
 // an error naming the file. The picture is made in memory and written atomically (temporary beside it,
 // then renamed): an existing file is replaced whole; callers that must not overwrite check first (the
@@ -65,6 +89,11 @@ Result<std::string> RenderPlanPng(const Layout& layout, const PlanRenderOptions&
 // The picture as SVG text (UTF-8). Room names, areas and all other words are real <text> elements;
 // each room is a <g> whose <title> is its JSON name ("kitchen_0/0").
 Result<std::string> RenderPlanSvg(const Layout& layout, const PlanRenderOptions& options = {});
+
+// The same pictures with an overlay drawn on them; the legend names "Furniture" and "Walking path" when
+// the overlay has them. Shapes and paths on a level without a panel are not drawn.
+Result<std::string> RenderPlanPng(const Layout& layout, const PlanOverlay& overlay, const PlanRenderOptions& options = {});
+Result<std::string> RenderPlanSvg(const Layout& layout, const PlanOverlay& overlay, const PlanRenderOptions& options = {});
 
 // Where things land in the picture, for callers that annotate it or test it.
 struct PlanFrame {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job of `make run`, on built-in defaults: what villa does, end to end, in about a minute.
-#   1. generate a villa from a sample request: layout, floor plan, 3D building (glTF) and a preview picture,
-#      then furnish it: every room planned, given assets and solved (scene, furnished glTF, report)
+#   1. generate a furnished villa from a sample request: layout, floor plan with the furniture, scene,
+#      furnished 3D villa (glTF), preview picture and report (macro and micro metrics); score its .glb the
+#      way other methods' outputs are scored (the paper's micro table); furnish a bundled example layout
 #   2. synthesize a small training dataset with previews, auto-annotate it and export it for fine-tuning
 #   3. validate and render the bundled example layouts
 # Prints where every output is.
@@ -14,13 +15,17 @@ mkdir -p "$out"
 has() { "$villa" "$1" --help >/dev/null 2>&1; }
 
 if has generate; then
-  request="I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the ground floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic windows on the top floor."
+  request="I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the ground floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic windows on the top floor. Put a TV in the living room and bookshelves full of books in the children's room."
   echo "== villa generate: \"$request\""
   "$villa" generate "$request" -o "$out/villa" --seed 7 --force
+  if [[ -f "$out/villa/furnished.glb" ]]; then
+    echo "== villa eval --scenes --glb $out/villa/furnished.glb (the paper's micro table, as for another method's file)"
+    "$villa" eval --scenes --glb "$out/villa/furnished.glb" --scene "$out/villa/scene.json"
+  fi
   if has furnish; then
-    echo "== villa furnish $out/villa/layout.json"
-    "$villa" furnish "$out/villa/layout.json" -o "$out/furnished" --seed 7 --force \
-      --text "a cosy living room with two armchairs and bookshelves full of books"
+    echo "== villa furnish examples/two-floor-house.json"
+    "$villa" furnish examples/two-floor-house.json -o "$out/furnished" --seed 7 --force \
+      --text "a cosy living room with two armchairs facing the sofa; a desk by the window in the office"
   fi
 fi
 
@@ -48,8 +53,8 @@ fi
 
 echo
 echo "outputs:"
-[[ -d "$out/villa" ]] && echo "  $out/villa/          generated villa: layout.json, plan.png, building.glb, preview.png, report.json"
-[[ -d "$out/furnished" ]] && echo "  $out/furnished/      the villa furnished: scene.json, furnished.glb, report.json, CREDITS"
+[[ -d "$out/villa" ]] && echo "  $out/villa/          furnished villa: layout.json, plan.png, scene.json, furnished.glb, CREDITS, preview.png, report.json"
+[[ -d "$out/furnished" ]] && echo "  $out/furnished/      an example layout furnished: scene.json, furnished.glb, plan.png, report.json, CREDITS"
 [[ -d "$out/dataset" ]] && echo "  $out/dataset/        synthesized dataset: layouts.jsonl, manifest.json, stats.json, previews"
 [[ -d "$out/finetune" ]] && echo "  $out/finetune/       fine-tune export: train/val/test JSONL, dataset_info.json, trainer configs"
 [[ -d "$out/examples" ]] && echo "  $out/examples/       floor plans of the bundled examples"

@@ -1,10 +1,12 @@
 #include "solver/energy.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "mesh/geometry2d.h"
+#include "solver/free_space.h"
 #include "solver/layer.h"
 #include "solver/residuals.h"
 #include "solver/state.h"
@@ -39,6 +41,25 @@ double PrismOverlap(const OrientedBox& box, const Ring& polygon, double z0, doub
   return ClippedArea(polygon, box.Footprint()) * dz;
 }
 
+// The room as the shared clearance query sees it: the free floor as the region, every object's box but
+// floor coverings (owner = its index) and the convex pieces of every building prism (owner = n + its index).
+template <class Covering>
+FreeSpace RoomFreeSpace(const Ring& free_floor, const std::vector<OrientedBox>& boxes,
+                        const std::vector<std::pair<std::string, Prism>>& building, Covering covering) {
+  const int n = static_cast<int>(boxes.size());
+  std::vector<PlanObstacle> obstacles;
+  for (int i = 0; i < n; ++i) {
+    if (!covering(i)) obstacles.push_back({PlanShape::Polygon(boxes[i].Footprint()), boxes[i].z0, boxes[i].z1, i});
+  }
+  for (size_t p = 0; p < building.size(); ++p) {
+    for (Ring& piece : ConvexPieces(building[p].second.polygon)) {
+      obstacles.push_back({PlanShape::Polygon(std::move(piece)), building[p].second.z0, building[p].second.z1,
+                           n + static_cast<int>(p)});
+    }
+  }
+  return FreeSpace({free_floor}, std::move(obstacles));
+}
+
 }  // namespace
 
 EnergyTerms StateEnergy(const RoomState& st) {
@@ -51,9 +72,26 @@ EnergyTerms StateEnergy(const RoomState& st) {
   std::vector<OrientedBox> boxes;
   for (int i = 0; i < n; ++i) boxes.push_back(st.WorldBox(i));
 
+  // The building: walls (outside the free floor), keep-outs, and the thin prisms in front of openings.
+  std::vector<std::pair<std::string, Prism>> building;
+  for (const KeepOut& k : problem.keep_outs) {
+    building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name,
+                        {k.polygon, k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway}});
+  }
+  const Layer openings = RoomLayer(st, {}, {});
+  for (const Prism& p : openings.prisms) {
+    if (p.binds_floor && p.binds_hung) continue;  // keep-outs, counted above
+    if (p.binds_floor) building.push_back({"wall opening", p});
+  }
+  // What overlaps what is asked of the shared clearance query (solver/free_space.h), the one the
+  // reachability check asks too; the volumes are then measured on the boxes and prisms themselves.
+  const FreeSpace space = RoomFreeSpace(problem.free_floor, boxes, building, [&](int i) { return st.IsFloorCovering(i); });
+
   for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      if (st.IsFloorCovering(i) || st.IsFloorCovering(j) || st.ParentChild(i, j)) continue;
+    if (st.IsFloorCovering(i)) continue;
+    for (int k : space.Overlapping(PlanShape::Polygon(boxes[i].Footprint()), boxes[i].z0, boxes[i].z1)) {
+      const int j = space.obstacles()[k].owner;
+      if (j <= i || j >= n || st.ParentChild(i, j)) continue;
       const double v = OverlapVolume(boxes[i], boxes[j]);
       if (v <= 1e-12) continue;
       e.collision += v;
@@ -63,26 +101,28 @@ EnergyTerms StateEnergy(const RoomState& st) {
       e.findings.push_back(Format("collision %s x %s: %.6f m3", st.objects[i].id, st.objects[j].id, v));
     }
   }
-  // The building: walls (outside the free floor), keep-outs, and the thin prisms in front of openings.
-  std::vector<std::pair<std::string, Prism>> building;
-  for (const KeepOut& k : problem.keep_outs) {
-    building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name, {k.polygon, k.z_min, k.z_max, true, true}});
-  }
-  const Layer openings = RoomLayer(st, {}, {});
-  for (const Prism& p : openings.prisms) {
-    if (p.binds_floor && p.binds_hung) continue;  // keep-outs, counted above
-    if (p.binds_floor) building.push_back({"wall opening", p});
-  }
   for (int i = 0; i < n; ++i) {
     const OrientedBox& b = boxes[i];
-    const double footprint = 4.0 * b.hx * b.hy;
-    const double outside = std::max(0.0, footprint - ClippedArea(problem.free_floor, b.Footprint()));
-    double v = outside > 1e-9 ? outside * (b.z1 - b.z0) : 0.0;
+    const PlanShape footprint_shape = PlanShape::Polygon(b.Footprint());
+    double v = 0.0;
+    if (space.RegionClearance(footprint_shape, 0.0).clearance < 0.0) {
+      const double footprint = 4.0 * b.hx * b.hy;
+      const double outside = std::max(0.0, footprint - ClippedArea(problem.free_floor, b.Footprint()));
+      v = outside > 1e-9 ? outside * (b.z1 - b.z0) : 0.0;
+    }
     if (v > 0.0) {
       e.overlaps.push_back({st.objects[i].id, "walls"});
       e.findings.push_back(Format("collision %s x %s: %.6f m3", st.objects[i].id, "walls", v));
     }
-    for (const auto& [name, prism] : building) {
+    std::vector<int> prisms;
+    for (int k : space.Overlapping(footprint_shape, b.z0, b.z1)) {
+      if (space.obstacles()[k].owner >= n) prisms.push_back(space.obstacles()[k].owner - n);
+    }
+    std::sort(prisms.begin(), prisms.end());
+    prisms.erase(std::unique(prisms.begin(), prisms.end()), prisms.end());
+    for (int p : prisms) {
+      const auto& [name, prism] = building[p];
+      if (st.IsFloorCovering(i) && !prism.binds_coverings) continue;
       const double w = PrismOverlap(b, prism.polygon, prism.z0, prism.z1);
       if (w <= 1e-12) continue;
       v += w;

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "building/export.h"
+#include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "scene/file_digest.h"
@@ -52,10 +53,44 @@ struct RoomResult {
   scene::RoomEntry entry;
   std::vector<scene::SceneObject> objects;
   std::string error;  // set when the room could not be furnished for a reason that is not an outcome
+  // A solved room keeps its solver for the reachability feedback, with what mapping its solution back needs.
+  std::unique_ptr<RoomSolver> solver;
+  std::vector<scene::SceneObject> planned;
+  std::vector<scene::SemanticEdge> planned_edges;
+  std::vector<std::string> dropped_ids;
 };
 
 scene::Metrics RoomMetrics(const ExactMetrics& m) {
   return {{{"CR", Round4(m.cr)}, {"FR", Round4(m.fr)}, {"OBR", Round4(m.obr)}, {"CSR", Round4(m.csr)}, {"NO", double(m.objects)}}};
+}
+
+// The scene's view of a solved room from its solver's present state: the posed objects, the solve record
+// and metrics, the report's outcome, and the plan's edges between objects still there. Called after the
+// solve and again after the reachability feedback changed the room.
+void TakeSolution(RoomResult& out) {
+  const RoomSolution solution = out.solver->Solution();
+  const SolveSummary& s = solution.summary;
+  out.objects = SolvedSceneObjects(out.solver->Problem(), solution, out.planned);
+  scene::RoomSolve record;
+  record.outcome = *scene::ParseSolveOutcome(OutcomeName(s.outcome));
+  record.iterations = s.iterations;
+  record.energy = s.energy.total;
+  record.removed = out.dropped_ids;
+  record.removed.insert(record.removed.end(), s.removed.begin(), s.removed.end());
+  record.actions = Json::array();
+  for (const ActionResult& a : s.actions) record.actions.push_back(ActionResultToJson(a));
+  record.note = s.reason;
+  out.entry.solve = record;
+  out.entry.metrics = RoomMetrics(s.metrics);
+  out.report.outcome = std::string(OutcomeName(s.outcome));
+  out.report.reason = s.reason;
+  out.report.solve = s;
+  std::set<std::string> kept;
+  for (const scene::SceneObject& o : out.objects) kept.insert(o.id);
+  out.entry.edges_sem.clear();
+  for (const scene::SemanticEdge& e : out.planned_edges)
+    if (kept.count(e.source) && kept.count(e.target)) out.entry.edges_sem.push_back(e);
+  out.report.objects = static_cast<int>(out.objects.size());
 }
 
 // One room: plan, acquire, map, solve, and the scene's view of the result.
@@ -120,7 +155,6 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
   std::vector<std::string> dropped_ids;
   for (const std::string& d : mapped->dropped) dropped_ids.push_back(d.substr(0, d.find(": ")));
 
-  std::vector<scene::SceneObject> placed;
   if (mapped->problem.free_floor.size() < 3 && !mapped->problem.objects.empty()) {
     settle(scene::SolveOutcome::kInfeasible, "the room has no free floor inside its walls: nothing placed");
     out.entry.solve->removed = dropped_ids;
@@ -134,47 +168,105 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
     SolveOptions solve = options.solve;
     solve.seed = scene::SplitMix64(options.seed ^ scene::NameHash(context.name)).Next();
     t = Clock::now();
-    auto solved = [&]() -> Result<RoomSolution> {
-      if (!options.critic) return SolveRoom(mapped->problem, solve, options.check);
-      const RoomCriticInput input{&context, &villa.building, &mapped->problem, &plan->objects, &plan->edges,
-                                  options.text, solve, options.check, resolve};
-      auto critiqued = options.critic(input);
-      if (!critiqued.ok()) return Error{critiqued.error()};
-      report.critic = std::move(critiqued->figures);
-      return std::move(critiqued->solution);
-    }();
-    report.seconds_solve = Since(t);
-    if (!solved.ok()) {
-      out.error = context.name + ": " + solved.error();
+    out.solver = std::make_unique<RoomSolver>(mapped->problem, solve, options.check);
+    if (Status s = out.solver->Initialise(); !s.ok()) {
+      out.error = context.name + ": " + s.error();
       return out;
     }
-    const SolveSummary& s = solved->summary;
-    placed = SolvedSceneObjects(mapped->problem, *solved, plan->objects);
-    scene::RoomSolve record;
-    record.outcome = *scene::ParseSolveOutcome(OutcomeName(s.outcome));
-    record.iterations = s.iterations;
-    record.energy = s.energy.total;
-    record.removed = dropped_ids;
-    record.removed.insert(record.removed.end(), s.removed.begin(), s.removed.end());
-    record.actions = Json::array();
-    for (const ActionResult& a : s.actions) record.actions.push_back(ActionResultToJson(a));
-    record.note = s.reason;
-    out.entry.solve = record;
-    out.entry.metrics = RoomMetrics(s.metrics);
-    report.outcome = std::string(OutcomeName(s.outcome));
-    report.reason = s.reason;
-    report.solve = s;
+    out.solver->RunAgent();
+    // Issue 14: a critic reviews the room and acts through the same session (critic/critic.h).
+    if (options.critic) {
+      const RoomCriticInput input{&context, &villa.building, &mapped->problem, &plan->objects, &plan->edges,
+                                  options.text, solve, options.check, resolve, out.solver.get()};
+      auto figures = options.critic(input);
+      if (!figures.ok()) {
+        out.error = context.name + ": " + figures.error();
+        return out;
+      }
+      report.critic = std::move(*figures);
+    }
+    report.seconds_solve = Since(t);
+    out.planned = plan->objects;
+    out.planned_edges = plan->edges;
+    out.dropped_ids = dropped_ids;
+    TakeSolution(out);
   }
-  // The graph keeps the edges between objects that are still there.
-  std::set<std::string> kept;
-  for (const scene::SceneObject& o : placed) kept.insert(o.id);
-  for (const scene::SemanticEdge& e : plan->edges)
-    if (kept.count(e.source) && kept.count(e.target)) out.entry.edges_sem.push_back(e);
-  report.objects = static_cast<int>(placed.size());
-  out.objects = std::move(placed);
   report.seconds = Since(start);
   report.cpu_seconds = ThreadCpuSeconds() - cpu_start;
   return out;
+}
+
+// The parts of a path walked on each level (its points on a stair's way, level -1, are left out).
+std::vector<ReachFigures::Path> PathPieces(const ReachPath& path) {
+  std::vector<ReachFigures::Path> out;
+  ReachFigures::Path piece;
+  piece.level = -1;
+  auto close = [&] {
+    if (piece.points.size() >= 2) out.push_back(piece);
+    piece.points.clear();
+  };
+  for (size_t k = 0; k < path.points.size() && k < path.level.size(); ++k) {
+    if (path.level[k] != piece.level) {
+      close();
+      piece.level = path.level[k];
+    }
+    if (piece.level >= 0) piece.points.push_back({path.points[k].x, path.points[k].y});
+  }
+  close();
+  return out;
+}
+
+// Reachability on the furnished building (docs/REACH.md), with the feedback loop acting on the rooms'
+// solvers: rooms it changed (walkways laid, actions taken) take their solver's new state. Errors: a
+// building reachability cannot read (no entrance, a staircase without a foot), bad options.
+Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh& building, std::vector<RoomResult>& results,
+                                       const FurnishOptions& options) {
+  const auto start = Clock::now();
+  auto input = BuildingReachInput(layout, building, options.build, options.reach.reach);
+  if (!input.ok()) return Error{input.error()};
+  std::map<std::string, RoomSolver*> solvers;
+  std::map<std::string, RoomResult*> by_room;
+  for (RoomResult& r : results) {
+    if (!r.solver) continue;
+    solvers[r.report.room] = r.solver.get();
+    by_room[r.report.room] = &r;
+  }
+  auto loop = FreeBlockedWays(*input, solvers, options.reach);
+  if (!loop.ok()) return Error{loop.error()};
+  ReachFigures f;
+  std::set<std::string> changed;
+  for (const FeedbackRound& round : loop->rounds) {
+    for (const Walkway& w : round.walkways) changed.insert(w.room);
+    for (const RoomAction& a : round.actions) changed.insert(a.room);
+    f.actions += static_cast<int>(round.actions.size());
+  }
+  for (const std::string& room : changed) TakeSolution(*by_room.at(room));
+
+  const ReachReport& last = loop->last;
+  f.outcome = loop->reason;
+  f.rooms = last.rooms;
+  f.rooms_reachable = last.rooms_reachable;
+  f.zones = last.zones;
+  f.zones_reachable = last.zones_reachable;
+  f.acc_mean = last.Acc();
+  for (const TargetResult& t : last.targets) {
+    (t.kind == TargetKind::kRoom ? f.rch : f.acc)[t.name] = t.share;
+    if (t.path) {
+      for (ReachFigures::Path& piece : PathPieces(*t.path)) f.paths.push_back(std::move(piece));
+    }
+  }
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.2f", options.reach.reach.radius);
+  f.note = std::string("a person (a disc of radius ") + radius +
+           " m) from the entrance to every room and V_int interaction zone, across floors by the stairs; a 2 cm raster "
+           "decides, OMPL draws the paths (PRM per level, RRTConnect); feedback: " + loop->reason;
+  f.levels = last.levels;
+  f.record = last.ToJson();
+  f.record["radius"] = options.reach.reach.radius;
+  f.record["feedback"] = loop->ToJson();
+  f.seconds = Since(start);
+  f.record["seconds"] = Round4(f.seconds);
+  return f;
 }
 
 // Room means of the per-room metrics, over the rooms that hold objects.
@@ -337,6 +429,7 @@ std::string FurnishOptions::Check() const {
   std::string message;
   if (!solve.IsValid(&message)) return "solver: " + message;
   if (!check.IsValid(&message)) return "exact check: " + message;
+  if (check_reach && !reach.IsValid(&message)) return "reach: " + message;
   return "";
 }
 
@@ -364,6 +457,16 @@ std::string FurnishSummary::BriefReport() const {
   std::snprintf(time, sizeof time, "%.2f s (%.2f s of room work, %.3f s a room)\n", seconds, room_seconds,
                 furnished ? room_seconds / furnished : 0.0);
   out += "time: " + std::string(time);
+  if (reach_checked) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "reach: RCH %s %% (%d/%d rooms), ACC %s %% (%d/%d zones reachable); %d action(s) cleared ways; %.2f s\n",
+                  pct(rch()).c_str(), rooms_reachable, reach_rooms, pct(acc()).c_str(), zones_reachable, reach_zones,
+                  reach_actions, reach_seconds);
+    out += line + ("  " + reach_note + "\n");
+  } else if (!reach_note.empty()) {
+    out += "reach: " + reach_note + "\n";
+  }
   return out;
 }
 
@@ -422,14 +525,34 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
     for (std::thread& t : threads) t.join();
   }
 
+  for (const RoomResult& r : results)
+    if (!r.error.empty()) return Error{r.error};
+  FurnishSummary& sum = villa.summary;
+  // Reachability before the rooms are gathered: its feedback may still change them.
+  if (options.check_reach) {
+    auto reach = CheckReachability(villa.layout, villa.building, results, options);
+    if (reach.ok()) {
+      villa.reach = std::move(*reach);
+      sum.reach_checked = true;
+      sum.reach_rooms = villa.reach->rooms;
+      sum.rooms_reachable = villa.reach->rooms_reachable;
+      sum.reach_zones = villa.reach->zones;
+      sum.zones_reachable = villa.reach->zones_reachable;
+      sum.reach_acc = villa.reach->acc_mean;
+      sum.reach_actions = villa.reach->actions;
+      sum.reach_note = villa.reach->outcome;
+      sum.reach_seconds = villa.reach->seconds;
+    } else {
+      sum.reach_note = "not measured: " + reach.error();
+    }
+  }
+
   scene::SceneFile& s = villa.scene;
   s.layout = layout_ref;
   s.library = library_ref;
   s.build = {options.build.slab_thickness, options.build.exterior_wall_thickness, options.build.interior_wall_thickness};
-  FurnishSummary& sum = villa.summary;
   sum.rooms = static_cast<int>(n);
   for (RoomResult& r : results) {
-    if (!r.error.empty()) return Error{r.error};
     s.rooms.push_back(std::move(r.entry));
     for (scene::SceneObject& o : r.objects) s.objects.push_back(std::move(o));
     const RoomReport& rep = r.report;
@@ -460,11 +583,6 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
   auto findings = scene::ValidateScene(s, villa.layout, lookup);
   if (!findings.empty()) return Error{"the furnished scene breaks the scene rules (a bug; nothing written):\n" + scene::FormatFindings(findings)};
 
-  if (options.reach) {
-    auto reach = options.reach(villa);
-    if (!reach.ok()) return Error{"reachability: " + reach.error()};
-    villa.reach = std::move(*reach);
-  }
   sum.seconds = Since(start);
   return villa;
 }
@@ -497,6 +615,8 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
                  {"OBR", Round4(s.obr())},
                  {"CSR", Round4(s.csr())},
                  {"NO_mean", Round4(s.furnished ? double(s.objects) / s.furnished : 0.0)},
+                 {"RCH", s.reach_checked ? Json(Round4(s.rch())) : Json(nullptr)},
+                 {"ACC", s.reach_checked ? Json(Round4(s.acc())) : Json(nullptr)},
                  {"seconds", Round4(s.seconds)},
                  {"room_seconds", Round4(s.room_seconds)}};
   j["by_room_type"] = ByRoomType(villa.rooms);
@@ -517,15 +637,13 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
   for (const RoomReport& r : villa.rooms) rooms.push_back(RoomJson(r, villa.reach, villa.scene.objects));
   j["rooms"] = std::move(rooms);
   if (villa.reach) {
-    Json paths = Json::array();
-    for (const ReachFigures::Path& p : villa.reach->paths) {
-      Json points = Json::array();
-      for (const Point& q : p.points) points.push_back({Round4(q.x), Round4(q.y)});
-      paths.push_back({{"level", p.level}, {"points", std::move(points)}});
-    }
-    j["reachability"] = {{"note", villa.reach->note}, {"paths", std::move(paths)}};
+    Json r;
+    r["note"] = villa.reach->note;
+    for (const auto& [key, value] : villa.reach->record.items()) r[key] = value;
+    j["reachability"] = std::move(r);
   } else {
-    j["reachability"] = nullptr;
+    // Not asked for (null), or asked for and not measurable (why).
+    j["reachability"] = s.reach_note.empty() ? Json(nullptr) : Json{{"note", s.reach_note}};
   }
   return j;
 }
@@ -622,6 +740,75 @@ Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::Roo
 }
 }  // namespace
 
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
+  PlanOverlay overlay;
+  std::map<std::string, Category> category_of;
+  for (const Room& r : villa.layout.rooms) category_of[r.name()] = r.category;
+  std::vector<const scene::SceneObject*> objects;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.pose && o.relation != scene::Relation::kHanging) objects.push_back(&o);
+  // Lowest first; at one height the larger footprint first, so a rug or a table never hides what is on it.
+  std::stable_sort(objects.begin(), objects.end(), [](const scene::SceneObject* a, const scene::SceneObject* b) {
+    if (a->pose->z != b->pose->z) return a->pose->z < b->pose->z;
+    return a->size.x * a->size.y > b->size.x * b->size.y;
+  });
+  auto mix = [](Rgb a, Rgb b, double t) { return Rgb{a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t}; };
+  for (const scene::SceneObject* o : objects) {
+    auto it = category_of.find(o->room);
+    const Category category = it == category_of.end() ? Category::kRoom : it->second;
+    const double c = std::cos(o->pose->yaw), s = std::sin(o->pose->yaw);
+    const double hx = o->size.x / 2.0, hy = o->size.y / 2.0;
+    PlanOverlay::Shape shape;
+    shape.level = o->level;
+    for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}})
+      shape.outline.push_back({o->pose->x + c * x - s * y, o->pose->y + s * x + c * y});
+    shape.fill = mix(CategoryColor(category), CategoryInk(category), 0.4);
+    shape.fill_alpha = 0.9;
+    shape.ink = mix(CategoryInk(category), Rgb{0.1, 0.1, 0.1}, 0.3);
+    overlay.shapes.push_back(std::move(shape));
+  }
+  if (villa.reach)
+    for (const ReachFigures::Path& p : villa.reach->paths)
+      overlay.paths.push_back({p.level, p.points, Rgb{0.07, 0.36, 0.66}, 1.6});
+  return overlay;
+}
+
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa) {
+  PlanRenderOptions options;
+  options.source_name = villa.scene.layout.file + " (furnished)";
+  return RenderPlanPng(villa.layout, FurnishedPlanOverlay(villa), options);
+}
+
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options) {
+  ViewScene view = ViewSceneOf(villa.building);
+  // The objects' meshes moved into the world frame; the scene borrows them until the picture is made.
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (!o.pose) continue;
+    auto asset = villa.library->Mesh(o.asset);
+    if (!asset.ok()) return Error{o.id + ": " + asset.error()};
+    const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw);
+    const bool hung = o.relation == scene::Relation::kOnWall || o.relation == scene::Relation::kHanging;
+    for (const AssetMeshPart& part : (*asset)->parts) {
+      if (part.mesh.triangles.empty()) continue;
+      auto world = std::make_unique<TriangleMesh>(part.mesh);
+      for (Vec3& v : world->vertices) {
+        const double x = v.x * o.scale[0], y = v.y * o.scale[1];
+        v = {o.pose->x + c * x - s * y, o.pose->y + s * x + c * y, o.pose->z + v.z * o.scale[2]};
+      }
+      ViewMesh mesh;
+      mesh.mesh = world.get();
+      mesh.color = {part.material.r, part.material.g, part.material.b};
+      mesh.alpha = part.material.alpha;
+      mesh.level = o.level;
+      mesh.cut = hung ? CutAway::kCut : CutAway::kKeep;
+      view.meshes.push_back(mesh);
+      meshes.push_back(std::move(world));
+    }
+  }
+  return RenderPreview(view, options);
+}
+
 Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
                                                      const FurnishOptions& options) {
   std::error_code ec;
@@ -642,6 +829,11 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
   if (Status s = write(kSceneFile, scene::SceneToText(villa.scene)); !s) return Error{s.error()};
   if (Status s = write(kGlbFile, *glb); !s) return Error{s.error()};
   if (Status s = write(kCreditsFile, FurnishCredits(villa)); !s) return Error{s.error()};
+  if (options.pictures) {
+    auto plan = FurnishedPlanPng(villa);
+    if (!plan.ok()) return Error{(dir / kPlanPicture).string() + ": " + plan.error()};
+    if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
+  }
   if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
   if (options.pictures) {
     fs::create_directories(dir / "rooms", ec);

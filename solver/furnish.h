@@ -26,37 +26,47 @@
 #include "assets/asset_library.h"
 #include "building/building.h"
 #include "layout/layout.h"
+#include "render/plan_render.h"
+#include "render/view3d.h"
 #include "scene/acquire.h"
 #include "scene/planner.h"
 #include "scene/room_context.h"
 #include "scene/scene.h"
 #include "solver/exact_check.h"
 #include "solver/options.h"
+#include "solver/reach_feedback.h"
 #include "solver/solve.h"
 #include "util/result.h"
 
 namespace villa::solver {
 
-// What reachability (issue 13: solver/reach*, OMPL) adds to a furnished villa: SCENE.md's RCH per room
-// and ACC per V_int object, and the paths it found, drawn on plan.png. FurnishOptions::reach is called
-// once, after every room is solved, with the whole furnished villa; unset, RCH and ACC are reported as not
-// measured.
+// What reachability (issue 13: solver/reach*, docs/REACH.md) adds to a furnished villa, measured once after
+// every room is solved and the feedback loop has run: RCH per room (1 reachable from the entrance by a
+// person of the given radius, across floors by the stairs; 0 not) and ACC per V_int object (the share of
+// its interaction zone that person reaches, SCENE.md, docs/METRICS.md), the drawn paths (plan.png) and the
+// full record for report.json.
 struct ReachFigures {
-  std::map<std::string, double> rch;  // room name -> 1 reachable / 0 not (or a share)
-  std::map<std::string, double> acc;  // V_int object id -> share of its interaction zone on free floor
+  std::map<std::string, double> rch;  // room name -> 1 reachable / 0 not
+  std::map<std::string, double> acc;  // V_int object id -> share of its interaction zone reachable, [0, 1]
   struct Path {
     int level = 0;
-    std::vector<Point> points;  // plan m
+    std::vector<Point> points;  // plan m: the part of a path walked on this level
   };
   std::vector<Path> paths;
-  std::string note;  // what was measured how, for the report
+  int rooms = 0, rooms_reachable = 0, zones = 0, zones_reachable = 0;  // zones with any part reachable
+  double acc_mean = 1.0;        // ACC over the villa: the mean of `acc`
+  int actions = 0;              // actions the rooms' agents took to clear walkways
+  std::string outcome;          // how the feedback loop ended, one line
+  std::string note;             // what was measured how, for the report
+  nlohmann::ordered_json record;  // report.json "reachability": every target, the levels, the feedback's rounds
+  std::vector<LevelStats> levels;  // the last check's, with its times (raster, roadmap, queries)
+  double seconds = 0.0;         // wall time of the check and the feedback loop
 };
-struct FurnishedVilla;
-using ReachCheck = std::function<Result<ReachFigures>(const FurnishedVilla& villa)>;
 
-// What a critic (issue 14, critic/) is given for one room. It drives the room's solver session
-// (RoomSolver: Initialise, Apply, RunAgent) in place of SolveRoom and hands back the solution with its
-// own record. Everything pointed to outlives the call; critics run on the room workers' threads.
+// What a critic (issue 14, critic/) is given for one room: the room's solver session, initialised and
+// with the rule agent run, which it drives (Apply, Fits, Suggest, KeepCurrent, Finish; solver/solve.h)
+// and leaves as it wants the room (the reachability feedback goes on with the same session). Everything
+// pointed to outlives the call; critics run on the room workers' threads.
 struct RoomCriticInput {
   const scene::RoomContext* context = nullptr;
   const BuildingMesh* building = nullptr;
@@ -67,6 +77,7 @@ struct RoomCriticInput {
   SolveOptions solve;     // the room's seed already mixed in
   ExactCheckOptions check;
   AssetResolver resolve;  // add_entity's asset ids to records and meshes
+  RoomSolver* session = nullptr;  // the room's session (null: the critic makes its own from the problem)
 };
 // What report.json says of a room's critic.
 struct CriticFigures {
@@ -77,11 +88,7 @@ struct CriticFigures {
   double seconds = 0.0;              // wall time of the critic's rounds (after the first solve)
   nlohmann::ordered_json record;     // the critic's own account: rounds, scores, relations before and after
 };
-struct RoomCriticResult {
-  RoomSolution solution;
-  CriticFigures figures;
-};
-using RoomCritic = std::function<Result<RoomCriticResult>(const RoomCriticInput& input)>;
+using RoomCritic = std::function<Result<CriticFigures>(const RoomCriticInput& input)>;
 
 struct FurnishOptions {
   // Rooms to furnish, as the layout names them ("living-room_0/0"); empty: every room. The others are
@@ -101,10 +108,16 @@ struct FurnishOptions {
   SolveOptions solve;  // its seed is replaced per room by the run's seed mixed with the room's name
   ExactCheckOptions check;
   bool allow_invalid = false;  // furnish a layout that breaks the geometric rules 1-5 (the builder adapts)
-  bool pictures = true;        // rooms/<room>.png and plan.png
+  bool pictures = true;        // plan.png and rooms/<room>.png
   bool force = false;          // overwrite the outputs of an earlier run in the folder (never other files)
-  ReachCheck reach;            // issue 13 plugs reachability in here
-  // Issue 14: a critic drives each room's solver (critic/critic.h makes one); unset: the rule agent alone.
+  // Reachability (docs/REACH.md), after every room is solved: a person (a disc of reach.reach.radius) walks
+  // from the entrance to every room and interaction zone, across floors by the stairs; what furniture
+  // blocks becomes walkways the rooms' agents clear (up to reach.rounds rounds of move, shrink or remove);
+  // RCH, ACC and the paths go into report.json and plan.png. Off (`--no-reach`): not measured (null).
+  bool check_reach = true;
+  ReachFeedbackOptions reach;
+  // Issue 14: a critic reviews each solved room and acts through its solver session (critic/critic.h
+  // makes one); unset: the rule agent alone.
   RoomCritic critic;
   // The A-PSSG planner (an MLLM that revises the priors' graph, critic/); unset: PriorsPlanner(planner).
   std::shared_ptr<const scene::GraphPlanner> graph_planner;
@@ -153,6 +166,12 @@ struct FurnishSummary {
   int library_assets = 0, procedural_assets = 0;  // object counts by where their asset came from
   double seconds = 0.0;     // wall time of the whole run
   double room_seconds = 0.0;  // sum over rooms (plan + acquire + solve), as on one core
+  // Reachability (when checked): rooms and V_int zones reachable from the entrance, what the feedback did.
+  bool reach_checked = false;
+  int reach_rooms = 0, rooms_reachable = 0, reach_zones = 0, zones_reachable = 0;
+  int reach_actions = 0;     // actions the rooms' agents took to clear walkways
+  std::string reach_note;    // how the feedback ended, or why reachability was not measured
+  double reach_seconds = 0.0;
   std::vector<std::string> written;  // files written, relative to the output folder
 
   // CR, FR, OBR over every object of the furnished rooms; CSR over their inside edges (1 when none).
@@ -160,6 +179,9 @@ struct FurnishSummary {
   double fr() const { return consumers ? double(floating) / consumers : 0.0; }
   double obr() const { return objects ? double(out_of_bounds) / objects : 0.0; }
   double csr() const { return inside_edges ? double(contained) / inside_edges : 1.0; }
+  double rch() const { return reach_rooms ? double(rooms_reachable) / reach_rooms : 1.0; }
+  double reach_acc = 1.0;    // ACC: the mean share of the V_int zones reachable
+  double acc() const { return reach_acc; }
   std::string BriefReport() const;  // a few lines for people
 };
 
@@ -185,7 +207,8 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
                                      const FurnishOptions& options);
 
 // The output files of a run, written atomically into `dir` (created if needed): scene.json,
-// furnished.glb, report.json, CREDITS, plan.png and rooms/<room>.png (the room name with "/" as "_").
+// furnished.glb, report.json, CREDITS and plan.png (rooms/<room>.png, the room name with "/" as "_", are
+// reserved: refused without force, not drawn yet).
 // Files of an earlier run are replaced only with options.force; other files in the folder are never
 // touched. Returns the paths written, relative to `dir`.
 Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const std::filesystem::path& dir,
@@ -200,8 +223,21 @@ Result<FurnishSummary> FurnishLayoutFile(const std::filesystem::path& layout, co
 // The parts of the outputs, for tests and `villa generate`.
 nlohmann::ordered_json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& options);
 Result<std::string> FurnishedGlb(const FurnishedVilla& villa);
+
 std::string FurnishCredits(const FurnishedVilla& villa);  // "" when no placed asset needs credit
 // "rooms/kitchen_0_0.png" for "kitchen_0/0".
 std::string RoomPictureName(const std::string& room);
+
+// What plan.png draws over the floor plan: every placed object's oriented box (its size x scale, turned
+// by its yaw) in a muted tone of its room's colour, on its level, lowest objects first so what stands
+// on a table shows over it (objects hung from the ceiling are left out: they would cover the room), and
+// the reach hook's walking paths as thin lines when it ran.
+PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa);
+// plan.png: the floor plans of every level with that overlay.
+Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa);
+// The furnished villa in the 3D view (render/view3d.h RenderPreview): the building as `villa build
+// --preview` draws it plus every placed object in its assets' colours; the cut-away of a level keeps
+// standing furniture whole and cuts what hangs on walls or from the ceiling like the walls.
+Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewOptions& options = {});
 
 }  // namespace villa::solver

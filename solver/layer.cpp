@@ -10,7 +10,6 @@
 #include <ceres/ceres.h>
 
 #include "mesh/geometry2d.h"
-#include "mesh/triangulate.h"
 #include "solver/residuals.h"
 #include "layout/geometry.h"
 
@@ -64,21 +63,6 @@ ceres::Manifold* ManifoldFor(const Body& b) {
     case Motion::kOnWall: return new AffineManifold({{b.wall_dir.x, b.wall_dir.y, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}});
     default: return new AffineManifold({{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 1.0}});
   }
-}
-
-bool WithoutReflexCorner(const Ring& ring) { return ReflexVertices(ring).empty(); }
-
-// Convex pieces of a polygon (itself when convex, else its triangles).
-std::vector<Ring> ConvexPieces(const Ring& ring) {
-  const Ring clean = geo::CleanRing(ring);
-  if (clean.size() < 3) return {};
-  if (WithoutReflexCorner(clean)) return {clean};
-  std::vector<Ring> pieces;
-  for (const auto& t : TriangulatePolygon(clean)) {
-    Ring tri = {clean[t[0]], clean[t[1]], clean[t[2]]};
-    if (Area(tri) > 1e-9) pieces.push_back(tri);
-  }
-  return pieces;
 }
 
 // Height of an object with the objects stacked on its surfaces, in its own unscaled units.
@@ -211,7 +195,9 @@ Layer RoomLayer(const RoomState& state, const std::vector<int>& movable, const s
   layer.region = problem.free_floor;
   layer.reflex = ReflexVertices(problem.free_floor);
   for (const KeepOut& k : problem.keep_outs) {
-    for (Ring& piece : ConvexPieces(k.polygon)) layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true});
+    for (Ring& piece : ConvexPieces(k.polygon)) {
+      layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway});
+    }
   }
   AddOpeningPrisms(problem, layer);
   return layer;
@@ -268,7 +254,8 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     Ring local;
     for (Point v : k.polygon) local.push_back(layer.frame.ToLocal(v));
     for (Ring& piece : ConvexPieces(local)) {
-      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, true, true});
+      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, true, true,
+                              k.kind != KeepOutKind::kWalkway});
     }
   }
   return layer;
@@ -394,6 +381,7 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     }
     for (const Prism& prism : layer.prisms) {
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
+      if (body.covering && !prism.binds_coverings) continue;
       if (slack >= 0.0 && !PointInRing({body.p[0], body.p[1]}, prism.polygon, 0) &&
           DistanceToBoundary({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
         continue;

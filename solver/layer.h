@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solver/body_shape.h"
+#include "solver/free_space.h"
 #include "solver/options.h"
 #include "solver/state.h"
 
@@ -50,6 +51,7 @@ struct Prism {
   double z0 = 0.0, z1 = 0.0;
   bool binds_floor = true;  // floor and ceiling bodies
   bool binds_hung = true;   // on_wall bodies
+  bool binds_coverings = true;  // floor coverings (a rug may lie on a walkway)
 };
 
 struct Layer {

@@ -10,7 +10,8 @@ namespace villa::solver {
 namespace {
 
 constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip",  "open_passage",  "window_zone",
-                                              "staircase",  "stair_hole", "stair_arrival", "other"};
+                                              "staircase",  "stair_hole", "stair_arrival", "other",
+                                              "walkway"};
 constexpr std::string_view kRelationNames[] = {"ontop", "inside", "against_wall", "on_wall", "hanging"};
 constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named"};
 constexpr std::string_view kSemanticNames[] = {"face_to", "front_of", "behind", "left_of", "right_of",
@@ -67,6 +68,22 @@ int RoomProblem::Find(std::string_view id) const {
     if (objects[i].id == id) return static_cast<int>(i);
   }
   return -1;
+}
+
+OrientedBox StandingBox(const ProblemObject& object, const Pose& pose) {
+  const Vec3& s = object.asset.size;
+  OrientedBox b;
+  b.c = {pose.x, pose.y};
+  b.yaw = pose.yaw;
+  b.hx = 0.5 * s.x * pose.scale;
+  b.hy = 0.5 * s.y * pose.scale;
+  b.z0 = pose.z;
+  b.z1 = pose.z + s.z * pose.scale;
+  return b;
+}
+
+bool IsFloorCovering(const ProblemObject& object) {
+  return object.parent == "floor" && object.relation == Relation::kOnTop && object.asset.size.z <= 0.03;
 }
 
 std::string MeshOutsideAssetBox(const AssetRecord& asset, const AssetMesh& mesh) {

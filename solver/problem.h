@@ -18,14 +18,17 @@
 #include "assets/asset_mesh.h"
 #include "layout/layout.h"
 #include "mesh/mesh.h"
+#include "solver/box.h"
+#include "solver/placement.h"
 #include "util/result.h"
 
 namespace villa::solver {
 
 // What a keep-out zone protects: one kind per kind of the room context's zones (scene/room_context.h), so
-// the furnish pipeline maps them one to one; only names in messages depend on it.
+// the furnish pipeline maps them one to one, and the walkway the reachability feedback keeps free for a
+// person (solver/reach_feedback.h; floor coverings may lie on it). Names in messages depend on it.
 enum class KeepOutKind {
-  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther
+  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther, kWalkway
 };
 std::string_view KeepOutKindName(KeepOutKind kind);  // "door_sweep", "door_strip", "open_passage", ...
 
@@ -147,6 +150,10 @@ struct RoomProblem {
   Status Check() const;
 };
 
+// The object's box where it stands (world: footprint centre, yaw, half sizes and heights, all scaled).
+OrientedBox StandingBox(const ProblemObject& object, const Pose& pose);
+// A flat floor object (a rug, <= 3 cm high, on the floor): part of the floor, walked on, no collisions.
+bool IsFloorCovering(const ProblemObject& object);
 // Empty when `mesh` lies within the box of `asset`'s size (origin at the bottom centre; 1 cm or 1 % of a side
 // of slack), else which side it leaves and by how much. The optimiser's boxes are the record's size: a mesh
 // reaching outside them would collide where the optimiser sees nothing, so RoomProblem::Check refuses it.

@@ -77,7 +77,7 @@ bool SolveOptions::IsValid(std::string* message) const {
 }
 
 struct RoomSolver::Impl {
-  const RoomProblem& problem;
+  RoomProblem problem;  // the solver's own copy: AddKeepOut extends it
   SolveOptions options;
   ExactCheckOptions check_options;
   RoomState state;
@@ -822,6 +822,28 @@ void RoomSolver::KeepCurrent() {
   im.best_metrics = im.metrics;
   im.best_energy = im.energy;
   im.have_best = true;
+}
+
+const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
+
+Status RoomSolver::AddKeepOuts(const std::vector<KeepOut>& zones) {
+  Impl& im = *impl_;
+  if (!im.initialised) return Error{"room " + im.problem.room + ": the solver is not initialised"};
+  const size_t before = im.problem.keep_outs.size();
+  im.problem.keep_outs.insert(im.problem.keep_outs.end(), zones.begin(), zones.end());
+  if (Status s = im.problem.Check(); !s.ok()) {
+    im.problem.keep_outs.resize(before);
+    return s;
+  }
+  // The arrangement is judged anew against the zones: every remedy may be tried again on what stands in
+  // them, and the best state so far is the present one (the old best never saw them).
+  im.tries.clear();
+  im.semantic_tried.clear();
+  im.have_best = false;
+  im.Check();
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  return Status::Ok();
 }
 
 RoomSolution RoomSolver::Solution() const {

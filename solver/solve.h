@@ -74,7 +74,8 @@ Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& o
 // The same solver as a session a critic can drive: Initialise() places everything, Apply() takes one
 // action through the path the rule agent uses (repaired or refused when it would break a hard
 // constraint), RunAgent() lets the rule agent finish (and may be called again after more actions),
-// Finish() ends on the best state without the agent. The problem must outlive the solver.
+// Finish() ends on the best state without the agent. The solver keeps its own copy of the problem;
+// AddKeepOuts() extends it (the reachability feedback's walkways, solver/reach_feedback.h).
 class RoomSolver {
  public:
   RoomSolver(const RoomProblem& problem, const SolveOptions& options, const ExactCheckOptions& check = {});
@@ -102,6 +103,11 @@ class RoomSolver {
   // Ends the session without more agent actions: the best state seen is kept, checked again (with the
   // clearance figure) and the outcome and its reason set, as at the end of RunAgent.
   void Finish();
+  // Adds zones no object may enter (checked like the problem's own), checks the arrangement against them
+  // and lets the agent's remedies (move, shrink, remove) apply anew to what stands in them; call RunAgent()
+  // next. An error (nothing changed) when a zone is malformed or the solver is not initialised.
+  Status AddKeepOuts(const std::vector<KeepOut>& zones);
+  const RoomProblem& Problem() const;
   RoomSolution Solution() const;
 
  private:

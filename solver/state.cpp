@@ -52,10 +52,7 @@ int RoomState::Find(std::string_view id) const {
   return -1;
 }
 
-bool RoomState::IsFloorCovering(int i) const {
-  return parent[i] < 0 && objects[i].parent == "floor" && objects[i].relation == Relation::kOnTop &&
-         objects[i].asset.size.z <= 0.03;
-}
+bool RoomState::IsFloorCovering(int i) const { return parent[i] < 0 && solver::IsFloorCovering(objects[i]); }
 
 bool RoomState::ParentChild(int i, int j) const { return parent[i] == j || parent[j] == i; }
 
@@ -75,18 +72,7 @@ std::vector<int> RoomState::Descendants(int i) const {
   return out;
 }
 
-OrientedBox RoomState::WorldBox(int i) const {
-  const Pose& p = placements[i].pose;
-  const Vec3& s = objects[i].asset.size;
-  OrientedBox b;
-  b.c = {p.x, p.y};
-  b.yaw = p.yaw;
-  b.hx = 0.5 * s.x * p.scale;
-  b.hy = 0.5 * s.y * p.scale;
-  b.z0 = p.z;
-  b.z1 = p.z + s.z * p.scale;
-  return b;
-}
+OrientedBox RoomState::WorldBox(int i) const { return StandingBox(objects[i], placements[i].pose); }
 
 Frame RoomState::FrameOf(int i) const {
   const Pose& p = placements[i].pose;

@@ -153,7 +153,9 @@ TEST_CASE("VCR on the built geometry: each staircase overlaps the hole of the sl
   REQUIRE(vcr.floor_pairs() == 2);
   CHECK(vcr.connected_pairs() == 2);
   CHECK(vcr.vcr() == 1.0);
-  for (const auto& pair : vcr.pairs) CHECK(pair.overlap_area > 8.0);
+  // The flights leave a passage beside them (for the first floor's east door), so they cover about
+  // 1.8 x 2.8 m of the 3.65 m square free, not the whole room as before.
+  for (const auto& pair : vcr.pairs) CHECK(pair.overlap_area > 4.5);
   // Without its utility room upstairs... a one-floor building has no pair at all.
   Layout ground = ThreeFloorLayout();
   std::erase_if(ground.rooms, [](const Room& r) { return r.level > 0; });

@@ -58,7 +58,7 @@ TEST_CASE("villa build writes the .glb and the preview, refuses to overwrite wit
   fs::remove_all(dir);
 }
 
-TEST_CASE("villa generate plans and builds: layout, plan, building, preview and report in one folder") {
+TEST_CASE("villa generate --no-furnish plans and builds: layout, plan, building, preview and report in one folder") {
   fs::path dir = fs::temp_directory_path() / ("villa_generate_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   // The main job's request (scripts/main-job.sh).
@@ -66,7 +66,7 @@ TEST_CASE("villa generate plans and builds: layout, plan, building, preview and 
       "\"I want a three-story L-shaped villa with a living room, an open-plan kitchen and a dining room on the "
       "ground floor, two bedrooms and a bathroom upstairs, and a children's room with a balcony with panoramic "
       "windows on the top floor.\"";
-  REQUIRE(Villa("generate " + request + " -o " + dir.string() + " --seed 7") == 0);
+  REQUIRE(Villa("generate " + request + " -o " + dir.string() + " --seed 7 --no-furnish") == 0);
   for (const char* f : {"layout.json", "plan.png", "building.glb", "preview.png", "report.json"}) {
     INFO(f);
     CHECK(fs::exists(dir / f));
@@ -84,7 +84,7 @@ TEST_CASE("villa generate plans and builds: layout, plan, building, preview and 
   for (const Room& r : layout->rooms) CHECK(scene->Find(r.name()));
   // Outputs are never overwritten without --force.
   std::string before = Slurp(dir / "building.glb");
-  CHECK(Villa("generate " + request + " -o " + dir.string()) == 2);
+  CHECK(Villa("generate " + request + " -o " + dir.string() + " --no-furnish") == 2);
   CHECK(Slurp(dir / "building.glb") == before);
   CHECK(Villa("generate \"  \" -o " + dir.string() + " --force") == 2);  // empty request
   fs::remove_all(dir);

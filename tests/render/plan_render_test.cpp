@@ -317,3 +317,53 @@ TEST_CASE("absurd sizes are drawn at a scale that fits, quickly", "[render]") {
   REQUIRE(png.ok());
   CHECK(DecodePng(*png).width == frame->width_px);
 }
+
+TEST_CASE("an overlay draws furniture footprints over the room fills and walking paths as lines", "[render]") {
+  const Layout layout = LoadExample("l-shaped-house.json");
+  const Room* living = nullptr;
+  for (const Room& r : layout.rooms)
+    if (r.category == Category::kLivingRoom) living = &r;
+  REQUIRE(living);
+  // A spot well inside the room, far from its label: a 0.8 m square goes there.
+  const Point label = RoomLabelPoint(living->polygon);
+  Point spot{1e9, 1e9};
+  for (double x = -20; x <= 40 && spot.x > 1e8; x += 0.1)
+    for (double y = -20; y <= 40 && spot.x > 1e8; y += 0.1)
+      if (plan::SignedDistanceToRing({x, y}, living->polygon) > 1.2 &&
+          plan::SignedDistanceToRing({x + 1.0, y}, living->polygon) > 0.6 && Distance({x, y}, label) > 1.5 &&
+          Distance({x + 1.0, y}, label) > 1.5)
+        spot = {x, y};
+  REQUIRE(spot.x < 1e8);
+  const Rgb fill{0.2, 0.55, 0.3}, line{0.1, 0.2, 0.8};
+  PlanOverlay overlay;
+  overlay.shapes.push_back({living->level, {{spot.x - 0.4, spot.y - 0.4}, {spot.x + 0.4, spot.y - 0.4},
+                                            {spot.x + 0.4, spot.y + 0.4}, {spot.x - 0.4, spot.y + 0.4}},
+                            fill, 1.0, {0, 0, 0}});
+  overlay.shapes.push_back({7, {{0, 0}, {1, 0}, {1, 1}}, fill, 1.0, {0, 0, 0}});  // no such level: not drawn
+  // A path through the room's label point, 4 px wide, passing right of the square.
+  overlay.paths.push_back({living->level, {{spot.x + 1.0, spot.y - 0.3}, {spot.x + 1.0, spot.y + 0.3}}, line, 4.0});
+
+  const Result<PlanFrame> frame = ComputePlanFrame(layout);
+  REQUIRE(frame.ok());
+  const Result<std::string> bare = RenderPlanPng(layout);
+  const Result<std::string> drawn = RenderPlanPng(layout, overlay);
+  REQUIRE(bare.ok());
+  REQUIRE(drawn.ok());
+  const test::Picture a = DecodePng(*bare), b = DecodePng(*drawn);
+  // The panels stay where the frame puts them (the overlay only adds legend entries below them).
+  const Point centre = frame->ToPixel(living->level, spot);
+  const Point beside = frame->ToPixel(living->level, {spot.x + 0.6, spot.y});
+  const Point on_path = frame->ToPixel(living->level, {spot.x + 1.0, spot.y});
+  CHECK(a.Is(static_cast<int>(centre.x), static_cast<int>(centre.y), CategoryColor(Category::kLivingRoom)));
+  CHECK(b.Is(static_cast<int>(centre.x), static_cast<int>(centre.y), fill, 2));
+  CHECK(b.Is(static_cast<int>(beside.x), static_cast<int>(beside.y), CategoryColor(Category::kLivingRoom)));
+  CHECK(b.Is(static_cast<int>(on_path.x), static_cast<int>(on_path.y), line, 8));
+  CHECK(a.Is(static_cast<int>(on_path.x), static_cast<int>(on_path.y), CategoryColor(Category::kLivingRoom)));
+  // The legend names what the overlay drew; the SVG groups it per level.
+  const Result<std::string> svg = RenderPlanSvg(layout, overlay);
+  REQUIRE(svg.ok());
+  CHECK(svg->find("Furniture") != std::string::npos);
+  CHECK(svg->find("Walking path") != std::string::npos);
+  CHECK(svg->find("furniture-0") != std::string::npos);
+  CHECK(RenderPlanSvg(layout)->find("Walking path") == std::string::npos);
+}

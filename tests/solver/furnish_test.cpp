@@ -1,7 +1,8 @@
 // `villa furnish` end to end on a small layout (tests/fixtures/layouts/house_one_floor.json: six rooms, an
 // L-shaped living room, doors, opens and windows): exit codes, the files, the scene validating, the .glb
 // read back by another reader (assimp) agreeing with scene.json and finding no collision, the same bytes
-// whatever the job count, and a library run crediting its CC-BY models.
+// whatever the job count, reachability in the report (and skipped with --no-reach), and a library run
+// crediting its CC-BY models.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "assets/procedural.h"
 #include "building/export.h"
 #include "fixtures.h"
+#include "furnished_glb.h"
 #include "layout/layout_io.h"
 #include "scene/scene.h"
 #include "scene/validate.h"
@@ -67,8 +69,7 @@ std::vector<AssetRecord> RecordsOf(const scene::SceneFile& s, const AssetLibrary
   return out;
 }
 
-// A point of glTF's +Y-up file frame back in the building frame (z up).
-Vec3 FromGltf(double x, double y, double z) { return {x, -z, y}; }
+using testing::FromGltf;
 Vec3 Apply(const std::array<double, 16>& m, const Vec3& p) {
   return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
           m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
@@ -82,11 +83,12 @@ TEST_CASE("villa furnish furnishes a small house: files, a valid scene, the same
   INFO(a.out);
   REQUIRE(a.status == 0);
   CHECK(a.out.find("6 of 6 rooms furnished") != std::string::npos);
-  for (const char* f : {"scene.json", "furnished.glb", "report.json", "CREDITS"}) CHECK(fs::exists(one.path / f));
+  for (const char* f : {"scene.json", "furnished.glb", "report.json", "CREDITS", "plan.png"}) CHECK(fs::exists(one.path / f));
+  CHECK(a.out.find("reach: RCH 100.0 %") != std::string::npos);
   Run b = Villa("furnish " + kHouse + " --procedural --seed 3 --jobs 2 -q -o " + two.path.string());
   REQUIRE(b.status == 0);
   CHECK(b.out.empty());
-  for (const char* f : {"scene.json", "furnished.glb", "CREDITS"}) {
+  for (const char* f : {"scene.json", "furnished.glb", "CREDITS", "plan.png"}) {
     INFO(f);
     CHECK(Read(one.path / f) == Read(two.path / f));
   }
@@ -147,8 +149,37 @@ TEST_CASE("villa furnish furnishes a small house: files, a valid scene, the same
     CHECK_FALSE(room["energy_trace"].empty());
     CHECK((room["outcome"] == "converged" || room["outcome"] == "budget"));
     CHECK_FALSE(room["reason"].get<std::string>().empty());
-    CHECK(room["metrics"]["RCH"].is_null());  // not measured until reachability is plugged in
+    // Reachability (on by default): every room reached, every V_int object's zone reported.
+    CHECK(room["metrics"]["RCH"] == 1.0);
+    CHECK(room["metrics"]["ACC"].is_object());
   }
+  CHECK(report["totals"]["RCH"] == 1.0);
+  // ACC: the mean share of the zones reachable; every zone is reachable, most of each.
+  CHECK(report["totals"]["ACC"].get<double>() > 0.5);
+  CHECK(report["totals"]["ACC"].get<double>() <= 1.0);
+  const auto& reach = report["reachability"];
+  REQUIRE(reach.is_object());
+  CHECK(reach["radius"] == 0.2);
+  CHECK(reach["rooms"].size() == 6);
+  CHECK_FALSE(reach["zones"].empty());
+  for (const auto& t : reach["rooms"]) {
+    INFO(t["room"]);
+    CHECK(t["reachable"] == true);
+    CHECK(t["length"].get<double>() > 0.0);
+    CHECK(t["path"].size() >= 2);
+  }
+  for (const auto& z : reach["zones"]) {
+    INFO(z["object"]);
+    CHECK(z["reachable"] == true);
+    CHECK(z["share"].get<double>() > 0.0);
+    CHECK(z["share"].get<double>() <= 1.0);
+  }
+  CHECK(reach["feedback"]["reason"].is_string());
+  // Every V_int object of the scene with a zone has its ACC in its room's metrics.
+  int zones = 0;
+  for (const auto& room : report["rooms"])
+    if (room["metrics"]["ACC"].is_object()) zones += static_cast<int>(room["metrics"]["ACC"].size());
+  CHECK(zones == static_cast<int>(reach["zones"].size()));
   CHECK(report["by_room_type"].contains("living-room"));
   CHECK(Read(one.path / "CREDITS").find("No placed model needs credit") != std::string::npos);
 }
@@ -162,38 +193,8 @@ TEST_CASE("A reader with only furnished.glb finds every object where scene.json 
   auto glb = ReadSceneInfo(dir.path / "furnished.glb");  // assimp's glTF importer
   REQUIRE(glb.ok());
 
-  // Each object: a node named by its id under its room's node, extras naming it exactly, its transform the
-  // pose (origin and facing direction checked through the file's frame map).
-  std::map<std::string, const SceneNodeInfo*> nodes;
-  for (const SceneNodeInfo& n : glb->nodes) nodes[n.name] = &n;
-  for (const scene::SceneObject& o : s->objects) {
-    INFO(o.id);
-    REQUIRE(nodes.count(o.id));
-    const SceneNodeInfo& n = *nodes[o.id];
-    CHECK(n.path == "villa/level_" + std::to_string(o.level) + "/" + o.room + "/" + o.id);
-    CHECK(n.metadata.at("id") == o.id);
-    CHECK(n.metadata.at("name") == o.id);
-    CHECK(n.metadata.at("asset") == o.asset);
-    CHECK(n.metadata.at("category") == o.category);
-    CHECK(n.metadata.at("parent") == o.parent);
-    const Vec3 origin = FromGltf(n.global[3], n.global[7], n.global[11]);
-    CHECK(origin.x == Approx(o.pose->x).margin(1e-4));
-    CHECK(origin.y == Approx(o.pose->y).margin(1e-4));
-    CHECK(origin.z == Approx(o.pose->z).margin(1e-4));
-    // The asset's front (-y in its frame, -Z... in glTF: asset (0, -1, 0) is file (0, 0, 1)) faces f(yaw).
-    const Vec3 front_file{n.global[2], n.global[6], n.global[10]};
-    const Vec3 front = FromGltf(front_file.x, front_file.y, front_file.z) * (1.0 / o.scale[1]);
-    CHECK(front.x == Approx(std::sin(o.pose->yaw)).margin(1e-4));
-    CHECK(front.y == Approx(-std::cos(o.pose->yaw)).margin(1e-4));
-  }
-  // Instancing: objects with the same asset share one mesh.
-  std::map<std::string, std::vector<int>> meshes_of;
-  for (const scene::SceneObject& o : s->objects) {
-    auto& m = meshes_of[o.asset];
-    if (m.empty()) m = nodes[o.id]->meshes;
-    else CHECK(nodes[o.id]->meshes == m);
-  }
-  CHECK(meshes_of.size() < s->objects.size());
+  // Each object where scene.json puts it, instanced meshes (tests/furnished_glb.h).
+  std::map<std::string, const SceneNodeInfo*> nodes = testing::CheckGlbAgreesWithScene(*glb, *s);
 
   // Collisions from the .glb alone: every object's mesh (its node's meshes back in the z-up asset frame)
   // and the building's walls, doors and stairs as the file holds them, checked by the solver's exact
@@ -275,6 +276,23 @@ TEST_CASE("A reader with only furnished.glb finds every object where scene.json 
   }
 }
 
+TEST_CASE("villa furnish --no-reach skips reachability: RCH and ACC not measured, no feedback", "[solver][furnish]") {
+  TempDir dir("noreach");
+  Run run = Villa("furnish " + kHouse + " --procedural --seed 3 -o " + dir.path.string() + " --no-reach");
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("reach:") == std::string::npos);
+  auto report = nlohmann::json::parse(Read(dir.path / "report.json"));
+  CHECK(report["reachability"].is_null());
+  CHECK(report["totals"]["RCH"].is_null());
+  for (const auto& room : report["rooms"]) {
+    CHECK(room["metrics"]["RCH"].is_null());
+    CHECK(room["metrics"]["ACC"].is_null());
+  }
+  CHECK(fs::exists(dir.path / "plan.png"));  // the plan still shows the furniture
+  CHECK(Villa("furnish " + kHouse + " --procedural --radius 0 -o " + (dir.path / "r").string()).status == 2);
+}
+
 TEST_CASE("villa furnish: usage errors exit 2, bad input exits 1, nothing is overwritten without --force", "[solver][furnish]") {
   TempDir dir("usage");
   const fs::path out = dir.path / "out";
@@ -322,7 +340,8 @@ TEST_CASE("villa furnish: usage errors exit 2, bad input exits 1, nothing is ove
 
   Run help = Villa("furnish --help");
   CHECK(help.status == 0);
-  for (const char* word : {"scene.json", "furnished.glb", "report.json", "CREDITS", "--jobs", "--library", "--room"})
+  for (const char* word : {"scene.json", "furnished.glb", "report.json", "CREDITS", "plan.png", "--jobs", "--library", "--room",
+                           "--no-reach", "--radius"})
     CHECK(help.out.find(word) != std::string::npos);
 }
 

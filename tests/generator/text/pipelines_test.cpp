@@ -72,12 +72,13 @@ TEST_CASE("eval plans every prompt in order, the same for any job count") {
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("generate writes the layout, plans, building, preview and report, and refuses to overwrite") {
+TEST_CASE("generate without furnishing writes the layout, plans, building, preview and report, and refuses to overwrite") {
   const auto dir = std::filesystem::temp_directory_path() / ("villa_generate_lib_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   GenerateOptions options;
   options.plan.seed = 5;
   options.out = dir;
+  options.furnish = false;
   std::string problem;
   REQUIRE(options.IsValid(&problem));
   REQUIRE(CheckGenerateOutput(options).ok());
