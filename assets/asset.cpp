@@ -218,6 +218,7 @@ nlohmann::ordered_json AssetToJson(const AssetRecord& a) {
   }
   j["to_asset"] = m;
   j["front_yaw_offset"] = a.front_yaw_offset;
+  if (!a.front_decided_by.empty()) j["front_decided_by"] = a.front_decided_by;
   j["placement"] = PlacementName(a.placement);
   j["affordances"] = AffordanceNames(a.affordances);
   ojson surfaces = ojson::array();
@@ -297,6 +298,7 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
   r.Integer("front_yaw_offset", &a.front_yaw_offset, &error);
   if (error.empty() && a.front_yaw_offset % 90 != 0)
     error = r.Fail("front_yaw_offset", "must be a multiple of 90, got " + std::to_string(a.front_yaw_offset));
+  r.String("front_decided_by", &a.front_decided_by, &error, false);
   std::string placement;
   if (r.String("placement", &placement, &error) && error.empty()) {
     auto p = ParsePlacement(placement);

@@ -85,6 +85,9 @@ struct AssetRecord {
   // 3x4 row-major: source-file coordinates -> asset frame (identity for procedural assets).
   std::array<std::array<double, 4>, 3> to_asset{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
   int front_yaw_offset = 0;   // degrees, a multiple of 90
+  // Who found the front on another side (or confirmed it) and how, when someone did ("model NAME at URL:
+  // picture 2 of 4, turned by -90 degrees ..."); written only when set (docs/ASSETS.md).
+  std::string front_decided_by;
   Placement placement = Placement::kFloor;
   unsigned affordances = kConsumer;
   std::vector<SupportSurface> support_surfaces;

@@ -9,6 +9,7 @@
 
 #include "assets/category.h"
 #include "util/atomic_file.h"
+#include "util/user_dirs.h"
 
 namespace villa {
 namespace fs = std::filesystem;
@@ -123,12 +124,7 @@ Result<std::vector<Embedding>> LexicalEmbedder::Embed(const std::vector<std::str
 
 // ---- cache
 
-fs::path DefaultEmbeddingCacheDir() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg && fs::path(xdg).is_absolute()) return fs::path(xdg) / "villa" / "embeddings";
-  const char* home = std::getenv("HOME");
-  return fs::path(home && *home ? home : ".") / ".cache" / "villa" / "embeddings";
-}
+fs::path DefaultEmbeddingCacheDir() { return UserCacheDir() / "embeddings"; }
 
 CachedEmbedder::CachedEmbedder(std::shared_ptr<const Embedder> inner, fs::path dir)
     : inner_(std::move(inner)), dir_(std::move(dir)) {}

@@ -2,8 +2,11 @@
 // layouts `villa synth --count N --seed S` writes): per room type and room shape, the exact metrics (CR, FR,
 // OBR, CSR), NO, outcomes and the seconds a room (thread CPU time: rooms run one at a time here), seconds
 // by object count, the mean NO over the five rich room types, every room that did not end clean with its
-// reason, and the ratio to the paper's ~15 minutes a room. `make bench` runs it with procedural assets;
-//   villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--verbose]
+// reason, and the ratio to the paper's ~15 minutes a room. With a critic (`--critic offline`, the default
+// of `villa furnish`), also the share of the graphs' semantic edges satisfied per relation type and of the
+// interaction zones kept clear, before the critic (the solver alone) and after it, and the critic's
+// seconds a room. `make bench` runs it with procedural assets, without and with the offline critic;
+//   villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose]
 // --library furnishes with an imported asset library instead (villa assets import --library DIR).
 #include <algorithm>
 #include <cmath>
@@ -15,6 +18,8 @@
 #include <vector>
 
 #include "assets/procedural.h"
+#include "critic/critic.h"
+#include "critic/relations.h"
 #include "layout/geometry.h"
 #include "layout/layout_io.h"
 #include "partitioner/dataset.h"
@@ -116,26 +121,35 @@ std::vector<Villa> Synthesized(uint64_t count, uint64_t seed) {
 int main(int argc, char** argv) {
   uint64_t villas = 50, seed = 7;
   std::string library_dir;
+  std::string critic_name = "none";
   bool verbose = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--villas" && i + 1 < argc) villas = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--library" && i + 1 < argc) library_dir = argv[++i];
+    else if (a == "--critic" && i + 1 < argc) critic_name = argv[++i];
     else if (a == "--verbose") verbose = true;
     else {
-      std::fprintf(stderr, "usage: villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--verbose]\n");
+      std::fprintf(stderr, "usage: villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose]\n");
       return 2;
     }
   }
+  auto critic_kind = critic::ParseCriticKind(critic_name);
+  if (!critic_kind || *critic_kind == critic::CriticKind::kMllm) {
+    std::fprintf(stderr, "--critic %s: expected none or offline\n", critic_name.c_str());
+    return 2;
+  }
+  critic::CriticOptions critic_options;
+  critic_options.kind = *critic_kind;
   auto library = scene::OpenFurnishingLibrary(library_dir, library_dir.empty());
   if (!library.ok()) {
     std::fprintf(stderr, "%s\n", library.error().c_str());
     return 1;
   }
-  std::printf("furnish: the 4 examples and %llu villas of `villa synth --count %llu --seed %llu`, assets: %s\n",
+  std::printf("furnish: the 4 examples and %llu villas of `villa synth --count %llu --seed %llu`, critic %s, assets: %s\n",
               static_cast<unsigned long long>(villas), static_cast<unsigned long long>(villas),
-              static_cast<unsigned long long>(seed),
+              static_cast<unsigned long long>(seed), critic_name.c_str(),
               library_dir.empty() ? "procedural only" : ("library " + library_dir + " (" +
                                                          std::to_string(library->library->records().size()) + " records)").c_str());
   std::vector<Villa> all = Examples();
@@ -146,11 +160,15 @@ int main(int argc, char** argv) {
   int library_assets = 0, procedural_assets = 0, fallbacks = 0;
   std::vector<std::string> failures;
   double wall = 0.0;
+  critic::RelationTally before, after;
+  std::vector<double> critic_seconds;
+  int critic_removed = 0;
   for (const Villa& v : all) {
     solver::FurnishOptions options;
     options.jobs = 1;
     options.seed = seed;
     options.check_reach = false;  // the solver alone; bench/reach.cpp measures reachability and its feedback
+    options.critic = critic::MakeRoomCritic(critic_options);
     auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
     if (!furnished.ok()) {
       std::fprintf(stderr, "%s: %s\n", v.name.c_str(), furnished.error().c_str());
@@ -163,6 +181,18 @@ int main(int argc, char** argv) {
       for (const scene::AcquiredAsset& a : r.assets) fallbacks += a.rule == scene::AcquireRule::kFallback;
       if (!r.solve) continue;  // nothing to place (a staircase room)
       const std::string type(CategoryName(r.category));
+      if (r.critic) {
+        for (auto [tally, key] : {std::pair{&before, "relations_before"}, std::pair{&after, "relations_after"}})
+          for (const auto& [name, n] : critic::TallyFromJson(r.critic->record[key]["by_relation"])) {
+            (*tally)[type + " " + name].satisfied += n.satisfied, (*tally)[type + " " + name].measured += n.measured;
+            (*tally)[type + " " + name].lost += n.lost;
+            (*tally)[name].satisfied += n.satisfied, (*tally)[name].measured += n.measured, (*tally)[name].lost += n.lost;
+          }
+        critic_seconds.push_back(r.critic->seconds);
+        for (const solver::ActionResult& a : r.solve->actions)
+          critic_removed += a.action.kind == solver::ActionKind::kRemoveEntity && a.action.reason.rfind("critic:", 0) == 0 &&
+                            a.status != solver::ActionStatus::kRefused;
+      }
       const Room& room = v.layout.rooms[v.layout.FindRoom(r.room)];
       by_type[type].Add(r);
       by_shape[ShapeOf(room.polygon)].Add(r);
@@ -211,6 +241,29 @@ int main(int argc, char** argv) {
   std::printf("assets: %d objects from the library, %d procedural (%d fallbacks)\n", library_assets, procedural_assets, fallbacks);
   std::printf("mean %.3f s a room, %.0fx faster than the paper's ~15 min a room; %.1f s wall for all villas\n", total.Mean(),
               total.Mean() > 0 ? kPaperSecondsPerRoom / total.Mean() : 0.0, wall);
+  if (!critic_seconds.empty()) {
+    // Per relation type over every room (then per room type): edges satisfied / edges whose two objects are
+    // in the room; "lost": edges of objects removed (by the solver before the critic; by either after it),
+    // counted as not satisfied in the "with lost" share.
+    auto share = [](const critic::RelationCount& n, bool with_lost) {
+      const int d = n.measured + (with_lost ? n.lost : 0);
+      return d ? FormatFixed(100.0 * n.satisfied / d, 1) : std::string("-");
+    };
+    TextTable relations({"relation", "edges", "before %", "after %", "after, lost counted %", "lost before", "lost after"});
+    for (bool by_type : {false, true})
+      for (const auto& [name, n] : after) {
+        if ((name.find(' ') != std::string::npos) != by_type) continue;
+        const critic::RelationCount& b = before[name];
+        relations.AddRow({name, std::to_string(n.measured + n.lost), share(b, false), share(n, false), share(n, true),
+                          std::to_string(b.lost), std::to_string(n.lost)});
+      }
+    double sum = 0.0, worst = 0.0;
+    for (double x : critic_seconds) sum += x, worst = std::max(worst, x);
+    std::printf("\nsemantic relations (exact, docs/CRITIC.md), before the critic (the solver alone) and after it:\n%s",
+                relations.Render().c_str());
+    std::printf("critic: %.3f s a room on average (max %.3f s), included in the seconds above; %d objects removed by it\n",
+                sum / critic_seconds.size(), worst, critic_removed);
+  }
   std::printf("\nrooms not clean or with objects removed (%zu):\n", failures.size());
   for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
   return 0;

@@ -1,13 +1,17 @@
-// villa assets import|list|show|search: the asset library (assets/asset_library.h).
+// villa assets import|list|show|search|front: the asset library (assets/asset_library.h), an asset's four
+// views (assets/asset_views.h) and its front picked by a multimodal model (assets/asset_front.h).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <mutex>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "assets/asset_front.h"
 #include "assets/asset_library.h"
+#include "assets/asset_views.h"
 #include "assets/category.h"
 #include "assets/embedder.h"
 #include "assets/procedural.h"
@@ -15,6 +19,7 @@
 #include "assets/sh3d_import.h"
 #include "cli/command.h"
 #include "cli/flags.h"
+#include "cli/embedding_flags.h"
 #include "util/progress.h"
 #include "util/text_table.h"
 
@@ -115,9 +120,36 @@ void RunList(const ListCommand& command) {
 struct ShowCommand {
   std::string library;
   std::string id;
+  std::string render;  // --render FILE.png
+  int size = 480;
 };
 
+// The four views of the asset with its surfaces and cavities, two by two, into `path` (atomically).
+bool RenderShown(const AssetLibrary& library, const AssetRecord& record, const ShowCommand& command) {
+  auto mesh = library.Mesh(record.id);
+  if (!mesh.ok()) {
+    std::cerr << "villa assets show: " << mesh.error() << "\n";
+    return false;
+  }
+  AssetViewOptions options;
+  options.size_px = command.size;
+  auto views = RenderAssetViews(record, **mesh, options);
+  if (!views.ok()) {
+    std::cerr << "villa assets show: " << views.error() << "\n";
+    return false;
+  }
+  auto sheet = AssetViewSheet(*views);
+  Status written = sheet.ok() ? WritePng(*sheet, command.render) : Status(Error{sheet.error()});
+  if (!written.ok()) {
+    std::cerr << "villa assets show: " << command.render << ": " << written.error() << "\n";
+    return false;
+  }
+  return true;
+}
+
 void RunShow(const ShowCommand& command) {
+  if (!command.render.empty() && std::filesystem::path(command.render).extension() != ".png")
+    throw UsageError("assets show: --render " + command.render + ": the picture's name must end in .png");
   std::optional<AssetLibrary> library = OpenLibrary(command.library, "show");
   if (!library) return;
   const AssetRecord* r = library->Find(command.id);
@@ -158,7 +190,15 @@ void RunShow(const ShowCommand& command) {
   table.AddRow({"mesh", r->mesh.file + ", " + std::to_string(r->mesh.triangles) + " triangles, " +
                             (r->mesh.watertight ? "watertight" : "not watertight") + ", manifold edges " +
                             FormatPercent(r->mesh.manifold_edges, 1.0)});
+  if (!r->front_decided_by.empty()) table.AddRow({"front decided by", r->front_decided_by});
   std::cout << table.Render();
+  if (!command.render.empty()) {
+    if (!RenderShown(*library, *r, command)) {
+      SetExitCode(kExitFailure);
+      return;
+    }
+    std::cout << "wrote " << command.render << " (four views: -y, +x, +y, -x; surfaces S<i>, cavities C<k>)\n";
+  }
   SetExitCode(kExitOk);
 }
 
@@ -173,6 +213,7 @@ struct SearchCommand {
   bool json = false;
   bool no_procedural = false;
   RetrievalQuery query;
+  EmbeddingFlags embeddings;
 };
 
 void RunSearch(SearchCommand& command) {
@@ -190,8 +231,9 @@ void RunSearch(SearchCommand& command) {
   command.query.text = command.text;
   std::optional<AssetLibrary> library = OpenLibrary(command.library, "search");
   if (!library) return;
-  // The offline lexical embedder; an OpenAI-compatible endpoint plugs in here once llm/ is available.
-  auto embedder = std::make_shared<LexicalEmbedder>();
+  // The offline lexical embedder, or an OpenAI-compatible endpoint's (cached on disk by text).
+  std::shared_ptr<const Embedder> embedder = EmbedderFrom(command.embeddings, "assets search");
+  if (!embedder) embedder = std::make_shared<LexicalEmbedder>();
   Result<AssetRetriever> retriever = AssetRetriever::Build(library->records(), embedder);
   if (!retriever.ok()) {
     std::cerr << "villa assets search: " << retriever.error() << "\n";
@@ -237,6 +279,78 @@ void RunSearch(SearchCommand& command) {
   SetExitCode(kExitOk);
 }
 
+// ---- front
+
+struct FrontCommand {
+  std::string library;
+  std::string id;
+  std::string api_key_env;
+  std::string cache_dir;
+  bool no_cache = false;
+  bool dry_run = false;
+  FrontPickOptions options;
+};
+
+void RunFront(FrontCommand& command) {
+  FrontPickOptions& o = command.options;
+  if (o.llm.url.empty()) throw UsageError("assets front: needs --mllm URL (an OpenAI-compatible vision endpoint)");
+  if (o.llm.model.empty()) throw UsageError("assets front: needs --model NAME");
+  if (!command.api_key_env.empty()) {
+    const char* key = std::getenv(command.api_key_env.c_str());
+    if (!key || !*key) throw UsageError("assets front: --api-key-env " + command.api_key_env + ": that environment variable is not set");
+    o.llm.api_key = key;
+  }
+  std::string message;
+  if (!o.llm.IsValid(&message)) throw UsageError("assets front: " + message);
+  o.chat.cache_dir = command.no_cache ? std::filesystem::path()
+                     : command.cache_dir.empty() ? DefaultLlmCacheDir() : std::filesystem::path(command.cache_dir);
+  std::optional<AssetLibrary> library = OpenLibrary(command.library, "front");
+  if (!library) return;
+  const AssetRecord* record = library->Find(command.id);
+  if (!record) {
+    std::cerr << "villa assets front: " << command.id << ": no such asset in " << library->dir().string() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  if (record->source.kind == "procedural") {
+    std::cerr << "villa assets front: " << command.id << ": a procedural asset's front is -y by construction\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  auto mesh = library->Mesh(command.id);
+  if (!mesh.ok()) {
+    std::cerr << "villa assets front: " << mesh.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  auto pick = PickAssetFront(*record, **mesh, o);
+  if (!pick.ok()) {
+    std::cerr << "villa assets front: " << pick.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  const std::string decided = "model " + o.llm.model + " at " + ChatCompletionsUrl(o.llm.url) + ": the front is picture " +
+                              std::to_string(pick->view + 1) + " of 4 (seen from " + std::string(pick->view == 0 ? "-y" : pick->view == 1 ? "+x" : pick->view == 2 ? "+y" : "-x") +
+                              "), turned by " + std::to_string(pick->turn_deg) + " degrees, confidence " + FormatFixed(pick->confidence, 2) +
+                              (pick->reason.empty() ? "" : ": " + pick->reason);
+  std::cout << command.id << ": " << decided << " (" << pick->chat.requests << " request(s), " << pick->chat.cache_hits
+            << " from the cache, " << pick->chat.prompt_tokens + pick->chat.completion_tokens << " tokens)\n";
+  if (command.dry_run) {
+    std::cout << "dry run: the library is unchanged\n";
+    SetExitCode(kExitOk);
+    return;
+  }
+  auto written = WriteAssetFront(library->dir(), command.id, pick->view, decided);
+  if (!written.ok()) {
+    std::cerr << "villa assets front: " << written.error() << "\n";
+    SetExitCode(kExitFailure);
+    return;
+  }
+  std::cout << "updated " << (library->dir() / kLibraryRecordsFile).string() << ": front_yaw_offset " << written->front_yaw_offset
+            << ", size " << Size(written->size) << (written->mesh.file.empty() ? "" : ", mesh " + written->mesh.file) << "\n";
+  SetExitCode(kExitOk);
+}
+
 Registration registration{70, [](CLI::App& app) {
   CLI::App* assets = app.add_subcommand(
       "assets",
@@ -270,9 +384,12 @@ Registration registration{70, [](CLI::App& app) {
   sub->callback([list] { RunList(*list); });
 
   auto show = std::make_shared<ShowCommand>();
-  sub = assets->add_subcommand("show", "Print one asset's record as a table.");
+  sub = assets->add_subcommand("show", "Print one asset's record as a table; --render draws it from four sides with its support\n"
+                                         "surfaces (coloured slabs S<i>) and cavities (see-through boxes C<k>).");
   sub->add_option("--library", show->library, "library folder");
   sub->add_option("id", show->id, "asset id, e.g. \"sh3d:BlendSwap-CC-0#bookcase\"")->required();
+  sub->add_option("--render", show->render, "also write the four views (two by two) to this PNG file");
+  sub->add_option("--size", show->size, "pixels of each view (default 480)")->check(CLI::Range(64, 4096));
   sub->callback([show] { RunShow(*show); });
 
   auto search = std::make_shared<SearchCommand>();
@@ -295,7 +412,36 @@ Registration registration{70, [](CLI::App& app) {
   sub->add_option("--placement", search->placement, "only assets placed so: floor, wall, ceiling or surface");
   sub->add_flag("--no-procedural", search->no_procedural, "rank the library's records only (no procedural offer)");
   sub->add_flag("--json", search->json, "one JSON object a line: id, score, similarity, size_fit, name, category");
+  sub->add_option("--embeddings", search->embeddings.url,
+                  "rank by the embeddings of this OpenAI-compatible server (http://host:port, .../v1 or .../v1/embeddings) "
+                  "instead of the offline lexical ones; every text is cached on disk by its hash");
+  sub->add_option("--model", search->embeddings.model, "the embedding model's name (with --embeddings)");
+  sub->add_option("--api-key-env", search->embeddings.api_key_env, "environment variable holding the API key (never printed)");
+  sub->add_option("--embeddings-cache", search->embeddings.cache_dir,
+                  "folder of cached embeddings (default: " + DefaultEmbeddingCacheDir().string() + ")");
   sub->callback([search] { RunSearch(*search); });
+
+  auto front = std::make_shared<FrontCommand>();
+  sub = assets->add_subcommand(
+      "front",
+      "Find an imported asset's front with a multimodal model: four views of it (from -y, the recorded front,\n"
+      "then +x, +y and -x) go to an OpenAI-compatible vision endpoint, which answers which one shows the\n"
+      "front. The record and its mesh are turned so that side faces -y (size, surfaces and cavities with it),\n"
+      "front_yaw_offset adds the turn and front_decided_by says who decided; the library is rewritten\n"
+      "atomically (a new mesh file beside the old one, then assets.jsonl). Answers are cached. Exit status: 0\n"
+      "decided (and written unless --dry-run), 1 no such asset, no usable answer or a failed write, 2 usage.");
+  sub->add_option("id", front->id, "asset id")->required();
+  sub->add_option("--library", front->library, "library folder");
+  sub->add_option("--mllm", front->options.llm.url, "the model's server: http://host:port, .../v1 or .../v1/chat/completions")->required();
+  sub->add_option("--model", front->options.llm.model, "model name sent in the request")->required();
+  sub->add_option("--api-key-env", front->api_key_env, "environment variable holding the API key (never printed)");
+  sub->add_option("--timeout", front->options.llm.timeout_s, "seconds to wait for the answer")->capture_default_str();
+  sub->add_option("--llm-cache", front->cache_dir, "folder of cached answers (default: " + DefaultLlmCacheDir().string() + ")");
+  sub->add_flag("--no-cache", front->no_cache, "neither read nor write cached answers");
+  sub->add_flag("--no-schema", [o = &front->options](std::int64_t) { o->json_schema = false; },
+                "do not send response_format json_schema (servers without structured output)");
+  sub->add_flag("--dry-run", front->dry_run, "ask and print the decision, change nothing");
+  sub->callback([front] { RunFront(*front); });
 }};
 
 }  // namespace

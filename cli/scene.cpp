@@ -9,6 +9,7 @@
 #include "building/building.h"
 #include "cli/command.h"
 #include "cli/flags.h"
+#include "cli/embedding_flags.h"
 #include "layout/layout_io.h"
 #include "layout/validate.h"
 #include "scene/acquire.h"
@@ -33,6 +34,7 @@ struct PlanCommand {
   std::string library;
   bool procedural = false;
   scene::PlannerOptions options;
+  EmbeddingFlags embeddings;
 };
 
 void Fail(const std::string& message) {
@@ -85,7 +87,9 @@ void Run(PlanCommand& command) {
 
   auto library = scene::OpenFurnishingLibrary(command.library, command.procedural);
   if (!library) return Fail(library.error());
-  auto acquirer = scene::AssetAcquirer::Make(*library->library, {}, command.seed, command.text);
+  scene::AcquireOptions acquire;
+  acquire.embedder = EmbedderFrom(command.embeddings, "scene plan");
+  auto acquirer = scene::AssetAcquirer::Make(*library->library, acquire, command.seed, command.text);
   if (!acquirer) return Fail(acquirer.error());
   auto assets = (*acquirer)->Acquire(*context, plan->objects);
   if (!assets) return Fail(assets.error());
@@ -148,6 +152,11 @@ Registration registration{70, [](CLI::App& app) {
                    "asset library folder (default: $VILLA_ASSETS, else ~/.local/share/villa/assets when installed, "
                    "else procedural assets only)");
   plan->add_flag("--procedural", command->procedural, "procedural assets only, whatever library is installed");
+  plan->add_option("--embeddings", command->embeddings.url,
+                   "rank library assets by the embeddings of this OpenAI-compatible server instead of the offline "
+                   "lexical ones (cached on disk by text)");
+  plan->add_option("--model", command->embeddings.model, "the embedding model's name (with --embeddings)");
+  plan->add_option("--api-key-env", command->embeddings.api_key_env, "environment variable holding the API key (never printed)");
   plan->add_flag("-q,--quiet", command->quiet, "print nothing on success");
   plan->add_option("--floor-share", command->options.floor_share,
                    "share of the furnishable floor the priors' floor objects may cover")

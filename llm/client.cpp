@@ -313,6 +313,12 @@ Result<ChatAnswer> ChatCompletion(const LlmOptions& options, const std::vector<C
   const Json& message = choice["message"];
   if (message.contains("content") && message["content"].is_string())
     answer.content = WithoutKey(message["content"].get<std::string>(), options.api_key);
+  if (j.contains("usage") && j["usage"].is_object()) {
+    const Json& usage = j["usage"];
+    auto count = [&](const char* key) { return usage.contains(key) && usage[key].is_number_integer() ? usage[key].get<int>() : 0; };
+    answer.prompt_tokens = count("prompt_tokens");
+    answer.completion_tokens = count("completion_tokens");
+  }
   return answer;
 }
 

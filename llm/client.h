@@ -69,6 +69,9 @@ struct ChatAnswer {
   std::string finish_reason;  // "stop", "length", ...
   int http_attempts = 0;      // requests sent, retries included
   double seconds = 0.0;
+  // The server's "usage" figures when it sends them (0 when it does not).
+  int prompt_tokens = 0;
+  int completion_tokens = 0;
 };
 
 // Sends one chat completion request (with the retries above). The error names the URL, the HTTP status

@@ -129,7 +129,9 @@ Result<std::shared_ptr<AssetAcquirer>> AssetAcquirer::Make(const AssetLibrary& l
   a->options_ = std::move(options);
   a->options_.retrieval.k = a->options_.candidates;
   if (!library.records().empty()) {
-    auto retriever = AssetRetriever::Build(library.records(), std::make_shared<LexicalEmbedder>());
+    std::shared_ptr<const Embedder> embedder = a->options_.embedder;
+    if (!embedder) embedder = std::make_shared<LexicalEmbedder>();
+    auto retriever = AssetRetriever::Build(library.records(), embedder);
     if (!retriever.ok()) return Error{"asset retrieval: " + retriever.error()};
     a->retriever_ = std::move(*retriever);
     // The procedural offer competing in every ranking is the asset rule 3 would fall back to: same

@@ -47,6 +47,9 @@ struct AcquireOptions {
   bool structural_procedural = true;
   // Retrieval weights (assets/retrieval.h); `k` is replaced by `candidates`.
   RetrievalOptions retrieval;
+  // The text embeddings retrieval ranks by; null: the offline lexical embedder. An OpenAI-compatible
+  // endpoint (assets/remote_embedder.h) goes behind a CachedEmbedder.
+  std::shared_ptr<const Embedder> embedder;
 
   std::string Check() const;  // empty when usable
 };

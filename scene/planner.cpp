@@ -611,6 +611,7 @@ class Planning {
           case Pick::kFirst: t = targets->front(); break;
           case Pick::kSame: t = (*targets)[std::min<size_t>(k, targets->size() - 1)]; break;
           case Pick::kPrevious: t = k > 0 && rule.target == n.info->name ? (*targets)[k - 1] : -1; break;
+          case Pick::kLast: t = targets->back(); break;
           case Pick::kAlternate:
             t = targets->front();
             if (relation == SemanticRelation::kLeftOf && k % 2 == 1) relation = SemanticRelation::kRightOf;

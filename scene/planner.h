@@ -22,6 +22,9 @@ struct PlanRequest {
   const RoomContext* room = nullptr;  // required
   std::string text;                   // the request ("" = priors only); may speak of other rooms too
   uint64_t seed = 0;
+  // The layout the room belongs to, when the caller has it: a planner that revises graphs (an MLLM)
+  // checks them with the structural validator, which needs it. May be null.
+  const Layout* layout = nullptr;
 };
 
 struct PlannerOptions {

@@ -145,9 +145,11 @@ std::vector<RoomPriors> MakeTable() {
 
   t.push_back({C::kKitchen, 24, 12.0, {
       Wall("counter", 2, 4).Key().Edge(R::kNextTo, "counter", MaxGap(0.05), Pick::kPrevious).Edge(R::kAlign, "counter", {}, Pick::kPrevious),
+      // One run: fridge, counters, cooker, dishwasher, each touching the next (a counter has two ends: when
+      // every appliance touched the first counter, no straight run could hold them all).
       Wall("fridge", 1, 1).Key().Edge(R::kNextTo, "counter"),
-      Wall("cooker", 1, 1).Key().Edge(R::kNextTo, "counter", MaxGap(0.05)),
-      Wall("dishwasher", 0, 1).Edge(R::kNextTo, "counter", MaxGap(0.05)),
+      Wall("cooker", 1, 1).Key().Edge(R::kNextTo, "counter", MaxGap(0.05), Pick::kLast),
+      Wall("dishwasher", 0, 1).Edge(R::kNextTo, "cooker", MaxGap(0.05)),
       OnWall("upper-cabinet", 1, 3).Edge(R::kBehind, "counter", {}, Pick::kSame).Edge(R::kAlign, "counter", {}, Pick::kSame),
       OnWall("range-hood", 0, 1).Edge(R::kBehind, "cooker").Edge(R::kCentered, "cooker"),
       Free("island", 0, 1).Edge(R::kFrontOf, "counter", Gap(0.9, 3.0)).Hint(kHintMiddle).MinArea(14.0),

@@ -35,6 +35,7 @@ enum class Pick {
   kSame,       // the i-th, or the last when there are fewer (upper cabinet i above counter i)
   kPrevious,   // instance i-1 of the item's own category (contiguous counters); none for i = 0
   kAlternate,  // the first, with left_of for even i and right_of for odd i (nightstands beside the bed)
+  kLast,       // the last one (the cooker at the end of the run of counters)
 };
 
 struct EdgeRule {

@@ -17,6 +17,7 @@
 #include "scene/file_digest.h"
 #include "scene/random.h"
 #include "scene/validate.h"
+#include "solver/room_view.h"
 #include "solver/scene_problem.h"
 #include "util/atomic_file.h"
 
@@ -117,7 +118,7 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
   }
 
   auto t = Clock::now();
-  auto plan = planner.Plan({&context, options.text, options.seed});
+  auto plan = planner.Plan({&context, options.text, options.seed, &villa.layout});
   if (!plan.ok()) {
     out.error = context.name + ": " + plan.error();
     return out;
@@ -173,6 +174,17 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
       return out;
     }
     out.solver->RunAgent();
+    // Issue 14: a critic reviews the room and acts through the same session (critic/critic.h).
+    if (options.critic) {
+      const RoomCriticInput input{&context, &villa.building, &mapped->problem, &plan->objects, &plan->edges,
+                                  options.text, solve, options.check, resolve, out.solver.get()};
+      auto figures = options.critic(input);
+      if (!figures.ok()) {
+        out.error = context.name + ": " + figures.error();
+        return out;
+      }
+      report.critic = std::move(*figures);
+    }
     report.seconds_solve = Since(t);
     out.planned = plan->objects;
     out.planned_edges = plan->edges;
@@ -273,6 +285,18 @@ scene::Metrics BuildingMetrics(const std::vector<RoomReport>& rooms) {
 
 Json StringArray(const std::vector<std::string>& v) { return Json(v); }
 
+Json CriticJson(const CriticFigures& c) {
+  Json j{{"critic", c.critic},
+         {"rounds", c.rounds},
+         {"requests", c.requests},
+         {"cache_hits", c.cache_hits},
+         {"prompt_tokens", c.prompt_tokens},
+         {"completion_tokens", c.completion_tokens},
+         {"seconds", Round4(c.seconds)}};
+  if (!c.record.is_null()) j["record"] = c.record;
+  return j;
+}
+
 Json RoomJson(const RoomReport& r, const std::optional<ReachFigures>& reach, const std::vector<scene::SceneObject>& objects) {
   Json j;
   j["room"] = r.room;
@@ -342,6 +366,7 @@ Json RoomJson(const RoomReport& r, const std::optional<ReachFigures>& reach, con
     metrics["ACC"] = nullptr;
   }
   j["metrics"] = std::move(metrics);
+  if (r.critic) j["critic"] = CriticJson(*r.critic);
   j["seconds"] = {{"plan", Round4(r.seconds_plan)}, {"acquire", Round4(r.seconds_acquire)}, {"solve", Round4(r.seconds_solve)},
                   {"total", Round4(r.seconds)}, {"cpu", Round4(r.cpu_seconds)}};
   return j;
@@ -473,7 +498,8 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
   villa.assets = *acquirer;
 
   // Rooms in parallel; results land in layout order, so the output does not depend on the job count.
-  const scene::PriorsPlanner planner(options.planner);
+  const scene::PriorsPlanner priors(options.planner);
+  const scene::GraphPlanner& planner = options.graph_planner ? *options.graph_planner : priors;
   const size_t n = villa.contexts.size();
   if (options.on_start) options.on_start(asked.empty() ? n : asked.size());
   std::vector<RoomResult> results(n);
@@ -594,6 +620,19 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
                  {"seconds", Round4(s.seconds)},
                  {"room_seconds", Round4(s.room_seconds)}};
   j["by_room_type"] = ByRoomType(villa.rooms);
+  // The critic's cost over the rooms: questions, answers from the cache, tokens, time.
+  CriticFigures critic;
+  for (const RoomReport& r : villa.rooms) {
+    if (!r.critic) continue;
+    critic.critic = r.critic->critic;
+    critic.rounds += r.critic->rounds;
+    critic.requests += r.critic->requests;
+    critic.cache_hits += r.critic->cache_hits;
+    critic.prompt_tokens += r.critic->prompt_tokens;
+    critic.completion_tokens += r.critic->completion_tokens;
+    critic.seconds += r.critic->seconds;
+  }
+  j["totals"]["critic"] = critic.critic.empty() ? Json(nullptr) : CriticJson(critic);
   Json rooms = Json::array();
   for (const RoomReport& r : villa.rooms) rooms.push_back(RoomJson(r, villa.reach, villa.scene.objects));
   j["rooms"] = std::move(rooms);
@@ -678,6 +717,28 @@ std::string FurnishCredits(const FurnishedVilla& villa) {
                        : "These models are licensed under Creative Commons Attribution and are credited as their licence asks:\n" + lines;
   return out;
 }
+
+namespace {
+// rooms/<room>.png of one room (solver/room_view.h RoomPicture): its objects as the scene places them.
+Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::RoomContext& context) {
+  RoomViewInput input;
+  input.building = &villa.building;
+  input.room = context.name;
+  input.level = context.level;
+  input.polygon = context.polygon;
+  input.floor_z = context.floor_z;
+  input.clear_height = context.clear_height;
+  for (const scene::SceneObject& o : villa.scene.objects) {
+    if (o.room != context.name || !o.pose) continue;
+    auto mesh = villa.library->Mesh(o.asset);
+    if (!mesh.ok()) return Error{o.id + ": " + mesh.error()};
+    input.objects.push_back({"", *mesh, Pose{o.pose->x, o.pose->y, o.pose->z, o.pose->yaw, o.scale[0]}});
+  }
+  auto picture = RoomPicture(input);
+  if (!picture.ok()) return Error{picture.error()};
+  return EncodePng(*picture);
+}
+}  // namespace
 
 PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
   PlanOverlay overlay;
@@ -774,7 +835,16 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
     if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
   }
   if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
-
+  if (options.pictures) {
+    fs::create_directories(dir / "rooms", ec);
+    if (ec) return Error{(dir / "rooms").string() + ": cannot create the folder: " + ec.message()};
+    for (size_t i = 0; i < villa.contexts.size(); ++i) {
+      const std::string name = RoomPictureName(villa.contexts[i].name);
+      auto png = RoomPicturePng(villa, villa.contexts[i]);
+      if (!png.ok()) return Error{(dir / name).string() + ": " + png.error()};
+      if (Status s = write(name, *png); !s) return Error{s.error()};
+    }
+  }
   return written;
 }
 

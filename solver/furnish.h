@@ -63,6 +63,33 @@ struct ReachFigures {
   double seconds = 0.0;         // wall time of the check and the feedback loop
 };
 
+// What a critic (issue 14, critic/) is given for one room: the room's solver session, initialised and
+// with the rule agent run, which it drives (Apply, Fits, Suggest, KeepCurrent, Finish; solver/solve.h)
+// and leaves as it wants the room (the reachability feedback goes on with the same session). Everything
+// pointed to outlives the call; critics run on the room workers' threads.
+struct RoomCriticInput {
+  const scene::RoomContext* context = nullptr;
+  const BuildingMesh* building = nullptr;
+  const RoomProblem* problem = nullptr;
+  const std::vector<scene::SceneObject>* planned = nullptr;  // the plan's objects, assets chosen
+  const std::vector<scene::SemanticEdge>* edges = nullptr;   // the plan's semantic edges
+  std::string text;       // the request ("" = priors only)
+  SolveOptions solve;     // the room's seed already mixed in
+  ExactCheckOptions check;
+  AssetResolver resolve;  // add_entity's asset ids to records and meshes
+  RoomSolver* session = nullptr;  // the room's session (null: the critic makes its own from the problem)
+};
+// What report.json says of a room's critic.
+struct CriticFigures {
+  std::string critic;  // "offline", "mllm"
+  int rounds = 0;
+  int requests = 0, cache_hits = 0;  // questions sent to a model / answered from the answer cache
+  int prompt_tokens = 0, completion_tokens = 0;
+  double seconds = 0.0;              // wall time of the critic's rounds (after the first solve)
+  nlohmann::ordered_json record;     // the critic's own account: rounds, scores, relations before and after
+};
+using RoomCritic = std::function<Result<CriticFigures>(const RoomCriticInput& input)>;
+
 struct FurnishOptions {
   // Rooms to furnish, as the layout names them ("living-room_0/0"); empty: every room. The others are
   // listed in the scene with no objects and the note "not asked for".
@@ -81,7 +108,7 @@ struct FurnishOptions {
   SolveOptions solve;  // its seed is replaced per room by the run's seed mixed with the room's name
   ExactCheckOptions check;
   bool allow_invalid = false;  // furnish a layout that breaks the geometric rules 1-5 (the builder adapts)
-  bool pictures = true;        // plan.png (rooms/<room>.png are reserved for room pictures, not drawn yet)
+  bool pictures = true;        // plan.png and rooms/<room>.png
   bool force = false;          // overwrite the outputs of an earlier run in the folder (never other files)
   // Reachability (docs/REACH.md), after every room is solved: a person (a disc of reach.reach.radius) walks
   // from the entrance to every room and interaction zone, across floors by the stairs; what furniture
@@ -89,6 +116,11 @@ struct FurnishOptions {
   // RCH, ACC and the paths go into report.json and plan.png. Off (`--no-reach`): not measured (null).
   bool check_reach = true;
   ReachFeedbackOptions reach;
+  // Issue 14: a critic reviews each solved room and acts through its solver session (critic/critic.h
+  // makes one); unset: the rule agent alone.
+  RoomCritic critic;
+  // The A-PSSG planner (an MLLM that revises the priors' graph, critic/); unset: PriorsPlanner(planner).
+  std::shared_ptr<const scene::GraphPlanner> graph_planner;
 
   // Progress (the CLI's bar), both may be empty: on_start once with the number of rooms to furnish, then
   // on_room_done from the worker threads as each room finishes.
@@ -114,6 +146,7 @@ struct RoomReport {
   std::vector<std::string> dropped;  // left out before solving, with why
   std::vector<std::string> notes;    // approximations of the problem mapping
   std::optional<SolveSummary> solve;  // absent when nothing was placed (no objects, not asked)
+  std::optional<CriticFigures> critic;  // when a critic drove the solver
   std::string outcome;               // "converged" / "budget" / "infeasible"
   std::string reason;                // why, in words
   int objects = 0;                   // NO: objects placed

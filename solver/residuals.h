@@ -382,7 +382,10 @@ struct FaceToResidual {
 };
 
 // front_of / behind / left_of / right_of, in the target's frame (front = -y, left = +x): the source's
-// centre lies beyond the target's face on that side; the residual is how far short it falls (m).
+// centre lies in the target's band on that side, i.e. on that side of the target's centre line and
+// within the target's extent across it (a painting on the wall behind a sofa, a nightstand beside the
+// bed's length). The residual is how far short of the centre line plus how far outside the band (m).
+// Distance is the gap edges' business; floor objects cannot overlap anyway, hung ones may (the painting).
 struct RelativeSideResidual {
   enum Side { kFront, kBehind, kLeft, kRight };
   BodyShape source, target;
@@ -391,19 +394,20 @@ struct RelativeSideResidual {
 
   template <typename T>
   bool operator()(const T* ps, const T* ss, const T* pt, const T* st, T* r) const {
+    using std::abs;
     const PlacedBox<T> a = PlaceBox(ps, ss, source);
     const PlacedBox<T> b = PlaceBox(pt, st, target);
     const T dx = a.cx - b.cx, dy = a.cy - b.cy;
     const T qx = dx * b.ux + dy * b.uy;
     const T qy = dx * b.vx() + dy * b.vy();
-    T short_by;
+    T short_by, outside;
     switch (side) {
-      case kFront: short_by = qy + b.hy; break;
-      case kBehind: short_by = b.hy - qy; break;
-      case kLeft: short_by = b.hx - qx; break;
-      default: short_by = qx + b.hx; break;
+      case kFront: short_by = qy, outside = abs(qx) - b.hx; break;
+      case kBehind: short_by = -qy, outside = abs(qx) - b.hx; break;
+      case kLeft: short_by = -qx, outside = abs(qy) - b.hy; break;
+      default: short_by = qx, outside = abs(qy) - b.hy; break;
     }
-    r[0] = T(weight) * Hinge(short_by);
+    r[0] = T(weight) * (Hinge(short_by) + Hinge(outside));
     return true;
   }
   static ceres::CostFunction* Create(const BodyShape& source, const BodyShape& target, Side side, double weight) {

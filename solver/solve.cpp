@@ -702,7 +702,11 @@ struct RoomSolver::Impl {
       ++summary.iterations;
       Check();
     }
-    // Keep the best state seen (its check again, with the clearance figure this time).
+    Finish(stuck);
+  }
+
+  // Ends on the best state seen (its check again, with the clearance figure this time) and says why.
+  void Finish(bool stuck) {
     state = best;
     energy = best_energy;
     const auto t = Clock::now();
@@ -768,11 +772,56 @@ ActionResult RoomSolver::Apply(const Action& action) {
   return r;
 }
 
+bool RoomSolver::Fits(const std::string& id, const Pose& pose, std::optional<int> wall) {
+  Impl& im = *impl_;
+  const int i = im.initialised ? im.state.Find(id) : -1;
+  if (i < 0) return false;
+  if (wall && (*wall < 0 || *wall >= static_cast<int>(im.problem.walls.size()))) return false;
+  const RoomState saved = im.state;
+  if (wall) im.state.placements[i].wall = *wall;
+  Pose want = pose;
+  if (std::isnan(want.z)) want.z = im.state.placements[i].pose.z;
+  im.state.SetPose(i, im.Snap(i, want));
+  const bool fits = im.CostAt(i).hard <= kFeasible;
+  im.state = saved;
+  return fits;
+}
+
+std::optional<ObjectPlacement> RoomSolver::Suggest(const std::string& id) {
+  Impl& im = *impl_;
+  const int i = im.initialised ? im.state.Find(id) : -1;
+  if (i < 0) return std::nullopt;
+  auto slot = im.FindSlot(i);
+  if (!slot) return std::nullopt;
+  ObjectPlacement out = im.state.placements[i];
+  out.pose = slot->pose;
+  out.wall = slot->wall;
+  out.surface = slot->surface;
+  out.cavity = slot->cavity;
+  return out;
+}
+
 void RoomSolver::RunAgent() {
   Impl& im = *impl_;
   if (!im.initialised) return;
   im.RunAgent();
   im.summary.seconds = Since(im.start);
+}
+
+void RoomSolver::Finish() {
+  Impl& im = *impl_;
+  if (!im.initialised) return;
+  im.Finish(false);
+  im.summary.seconds = Since(im.start);
+}
+
+void RoomSolver::KeepCurrent() {
+  Impl& im = *impl_;
+  if (!im.initialised) return;
+  im.best = im.state;
+  im.best_metrics = im.metrics;
+  im.best_energy = im.energy;
+  im.have_best = true;
 }
 
 const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
@@ -801,6 +850,7 @@ RoomSolution RoomSolver::Solution() const {
   RoomSolution s;
   s.objects = impl_->state.objects;
   s.placements = impl_->state.placements;
+  s.edges = impl_->state.edges;
   s.summary = impl_->summary;
   return s;
 }

@@ -10,6 +10,7 @@
 // objects, the floor fixed), then every support surface and cavity in its parent's frame. Deterministic for
 // a seed: the same problem and options give the same poses, bit for bit, on one build.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,7 @@ struct SolveSummary {
 struct RoomSolution {
   std::vector<ProblemObject> objects;       // the room's objects at the end (actions add and remove)
   std::vector<ObjectPlacement> placements;  // parallel to objects
+  std::vector<SemanticEdge> edges;          // the edges among them (removals drop edges, add_entity adds some)
   SolveSummary summary;
 };
 
@@ -71,7 +73,8 @@ Result<RoomSolution> SolveRoom(const RoomProblem& problem, const SolveOptions& o
 
 // The same solver as a session a critic can drive: Initialise() places everything, Apply() takes one
 // action through the path the rule agent uses (repaired or refused when it would break a hard
-// constraint), RunAgent() lets the rule agent finish. The solver keeps its own copy of the problem;
+// constraint), RunAgent() lets the rule agent finish (and may be called again after more actions),
+// Finish() ends on the best state without the agent. The solver keeps its own copy of the problem;
 // AddKeepOuts() extends it (the reachability feedback's walkways, solver/reach_feedback.h).
 class RoomSolver {
  public:
@@ -83,7 +86,23 @@ class RoomSolver {
   // Checks the problem and options; then places every layer and runs the first exact check.
   Status Initialise();
   ActionResult Apply(const Action& action);
+  // Whether object `id` could take `pose` as update_pose would put it there (z from its support, a wall
+  // object onto `wall` or the nearest wall, facing the room) without breaking a hard constraint, with
+  // everything else where it is. Changes nothing; a critic asks before it acts.
+  bool Fits(const std::string& id, const Pose& pose, std::optional<int> wall = std::nullopt);
+  // Where the solver's own search would put object `id` now, everything else where it is: the best free
+  // pose in its layer by the soft terms (relations, zones), polished, with the wall, surface or cavity it
+  // chose; nothing when no pose is free of hard violations. Changes nothing (the rule agent's move).
+  std::optional<ObjectPlacement> Suggest(const std::string& id);
   void RunAgent();
+  // A critic that judges the semantics itself (a multimodal model) accepts the arrangement as it stands:
+  // it becomes the state the session keeps (RunAgent ends on the best state seen, and without this a
+  // lower geometric proxy E of an earlier state would undo the critic's moves). Later states replace it
+  // as before: by fewer exact violations, then lower E.
+  void KeepCurrent();
+  // Ends the session without more agent actions: the best state seen is kept, checked again (with the
+  // clearance figure) and the outcome and its reason set, as at the end of RunAgent.
+  void Finish();
   // Adds zones no object may enter (checked like the problem's own), checks the arrangement against them
   // and lets the agent's remedies (move, shrink, remove) apply anew to what stands in them; call RunAgent()
   // next. An error (nothing changed) when a zone is malformed or the solver is not initialised.

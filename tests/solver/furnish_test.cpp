@@ -92,6 +92,18 @@ TEST_CASE("villa furnish furnishes a small house: files, a valid scene, the same
     INFO(f);
     CHECK(Read(one.path / f) == Read(two.path / f));
   }
+  // The room pictures and the critic's round logs too (report.json differs only in its times).
+  int pictures = 0, logs = 0;
+  for (const char* folder : {"rooms", "critic"})
+    for (const auto& entry : fs::recursive_directory_iterator(one.path / folder)) {
+      if (!entry.is_regular_file()) continue;
+      const fs::path relative = fs::relative(entry.path(), one.path);
+      INFO(relative.string());
+      CHECK(Read(entry.path()) == Read(two.path / relative));
+      (std::string(folder) == "rooms" ? pictures : logs)++;
+    }
+  CHECK(pictures == 6);
+  CHECK(logs >= 12);
 
   auto layout = LoadLayout(kHouse);
   REQUIRE(layout.ok());

@@ -126,10 +126,11 @@ TEST_CASE("Containment residual gradient matches differences", "[solver]") {
 
 TEST_CASE("Semantic residual gradients match differences", "[solver]") {
   CheckJacobians(FaceToResidual::Create(kSofa, kTable, 0.5236, 1.9), {{0.0, 0.0, 0.0, 1.3}, {1.0}, {1.0, -3.0, 0.0, 0.0}, {1.0}});
+  // Behind the sofa's centre line and past its end: both parts of the side residual are active.
   CheckJacobians(RelativeSideResidual::Create(kTable, kSofa, RelativeSideResidual::kFront, 1.0),
-                 {{0.3, -0.2, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
+                 {{1.6, 0.4, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
   CheckJacobians(RelativeSideResidual::Create(kTable, kSofa, RelativeSideResidual::kLeft, 1.0),
-                 {{0.3, -0.2, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
+                 {{-0.5, 1.0, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
   CheckJacobians(GapResidual::Create(kTable, kSofa, 0.5, 1.5, 1.0), {{0.3, -2.8, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
   CheckJacobians(GapResidual::Create(kTable, kSofa, 0.0, 0.5, 1.0), {{0.3, -1.6, 0.0, 0.1}, {1.0}, {0.0, 0.0, 0.0, 0.2}, {1.0}});
   CheckJacobians(AlignResidual::Create(0.0873, 1.9), {{0.0, 0.0, 0.0, 0.4}, {1.0, 1.0, 0.0, 1.5}});
@@ -151,6 +152,13 @@ TEST_CASE("Semantic residuals vanish where the relation holds", "[solver]") {
   CHECK(zero(FaceToResidual::Create(kSofa, kTable, 0.5236, 1.0), {{0.0, 0.0, 0.0, 0.0}, {1.0}, {0.1, -2.0, 0.0, 0.0}, {1.0}}));
   CHECK(zero(AlignResidual::Create(0.0873, 1.0), {{0.0, 0.0, 0.0, 0.02}, {0.0, 0.0, 0.0, 1.5708}}));
   CHECK_FALSE(zero(RelativeSideResidual::Create(kTable, kSofa, RelativeSideResidual::kBehind, 1.0), front));
+  // Sides are bands: in front of the centre line and within the width. A painting hung on the wall behind
+  // the sofa (its centre 0.4 m behind the sofa's, in front of the sofa's back face) is behind it; a table
+  // in front but past the sofa's end is not in front of it.
+  CHECK(zero(RelativeSideResidual::Create(kTable, kSofa, RelativeSideResidual::kBehind, 1.0),
+             {{0.2, 0.4, 1.2, 0.0}, {1.0}, {0.0, 0.0, 0.0, 0.0}, {1.0}}));
+  CHECK_FALSE(zero(RelativeSideResidual::Create(kTable, kSofa, RelativeSideResidual::kFront, 1.0),
+                   {{1.6, -1.0, 0.0, 0.0}, {1.0}, {0.0, 0.0, 0.0, 0.0}, {1.0}}));
 }
 
 }  // namespace

@@ -1,0 +1,631 @@
+#include "critic/offline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "critic/observation.h"
+#include "layout/geometry.h"
+#include "mesh/geometry2d.h"
+
+namespace villa::critic {
+namespace {
+
+constexpr double kHalfPi = 0.5 * std::numbers::pi;
+
+bool WallBound(const solver::ProblemObject& o) {
+  return o.relation == solver::Relation::kAgainstWall || o.relation == solver::Relation::kOnWall;
+}
+bool OnObject(const solver::ProblemObject& o) { return o.parent != "floor" && o.parent != "wall" && o.parent != "ceiling"; }
+bool Covering(const solver::ProblemObject& o, double scale) {
+  return o.parent == "floor" && o.relation == solver::Relation::kOnTop && o.asset.size.z * scale <= 0.03;
+}
+
+// The room as the candidates see it: objects, where they are, who stands on whom.
+struct Room {
+  const solver::RoomProblem& problem;
+  const solver::RoomSolution& solution;
+  const std::vector<scene::SemanticEdge>& graph;
+  std::map<std::string, int> index;
+  std::vector<int> parent;                 // index of the parent object, -1 for floor, wall, ceiling
+  std::vector<std::vector<int>> children;
+  std::vector<double> stack_top;           // top of the object with what stands on it, m
+
+  Room(const solver::RoomProblem& p, const solver::RoomSolution& s, const std::vector<scene::SemanticEdge>& g)
+      : problem(p), solution(s), graph(g) {
+    const size_t n = s.objects.size();
+    for (size_t i = 0; i < n; ++i) index[s.objects[i].id] = static_cast<int>(i);
+    parent.assign(n, -1);
+    children.assign(n, {});
+    for (size_t i = 0; i < n; ++i) {
+      auto it = index.find(s.objects[i].parent);
+      if (it != index.end()) {
+        parent[i] = it->second;
+        children[it->second].push_back(static_cast<int>(i));
+      }
+    }
+    stack_top.assign(n, 0.0);
+    for (size_t i = 0; i < n; ++i) {
+      const double top = BoxOf(s.objects[i], s.placements[i]).z1;
+      for (int a = static_cast<int>(i); a >= 0; a = parent[a]) stack_top[a] = std::max(stack_top[a], top);
+    }
+  }
+  int Find(const std::string& id) const {
+    auto it = index.find(id);
+    return it == index.end() ? -1 : it->second;
+  }
+  int Root(int i) const {
+    while (parent[i] >= 0) i = parent[i];
+    return i;
+  }
+  std::vector<int> Descendants(int i) const {
+    std::vector<int> out, stack = children[i];
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back();
+      out.push_back(k);
+      stack.insert(stack.end(), children[k].begin(), children[k].end());
+    }
+    return out;
+  }
+  // The placements with object i moved to `pose` (scale included) and what stands on it carried along.
+  std::vector<solver::ObjectPlacement> Moved(int i, const solver::Pose& pose, int wall) const {
+    return Moved(solution.placements, i, pose, wall);
+  }
+  std::vector<solver::ObjectPlacement> Moved(std::vector<solver::ObjectPlacement> out, int i, const solver::Pose& pose,
+                                             int wall) const {
+    const solver::Pose old = out[i].pose;
+    const double turn = pose.yaw - old.yaw, c = std::cos(turn), s = std::sin(turn), k = pose.scale / old.scale;
+    for (int d : Descendants(i)) {
+      solver::Pose& p = out[d].pose;
+      const double dx = p.x - old.x, dy = p.y - old.y;
+      p.x = pose.x + k * (c * dx - s * dy);
+      p.y = pose.y + k * (s * dx + c * dy);
+      p.z = pose.z + k * (p.z - old.z);
+      p.yaw = solver::WrapAngle(p.yaw + turn);
+    }
+    out[i].pose = pose;
+    if (wall >= 0) out[i].wall = wall;
+    return out;
+  }
+};
+
+struct Candidate {
+  solver::Pose pose;
+  int wall = -1;
+  int surface = -1, cavity = -1;  // a new support choice (the solver's suggestions for small things)
+  bool proven = false;            // the solver found it itself (RoomSolver::Suggest): it fits
+};
+
+// The free-standing objects closer than `clearance` to object i at `pose` (none: it is free of them), or
+// nothing at all when the floor's edge or a keep-out is in the way (no object can be moved out of that).
+std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::Pose& pose, double clearance,
+                                         const std::set<int>& ignore = {}) {
+  const solver::ProblemObject& o = room.solution.objects[i];
+  solver::ObjectPlacement pl = room.solution.placements[i];
+  pl.pose = pose;
+  ObjectBox box = BoxOf(o, pl);
+  const double top = pose.z + (room.stack_top[i] - room.solution.placements[i].pose.z) * pose.scale / room.solution.placements[i].pose.scale;
+  const bool covering = Covering(o, pose.scale);
+  std::vector<int> blockers;
+  for (size_t j = 0; j < room.solution.objects.size(); ++j) {
+    if (static_cast<int>(j) == i || room.parent[j] >= 0 || ignore.count(static_cast<int>(j))) continue;
+    const solver::ProblemObject& other = room.solution.objects[j];
+    if (covering || Covering(other, room.solution.placements[j].pose.scale)) continue;
+    const ObjectBox b = BoxOf(other, room.solution.placements[j]);
+    if (std::min(top, room.stack_top[j]) - std::max(box.z0, b.z0) <= 0.0) continue;
+    if (PlanGap(box, b) < clearance) blockers.push_back(static_cast<int>(j));
+  }
+  if (o.relation != solver::Relation::kOnWall) {
+    for (const Point& p : box.Footprint())
+      if (!PointInRing(p, room.problem.free_floor, 0.0) || DistanceToBoundary(p, room.problem.free_floor) < 0.012) return std::nullopt;
+  }
+  box.z1 = top;
+  const Ring footprint = box.Footprint();
+  for (const solver::KeepOut& k : room.problem.keep_outs) {
+    if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
+    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return std::nullopt;
+  }
+  return blockers;
+}
+
+// Whether object i at `pose` keeps `clearance` from the other free-standing objects, stays on the free
+// floor and out of the keep-outs. Only the object's own box is tested (what stands on it moves with it and
+// stays within it).
+bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, const std::set<int>& ignore = {}) {
+  auto blockers = Blockers(room, i, pose, clearance, ignore);
+  return blockers && blockers->empty();
+}
+
+// Poses along a wall for a wall-bound object: its back at its gap from the wall, facing the room, at
+// `t` m along the wall from its start; none where it would overhang the wall's ends or cover an opening.
+std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, double scale) {
+  const solver::ProblemObject& o = room.solution.objects[i];
+  const solver::WallEdge& wall = room.problem.walls[w];
+  const double length = geo::Dist(wall.a, wall.b);
+  const double half = 0.5 * o.asset.size.x * scale;
+  if (t < half + 0.01 || t > length - half - 0.01) return std::nullopt;
+  const solver::ObjectPlacement& now = room.solution.placements[i];
+  const double z = o.relation == solver::Relation::kOnWall ? now.pose.z : room.problem.floor_z;
+  for (const solver::WallOpening& op : wall.openings)
+    if (t + half > op.t0 - 0.01 && t - half < op.t1 + 0.01 && z < op.z1 && z + o.asset.size.z * scale > op.z0) return std::nullopt;
+  const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
+  const Point c = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, o.wall_gap + 0.5 * o.asset.size.y * scale));
+  Candidate out;
+  out.pose = {c.x, c.y, z, std::atan2(n.x, -n.y), scale};
+  out.wall = w;
+  return out;
+}
+
+// Half the extent of a box of half sizes (hx, hy) at `yaw` along the unit direction n.
+double HalfAlong(double hx, double hy, double yaw, Point n) {
+  return hx * std::abs(n.x * std::cos(yaw) + n.y * std::sin(yaw)) + hy * std::abs(-n.x * std::sin(yaw) + n.y * std::cos(yaw));
+}
+
+// Gaps (m between the boxes) worth trying for a relation.
+std::vector<double> GapsFor(const scene::SemanticEdge& e) {
+  using R = scene::SemanticRelation;
+  const scene::EdgeParams p = scene::EffectiveParams(e.relation, e.params);
+  if ((e.relation == R::kFrontOf || e.relation == R::kBehind || e.relation == R::kLeftOf || e.relation == R::kRightOf) &&
+      (e.params.min_gap || e.params.max_gap)) {
+    const double lo = e.params.min_gap.value_or(0.0), hi = e.params.max_gap.value_or(lo + 1.0);
+    return {lo + 0.02, 0.5 * (lo + hi), std::max(lo + 0.02, hi - 0.02)};
+  }
+  switch (e.relation) {
+    case R::kNextTo: return {0.04, 0.15, 0.3, 0.45};
+    case R::kNear: return {std::max(*p.min_gap, 0.5) + 0.05, 0.8, 1.1, p.max_gap.value_or(1.5) - 0.05};
+    case R::kFar: return {*p.min_gap + 0.1, *p.min_gap + 0.5, *p.min_gap + 1.0};
+    case R::kFaceTo: return {0.3, 0.6, 1.0, 1.6};
+    default: return {0.04, 0.3, 0.6};
+  }
+}
+
+// Candidate poses for object m so that an edge with `other` may hold: in place (turned), around the other
+// object, or along the walls.
+std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const scene::SemanticEdge& edge, double scale) {
+  const solver::ProblemObject& o = room.solution.objects[m];
+  const solver::ObjectPlacement& now = room.solution.placements[m];
+  const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
+  std::vector<Candidate> out;
+  if (WallBound(o)) {
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (o.wall >= 0 && static_cast<int>(w) != o.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+      const double foot = geo::Dot(geo::Sub(ob.c, wall.a), d), half = 0.5 * o.asset.size.x * scale;
+      const double other_half = HalfAlong(ob.hx, ob.hy, ob.yaw, d);
+      std::vector<double> ts{foot};
+      for (double g : GapsFor(edge)) {
+        ts.push_back(foot - other_half - g - half);
+        ts.push_back(foot + other_half + g + half);
+      }
+      const double length = geo::Dist(wall.a, wall.b);
+      for (double t = half + 0.02; t < length - half; t += 0.25) ts.push_back(t);
+      for (double t : ts)
+        if (auto c = OnWallAt(room, m, static_cast<int>(w), t, scale)) out.push_back(*c);
+    }
+    return out;
+  }
+  if (OnObject(o)) return out;  // small things stay on their surfaces: their parent moves instead
+  // Turned in place: facing the other object exactly, or along its axes.
+  const double face = std::atan2(ob.c.x - now.pose.x, -(ob.c.y - now.pose.y));
+  std::vector<double> yaws{now.pose.yaw, face, face + std::numbers::pi};
+  for (int k = 0; k < 4; ++k) yaws.push_back(ob.yaw + k * kHalfPi);
+  // Turned a little either way, and half way to facing: a second face_to of the object may still hold.
+  for (int k = -4; k <= 4; ++k)
+    if (k != 0) yaws.push_back(now.pose.yaw + k * std::numbers::pi / 18.0);
+  yaws.push_back(now.pose.yaw + 0.5 * solver::WrapAngle(face - now.pose.yaw));
+  for (double yaw : yaws) out.push_back({{now.pose.x, now.pose.y, now.pose.z, solver::WrapAngle(yaw), scale}, -1});
+  // Around the other object: on each of its sides, at the relation's gaps, along the side.
+  const double hx = 0.5 * o.asset.size.x * scale, hy = 0.5 * o.asset.size.y * scale;
+  const Point u = ob.U(), v = ob.V();
+  const Point normals[4] = {geo::Scale(v, -1.0), v, u, geo::Scale(u, -1.0)};  // front (-y), back, left (+x), right
+  const double along[4] = {ob.hx, ob.hx, ob.hy, ob.hy};
+  const double depth[4] = {ob.hy, ob.hy, ob.hx, ob.hx};
+  for (int side = 0; side < 4; ++side) {
+    const Point n = normals[side], l = side < 2 ? u : v;
+    for (double gap : GapsFor(edge)) {
+      for (double lateral : {0.0, -0.5, 0.5, -0.9, 0.9}) {
+        // Facing the other object from this side, turned like it, or as it stands.
+        const double toward = std::atan2(-n.x, n.y);
+        for (double yaw : {toward, ob.yaw, now.pose.yaw, ob.yaw + kHalfPi, toward + std::numbers::pi}) {
+          const double reach = depth[side] + gap + HalfAlong(hx, hy, yaw, n);
+          const Point c = geo::Add(geo::Add(ob.c, geo::Scale(n, reach)), geo::Scale(l, lateral * along[side]));
+          out.push_back({{c.x, c.y, now.pose.z, solver::WrapAngle(yaw), scale}, -1});
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// An update_pose (and an update_scale first when the scale changes) for a candidate.
+std::vector<solver::Action> ActionsFor(const Room& room, int m, const Candidate& c, const std::string& why) {
+  std::vector<solver::Action> seq;
+  const solver::ObjectPlacement& now = room.solution.placements[m];
+  const std::string& id = room.solution.objects[m].id;
+  if (std::abs(c.pose.scale - now.pose.scale) > 1e-9) {
+    solver::Action scale;
+    scale.kind = solver::ActionKind::kUpdateScale;
+    scale.id = id;
+    scale.scale = c.pose.scale;
+    scale.reason = "critic: smaller, so that " + why;
+    seq.push_back(scale);
+  }
+  solver::Action pose;
+  pose.kind = solver::ActionKind::kUpdatePose;
+  pose.id = id;
+  pose.pose = c.pose;
+  if (room.solution.objects[m].relation == solver::Relation::kOnWall) pose.pose->z = c.pose.z;
+  else pose.pose->z = std::nan("");
+  if (c.wall >= 0 && c.wall != now.wall) pose.wall = c.wall;
+  if (c.surface >= 0 && c.surface != now.surface) pose.surface = c.surface;
+  if (c.cavity >= 0 && c.cavity != now.cavity) pose.cavity = c.cavity;
+  pose.reason = "critic: " + why;
+  seq.push_back(pose);
+  return seq;
+}
+
+struct Ranked {
+  Unmet unmet;
+  double moved = 0.0;
+  std::string id;
+  Candidate candidate;
+  std::vector<Step> steps;
+};
+
+std::vector<Step> Steps(std::vector<solver::Action> actions) {
+  std::vector<Step> out;
+  for (solver::Action& a : actions) out.push_back({std::move(a), false});
+  return out;
+}
+Step Suggested(const std::string& id, const std::string& why) {
+  Step step;
+  step.action.kind = solver::ActionKind::kUpdatePose;
+  step.action.id = id;
+  step.action.reason = "critic: " + why + " (re-placed by the solver around the group)";
+  step.suggest = true;
+  return step;
+}
+
+// Ranks the candidates of object m (those that are free and leave fewer unmet relations than now) and
+// keeps the best `keep` as alternatives.
+void RankInto(const Room& room, int m, const std::vector<Candidate>& candidates, const Unmet& now, double clearance,
+              const std::string& why, std::vector<Ranked>& out) {
+  const solver::Pose& at = room.solution.placements[m].pose;
+  for (const Candidate& c : candidates) {
+    if (std::hypot(c.pose.x - at.x, c.pose.y - at.y) < 0.01 && std::abs(solver::WrapAngle(c.pose.yaw - at.yaw)) < 0.01 &&
+        std::abs(c.pose.scale - at.scale) < 1e-9)
+      continue;
+    if (!c.proven && !Free(room, m, c.pose, clearance)) continue;
+    const RoomRelations r = MeasureRelations(room.solution.objects, room.Moved(m, c.pose, c.wall), room.graph);
+    const Unmet u = UnmetOf(r);
+    if (!(u < now)) continue;
+    out.push_back({u, std::hypot(c.pose.x - at.x, c.pose.y - at.y), room.solution.objects[m].id, c, Steps(ActionsFor(room, m, c, why))});
+  }
+}
+
+// The best `keep` candidates the solver says fit, best first.
+std::vector<std::vector<Step>> Best(solver::RoomSolver& session, std::vector<Ranked> ranked, int keep) {
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  int asked = 0;
+  for (const Ranked& r : ranked) {
+    if (static_cast<int>(out.size()) >= keep || asked >= 8 * keep) break;
+    ++asked;
+    if (!r.candidate.proven &&
+        !session.Fits(r.id, r.candidate.pose, r.candidate.wall >= 0 ? std::optional<int>(r.candidate.wall) : std::nullopt))
+      continue;
+    out.push_back(r.steps);
+  }
+  return out;
+}
+
+// Poses with room around them for a hub (the objects related to it are about to be re-placed, so only the
+// others count): along its walls for a wall-bound hub, on a grid over the free floor otherwise; the
+// roomiest first, at most `keep`.
+std::vector<Candidate> RoomyPoses(const Room& room, int hub, const std::set<int>& group, double clearance, int keep) {
+  const solver::ProblemObject& o = room.solution.objects[hub];
+  const solver::ObjectPlacement& now = room.solution.placements[hub];
+  const double scale = now.pose.scale;
+  std::vector<Candidate> poses;
+  if (WallBound(o)) {
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (o.wall >= 0 && static_cast<int>(w) != o.wall) continue;
+      const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+      for (double t = 0.0; t < length; t += 0.2)
+        if (auto c = OnWallAt(room, hub, static_cast<int>(w), t, scale)) poses.push_back(*c);
+    }
+  } else if (!OnObject(o)) {
+    Box2 box = BoundingBox(room.problem.free_floor);
+    for (double x = box.min_x + 0.2; x < box.max_x; x += 0.3)
+      for (double y = box.min_y + 0.2; y < box.max_y; y += 0.3)
+        for (double turn : {0.0, 0.5 * std::numbers::pi})
+          poses.push_back({{x, y, now.pose.z, solver::WrapAngle(now.pose.yaw + turn), scale}, -1});
+  }
+  struct Scored {
+    double room = 0.0;
+    Candidate c;
+  };
+  std::vector<Scored> scored;
+  for (const Candidate& c : poses) {
+    if (std::hypot(c.pose.x - now.pose.x, c.pose.y - now.pose.y) < 0.2) continue;
+    if (!Free(room, hub, c.pose, clearance, group)) continue;
+    solver::ObjectPlacement pl = now;
+    pl.pose = c.pose;
+    const ObjectBox box = BoxOf(o, pl);
+    double gap = 1.0;
+    for (size_t j = 0; j < room.solution.objects.size(); ++j) {
+      if (static_cast<int>(j) == hub || room.parent[j] >= 0 || group.count(static_cast<int>(j))) continue;
+      if (Covering(room.solution.objects[j], room.solution.placements[j].pose.scale)) continue;
+      gap = std::min(gap, PlanGap(box, BoxOf(room.solution.objects[j], room.solution.placements[j])));
+    }
+    if (!WallBound(o))
+      for (const Point& p : box.Footprint()) gap = std::min(gap, DistanceToBoundary(p, room.problem.free_floor));
+    scored.push_back({gap, c});
+  }
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) { return a.room > b.room + 1e-9; });
+  std::vector<Candidate> out;
+  for (const Scored& s : scored) {
+    if (static_cast<int>(out.size()) >= keep) break;
+    out.push_back(s.c);
+  }
+  return out;
+}
+
+std::string Fixed2(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", v);
+  return text;
+}
+
+}  // namespace
+
+Unmet UnmetOf(const RoomRelations& r) {
+  Unmet u;
+  for (const EdgeCheck& c : r.edges) {
+    if (c.present && c.satisfied) continue;
+    ++u.count;
+    u.amount += c.present ? c.violation : 1.0;
+  }
+  for (const ZoneCheck& z : r.zones) {
+    if (z.clear()) continue;
+    ++u.count;
+    u.amount += 0.5 * static_cast<double>(z.intruders.size());
+  }
+  return u;
+}
+
+double OfflineScore(const RoomRelations& relations) {
+  const int total = static_cast<int>(relations.edges.size() + relations.zones.size());
+  if (total == 0) return 10.0;
+  return 10.0 * (relations.Satisfied() + relations.ZonesClear()) / total;
+}
+
+std::vector<std::string> OfflineProblems(const std::string& room, const RoomRelations& relations) {
+  std::vector<std::string> out;
+  for (const EdgeCheck& c : relations.edges) {
+    if (c.present && c.satisfied) continue;
+    out.push_back(ShortId(room, c.edge.source) + " " + std::string(scene::SemanticRelationName(c.edge.relation)) + " " +
+                  ShortId(room, c.edge.target) + ": " + c.detail);
+  }
+  for (const ZoneCheck& z : relations.zones) {
+    if (z.clear()) continue;
+    std::string line = "zone " + z.side + " of " + ShortId(room, z.owner) + " (" + Fixed2(z.depth) + " m) entered by";
+    for (const std::string& id : z.intruders) line += ' ' + ShortId(room, id);
+    out.push_back(line);
+  }
+  return out;
+}
+
+namespace {
+
+using Suggestions = std::function<const std::vector<Candidate>&(int object)>;
+
+// Poses near where object k stands (a step of 0.25 to 1.2 m in eight directions, or along its wall), for
+// making room: `away` is the box it must keep clear of.
+std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away, double clearance) {
+  const solver::ProblemObject& o = room.solution.objects[k];
+  const solver::ObjectPlacement& now = room.solution.placements[k];
+  std::vector<Candidate> out;
+  if (WallBound(o)) {
+    const int w = now.wall;
+    if (w < 0) return out;
+    const solver::WallEdge& wall = room.problem.walls[w];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+    const double t = geo::Dot(geo::Sub({now.pose.x, now.pose.y}, wall.a), d);
+    for (double step : {0.25, 0.5, 0.8, 1.2})
+      for (double sign : {-1.0, 1.0})
+        if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
+  } else if (!OnObject(o)) {
+    for (double step : {0.25, 0.5, 0.8, 1.2})
+      for (int dir = 0; dir < 8; ++dir) {
+        const double a = dir * std::numbers::pi / 4.0;
+        out.push_back({{now.pose.x + step * std::cos(a), now.pose.y + step * std::sin(a), now.pose.z, now.pose.yaw, now.pose.scale}, -1});
+      }
+  }
+  std::vector<Candidate> kept;
+  for (const Candidate& c : out) {
+    solver::ObjectPlacement pl = now;
+    pl.pose = c.pose;
+    if (PlanGap(BoxOf(o, pl), away) >= clearance) kept.push_back(c);
+  }
+  return kept;
+}
+
+// Moves that make room: a pose of object m where the edge would hold but one free-standing object k stands
+// in the way; k steps aside first (to a free pose clear of m's new box), then m moves. Kept when the two
+// together leave fewer unmet relations.
+void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>& candidates, const Unmet& now, double clearance,
+                const std::string& why, std::vector<Ranked>& out) {
+  int tried = 0;
+  for (const Candidate& c : candidates) {
+    if (tried >= 40) break;
+    auto blockers = Blockers(room, m, c.pose, clearance);
+    if (!blockers || blockers->size() != 1) continue;
+    const int k = (*blockers)[0];
+    if (k == other || !room.children[k].empty() || Covering(room.solution.objects[k], room.solution.placements[k].pose.scale)) continue;
+    ++tried;
+    solver::ObjectPlacement moved = room.solution.placements[m];
+    moved.pose = c.pose;
+    const ObjectBox m_box = BoxOf(room.solution.objects[m], moved);
+    for (const Candidate& aside : StepsAside(room, k, m_box, clearance)) {
+      if (!Free(room, k, aside.pose, clearance, {m})) continue;
+      const auto placements = room.Moved(room.Moved(k, aside.pose, aside.wall), m, c.pose, c.wall);
+      const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
+      if (!(u < now)) continue;
+      std::vector<Step> steps = Steps(ActionsFor(room, k, aside, why + " (making room)"));
+      const std::vector<Step> then = Steps(ActionsFor(room, m, c, why));
+      steps.insert(steps.end(), then.begin(), then.end());
+      out.push_back({u, std::hypot(c.pose.x - room.solution.placements[m].pose.x, c.pose.y - room.solution.placements[m].pose.y) +
+                            std::hypot(aside.pose.x - room.solution.placements[k].pose.x, aside.pose.y - room.solution.placements[k].pose.y),
+                     room.solution.objects[k].id, aside, std::move(steps)});
+      break;  // the nearest free step for this candidate
+    }
+  }
+}
+
+// Moves of one object (either end of the edge, or what carries it) that make the edge hold: the solver's
+// own suggestion, then the candidate poses of CandidatesFor, at the object's scale and, when none is
+// free, at its smallest.
+Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeCheck& c, int s, int t, const Unmet& now,
+                    const OfflineProposalOptions& options, const std::string& line, const Suggestions& suggestion) {
+  std::vector<Ranked> ranked;
+  for (int m : {s, t}) {
+    const int mover = room.Root(m);
+    const int other = m == s ? t : s;
+    if (mover == room.Root(other)) continue;
+    RankInto(room, m, suggestion(m), now, options.clearance, line, ranked);
+    if (mover != m) RankInto(room, mover, suggestion(mover), now, options.clearance, line, ranked);
+    const solver::ProblemObject& o = room.solution.objects[mover];
+    const double scale = room.solution.placements[mover].pose.scale;
+    const std::vector<Candidate> candidates = CandidatesFor(room, mover, room.Root(other), c.edge, scale);
+    RankInto(room, mover, candidates, now, options.clearance, line, ranked);
+    if (ranked.empty() && o.scale_min < scale - 1e-9)
+      RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
+    if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
+  }
+  return Attempt{line, Best(session, std::move(ranked), options.alternatives)};
+}
+
+// The group move for an edge single moves could not mend: its hub (the end with more relations to other
+// objects) goes to a roomier place, then everything related to it is re-placed by the solver around it;
+// or, first, only the related objects are re-placed.
+std::optional<Attempt> GroupMove(solver::RoomSolver& session, const Room& room, int s, int t, const OfflineProposalOptions& options,
+                                 const std::string& line) {
+  if (room.Root(s) == room.Root(t)) return std::nullopt;
+  std::map<int, int> degree;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a >= 0 && b >= 0 && room.Root(a) != room.Root(b)) ++degree[room.Root(a)], ++degree[room.Root(b)];
+  }
+  const int hub = degree[room.Root(t)] >= degree[room.Root(s)] ? room.Root(t) : room.Root(s);
+  std::vector<int> members;
+  std::set<int> group;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a < 0 || b < 0) continue;
+    const int ra = room.Root(a), rb = room.Root(b);
+    for (auto [mine, other] : {std::pair{ra, rb}, std::pair{rb, ra}})
+      if (mine == hub && other != hub && group.insert(other).second) members.push_back(other);
+  }
+  if (members.empty()) return std::nullopt;
+  std::vector<Step> reslot;
+  for (int m : members) reslot.push_back(Suggested(room.solution.objects[m].id, line));
+  Attempt a{line + " [group]", {reslot}};
+  const std::string& hub_id = room.solution.objects[hub].id;
+  for (const Candidate& c : RoomyPoses(room, hub, group, options.clearance, options.alternatives)) {
+    if (!session.Fits(hub_id, c.pose, c.wall >= 0 ? std::optional<int>(c.wall) : std::nullopt)) continue;
+    std::vector<Step> seq = Steps(ActionsFor(room, hub, c, line + " (its group moves)"));
+    seq.insert(seq.end(), reslot.begin(), reslot.end());
+    a.alternatives.push_back(std::move(seq));
+  }
+  return a;
+}
+
+}  // namespace
+
+std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::RoomProblem& problem, const solver::RoomSolution& solution,
+                                    const std::vector<scene::SemanticEdge>& graph, const RoomRelations& relations,
+                                    const OfflineProposalOptions& options, const std::set<std::string>& given_up) {
+  const Room room(problem, solution, graph);
+  const Unmet now = UnmetOf(relations);
+  // The solver's own best pose for an object (asked once a round per object).
+  std::map<int, std::vector<Candidate>> suggested;
+  const Suggestions suggestion = [&](int m) -> const std::vector<Candidate>& {
+    auto [it, added] = suggested.emplace(m, std::vector<Candidate>{});
+    if (added)
+      if (auto slot = session.Suggest(solution.objects[m].id)) it->second.push_back({slot->pose, slot->wall, slot->surface, slot->cavity, true});
+    return it->second;
+  };
+  const std::vector<std::string> problems = OfflineProblems(problem.room, relations);
+  std::vector<Attempt> out;
+  size_t p = 0;
+  for (const EdgeCheck& c : relations.edges) {
+    if (c.present && c.satisfied) continue;
+    const std::string& line = problems[p++];
+    if (!c.present) continue;
+    const int s = room.Find(c.edge.source), t = room.Find(c.edge.target);
+    if (!given_up.count(line)) {
+      Attempt single = SingleMoves(session, room, c, s, t, now, options, line, suggestion);
+      if (!single.alternatives.empty()) {
+        out.push_back(std::move(single));
+        continue;
+      }
+    }
+    if (given_up.count(line + " [group]")) continue;
+    if (auto group = GroupMove(session, room, s, t, options, line)) out.push_back(std::move(*group));
+  }
+  for (const ZoneCheck& z : relations.zones) {
+    if (z.clear()) continue;
+    const std::string& line = problems[p++];
+    if (given_up.count(line)) continue;
+    const int owner = room.Find(z.owner);
+    std::vector<Ranked> ranked;
+    for (const std::string& id : z.intruders) {
+      const int mover = room.Root(room.Find(id));
+      if (mover == room.Root(owner)) continue;
+      RankInto(room, mover, suggestion(mover), now, options.clearance, line, ranked);
+      RankInto(room, room.Root(owner), suggestion(room.Root(owner)), now, options.clearance, line, ranked);
+      // Away from the zone: around the owner at the zone's depth and beyond, or along the walls.
+      scene::SemanticEdge away;
+      away.source = solution.objects[mover].id;
+      away.target = z.owner;
+      away.relation = scene::SemanticRelation::kNear;
+      RankInto(room, mover, CandidatesFor(room, mover, owner, away, solution.placements[mover].pose.scale), now, options.clearance, line,
+               ranked);
+      // The owner may move instead.
+      away.source = z.owner;
+      away.target = solution.objects[mover].id;
+      RankInto(room, room.Root(owner), CandidatesFor(room, room.Root(owner), mover, away, solution.placements[room.Root(owner)].pose.scale),
+               now, options.clearance, line, ranked);
+    }
+    Attempt a{line, Best(session, std::move(ranked), options.alternatives)};
+    // A decorative intruder with nowhere to go leaves the room (the zone is for using the object).
+    if (a.alternatives.empty()) {
+      for (const std::string& id : z.intruders) {
+        const int k = room.Find(id);
+        if (k < 0 || solution.objects[k].priority != solver::Priority::kDecorative) continue;
+        bool has_edges = false;
+        for (const scene::SemanticEdge& e : graph) has_edges = has_edges || e.source == id || e.target == id;
+        if (has_edges || !room.children[k].empty()) continue;
+        solver::Action remove;
+        remove.kind = solver::ActionKind::kRemoveEntity;
+        remove.id = id;
+        remove.reason = "critic: " + line + "; it has no free place elsewhere";
+        a.alternatives.push_back({Step{remove, false}});
+        break;
+      }
+    }
+    if (!a.alternatives.empty()) out.push_back(std::move(a));
+  }
+  return out;
+}
+
+}  // namespace villa::critic
