@@ -80,6 +80,7 @@ Registration registration{65, [](CLI::App& app) {
       "  scene.json     every room's graph and the objects' poses\n"
       "  furnished.glb  the building and every object (glTF 2.0)\n"
       "  CREDITS        the Creative Commons Attribution models placed\n"
+      "  rooms/*.png    a picture of each room: a top view and a cut-away view\n"
       "  preview.png    the furnished villa from outside and a cut-away of each level\n"
       "  report.json    brief, checks, FSR/RR/VCR, CR/FR/OBR/CSR/NO (RCH/ACC when reachability is measured),\n"
       "                 every room's furnishing, timings\n"

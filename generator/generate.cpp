@@ -191,6 +191,12 @@ Result<GenerateSummary> GenerateVilla(const std::string& text, const GenerateOpt
     write("furnished.glb", solver::FurnishedGlb(*villa));
     summary.export_s = Since(start);
     write("CREDITS", solver::FurnishCredits(*villa));
+    if (furnishing.pictures) {
+      fs::create_directories(dir / "rooms", ec);
+      if (ec) fail((dir / "rooms").string() + ": " + ec.message());
+      for (const scene::RoomContext& context : villa->contexts)
+        write(solver::RoomPictureName(context.name), solver::RoomPicturePng(*villa, context));
+    }
     start = std::chrono::steady_clock::now();
     write_picture("preview.png", solver::RenderFurnishedPreview(*villa));
     summary.preview_s = Since(start);

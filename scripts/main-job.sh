@@ -53,7 +53,7 @@ fi
 
 echo
 echo "outputs:"
-[[ -d "$out/villa" ]] && echo "  $out/villa/          furnished villa: layout.json, plan.png, scene.json, furnished.glb, CREDITS, preview.png, report.json"
+[[ -d "$out/villa" ]] && echo "  $out/villa/          furnished villa: layout.json, plan.png, scene.json, furnished.glb, CREDITS, rooms/*.png, preview.png, report.json"
 [[ -d "$out/furnished" ]] && echo "  $out/furnished/      an example layout furnished: scene.json, furnished.glb, plan.png, report.json, CREDITS"
 [[ -d "$out/dataset" ]] && echo "  $out/dataset/        synthesized dataset: layouts.jsonl, manifest.json, stats.json, previews"
 [[ -d "$out/finetune" ]] && echo "  $out/finetune/       fine-tune export: train/val/test JSONL, dataset_info.json, trainer configs"

@@ -718,7 +718,6 @@ std::string FurnishCredits(const FurnishedVilla& villa) {
   return out;
 }
 
-namespace {
 // rooms/<room>.png of one room (solver/room_view.h RoomPicture): its objects as the scene places them.
 Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::RoomContext& context) {
   RoomViewInput input;
@@ -738,7 +737,6 @@ Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::Roo
   if (!picture.ok()) return Error{picture.error()};
   return EncodePng(*picture);
 }
-}  // namespace
 
 PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
   PlanOverlay overlay;

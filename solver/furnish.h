@@ -227,6 +227,8 @@ Result<std::string> FurnishedGlb(const FurnishedVilla& villa);
 std::string FurnishCredits(const FurnishedVilla& villa);  // "" when no placed asset needs credit
 // "rooms/kitchen_0_0.png" for "kitchen_0/0".
 std::string RoomPictureName(const std::string& room);
+// That picture of one room (solver/room_view.h RoomPicture: a top view and a cut-away view), PNG bytes.
+Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::RoomContext& context);
 
 // What plan.png draws over the floor plan: every placed object's oriented box (its size x scale, turned
 // by its yaw) in a muted tone of its room's colour, on its level, lowest objects first so what stands

@@ -16,6 +16,7 @@
 #include "layout/layout_io.h"
 #include "render/plan_render.h"
 #include "scene/scene.h"
+#include "solver/furnish.h"
 #include "test_files.h"
 #include "villa_cli.h"
 
@@ -93,7 +94,13 @@ TEST_CASE("villa generate plans, builds and furnishes: files, wishes in their ro
   REQUIRE(report["furnish"]["rooms"].size() == layout->rooms.size());
   CHECK(report["furnish"]["layout"] == "layout.json");
   CHECK(report["problems"].empty());
-  CHECK(report["files"] == nlohmann::json({"layout.json", "plan.png", "scene.json", "furnished.glb", "CREDITS", "preview.png"}));
+  nlohmann::json files = {"layout.json", "plan.png", "scene.json", "furnished.glb", "CREDITS"};
+  for (const Room& room : layout->rooms) {
+    files.push_back(solver::RoomPictureName(room.name()));  // a picture per room, in layout order
+    CHECK(fs::file_size(one.path / solver::RoomPictureName(room.name())) > 1000);
+  }
+  files.push_back("preview.png");
+  CHECK(report["files"] == files);
 
   // plan.png is the floor plan with the furniture on it, not the bare plan.
   auto bare = RenderPlanPng(*layout);
@@ -113,6 +120,10 @@ TEST_CASE("villa generate plans, builds and furnishes: files, wishes in their ro
   for (const char* f : {"layout.json", "plan.png", "scene.json", "furnished.glb", "CREDITS", "preview.png"}) {
     INFO(f);
     CHECK(Read(one.path / f) == Read(two.path / f));
+  }
+  for (const Room& room : layout->rooms) {
+    INFO(room.name());
+    CHECK(Read(one.path / solver::RoomPictureName(room.name())) == Read(two.path / solver::RoomPictureName(room.name())));
   }
 
   // The .glb scored by `villa eval --scenes --glb` agrees with the report, room by room.
