@@ -179,7 +179,11 @@ void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, cons
                                   : t["blockers"].empty()     ? "door leaves"
                                                               : "furniture";
         ++(std::string(kind) == "rooms" ? rooms_by_cause : zones_by_cause)[cause];
-        line += " " + t[std::string(kind) == "rooms" ? "room" : "object"].get<std::string>() + " (" + cause + ")";
+        line += ' ';
+        line += t[std::string(kind) == "rooms" ? "room" : "object"].get<std::string>();
+        line += " (";
+        line += cause;
+        line += ')';
       }
     }
     if (verbose && !line.empty()) std::printf("  %s:%s\n", v.name.c_str(), line.c_str());
