@@ -18,6 +18,7 @@
 #include "layout/layout_io.h"
 #include "util/progress.h"
 #ifdef VILLA_HAVE_FURNISH
+#include "cli/furnish_flags.h"
 #include "generator/scene_eval.h"
 #endif
 
@@ -37,9 +38,10 @@ struct EvalCommand {
   bool scenes = false;
   int scenes_per_layout = 3;
   std::vector<std::string> glbs, scene_files, layout_files;
-  std::string library;
-  bool procedural_only = false;
   PlanOptions options;
+#ifdef VILLA_HAVE_FURNISH
+  solver::FurnishOptions furnish;  // --library, --procedural, --no-reach, --radius (cli/furnish_flags.h)
+#endif
 };
 
 void Print(const std::string& text) { std::cout << text; }
@@ -59,7 +61,7 @@ void RunGlb(const EvalCommand& command) {
     solver::GlbMetricsOptions o;
     if (!command.scene_files.empty()) o.scene = command.scene_files[i];
     if (!command.layout_files.empty()) o.layout = command.layout_files[i];
-    o.library = command.library;
+    o.library = command.furnish.library;
     for (const std::string& path : {o.scene.string(), o.layout.string(), command.glbs[i]})
       if (!path.empty() && !std::filesystem::exists(path)) throw UsageError(path + ": no such file");
     auto measured = solver::MeasureFurnishedGlb(command.glbs[i], o);
@@ -113,9 +115,8 @@ void RunScenes(EvalCommand& command) {
   SceneEvalOptions options;
   options.plan = command.options;
   options.scenes_per_layout = command.scenes_per_layout;
+  options.furnish = command.furnish;
   options.furnish.jobs = command.jobs;
-  options.furnish.library = command.library;
-  options.furnish.procedural_only = command.procedural_only;
   if (std::string problem = options.Check(); !problem.empty()) throw UsageError("eval: " + problem);
   std::unique_ptr<ProgressBar> bar;
   options.on_start = [&](size_t scenes) { bar = std::make_unique<ProgressBar>("scenes", scenes); };
@@ -208,8 +209,9 @@ Registration registration{55, [](CLI::App& app) {
   sub->add_option("--glb", command->glbs, "with --scenes: score this furnished .glb (repeatable)");
   sub->add_option("--scene", command->scene_files, "with --glb: its scene.json (repeatable, one per --glb)");
   sub->add_option("--layout", command->layout_files, "with --glb: its layout (repeatable, one per --glb)");
-  sub->add_option("--library", command->library, "with --scenes: the asset library folder (default: the installed one)");
-  sub->add_flag("--procedural", command->procedural_only, "with --scenes: procedural assets only");
+#ifdef VILLA_HAVE_FURNISH
+  AddFurnishFlags(sub, command->furnish, {.seed = false, .jobs = false, .reach = true, .scope = "with --scenes: "});
+#endif
   sub->callback([command] { Run(*command); });
 }};
 
