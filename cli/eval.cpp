@@ -38,6 +38,7 @@ struct EvalCommand {
   bool scenes = false;
   int scenes_per_layout = 3;
   std::vector<std::string> glbs, scene_files, layout_files;
+  std::string keep;
   PlanOptions options;
 #ifdef VILLA_HAVE_FURNISH
   solver::FurnishOptions furnish;  // --library, --procedural, --no-reach, --radius (cli/furnish_flags.h)
@@ -103,7 +104,10 @@ void RunGlb(const EvalCommand& command) {
 }
 
 void RunScenes(EvalCommand& command) {
-  if (!command.glbs.empty()) return RunGlb(command);
+  if (!command.glbs.empty()) {
+    if (!command.keep.empty()) throw UsageError("eval: --keep keeps the scenes --scenes furnishes; --glb furnishes none");
+    return RunGlb(command);
+  }
   if (!command.scene_files.empty() || !command.layout_files.empty())
     throw UsageError("eval: --scene and --layout go with --glb");
   if (command.inputs.empty()) throw UsageError("eval: --scenes needs request files (JSONL) or layouts, or --glb FILE");
@@ -118,6 +122,14 @@ void RunScenes(EvalCommand& command) {
   options.furnish = command.furnish;
   options.furnish.jobs = command.jobs;
   if (std::string problem = options.Check(); !problem.empty()) throw UsageError("eval: " + problem);
+  if (!command.keep.empty()) {
+    // Kept scenes never replace anything: a new or empty folder.
+    std::error_code ec;
+    if (std::filesystem::exists(command.keep, ec) &&
+        (!std::filesystem::is_directory(command.keep, ec) || !std::filesystem::is_empty(command.keep, ec)))
+      throw UsageError("eval: --keep " + command.keep + ": not a new or empty folder (nothing in it is replaced)");
+    options.keep = command.keep;
+  }
   std::unique_ptr<ProgressBar> bar;
   options.on_start = [&](size_t scenes) { bar = std::make_unique<ProgressBar>("scenes", scenes); };
   options.on_scene_done = [&] { bar->Advance(); };
@@ -152,6 +164,7 @@ void Run(EvalCommand& command) {
 #endif
   }
   if (!command.glbs.empty()) throw UsageError("eval: --glb goes with --scenes");
+  if (!command.keep.empty()) throw UsageError("eval: --keep goes with --scenes");
   if (command.markdown) throw UsageError("eval: --markdown goes with --scenes");
   if (command.inputs.size() != 1) throw UsageError("eval: give one JSONL file of requests");
   EvalOptions options;
@@ -209,6 +222,9 @@ Registration registration{55, [](CLI::App& app) {
   sub->add_option("--glb", command->glbs, "with --scenes: score this furnished .glb (repeatable)");
   sub->add_option("--scene", command->scene_files, "with --glb: its scene.json (repeatable, one per --glb)");
   sub->add_option("--layout", command->layout_files, "with --glb: its layout (repeatable, one per --glb)");
+  sub->add_option("--keep", command->keep,
+                  "with --scenes: keep each scene's layout.json, scene.json, furnished.glb, report.json and CREDITS in "
+                  "DIR/<NNN-request>/<seed>/ (a new or empty folder)");
 #ifdef VILLA_HAVE_FURNISH
   AddFurnishFlags(sub, command->furnish, {.seed = false, .jobs = false, .reach = true, .scope = "with --scenes: "});
 #endif
