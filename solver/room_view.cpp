@@ -176,11 +176,17 @@ Result<Image> RoomPicture(const RoomViewInput& room, int panel_px) {
   const Camera cameras[2] = {FramingCamera(box, 0.0, 90.0, panel_px, panel_px),
                              FramingCamera(box, kPictureAzimuth, options.elevation_deg, panel_px, panel_px)};
   const double azimuths[2] = {-1.0, kPictureAzimuth};
+  // The top view is lit flat: no shadows, so the walls' shadows do not lie on the floor as dark patches;
+  // every level surface then gets the same light, the floor and the tops in the tones the corner view
+  // gives them where the sun reaches. The corner view keeps its shadows: they give the room its depth.
+  RenderOptions flat = render;
+  flat.shadows = false;
+  const RenderOptions* lighting[2] = {&flat, &render};
   constexpr int kGap = 8;
   Image out{2 * panel_px + kGap, panel_px, {}};
   out.rgb.assign(size_t{3} * out.width * out.height, 255);
   for (int k = 0; k < 2; ++k) {
-    auto image = RenderView(SceneFor(parts, posed, building_scene, room.level, azimuths[k]), cameras[k], render);
+    auto image = RenderView(SceneFor(parts, posed, building_scene, room.level, azimuths[k]), cameras[k], *lighting[k]);
     if (!image.ok()) return Error{"room picture of " + room.room + ": " + image.error()};
     for (int y = 0; y < panel_px; ++y)
       std::copy_n(image->rgb.begin() + size_t{3} * y * panel_px, size_t{3} * panel_px,
