@@ -136,7 +136,21 @@ void Bare(const std::vector<Villa>& villas, const solver::ReachOptions& options,
       structural += r.structural;
       leaves += !r.structural && r.blockers.empty();
       stair_caused += r.structural && open_without_stairs.count(r.name);
-      line += " " + r.name + (r.structural ? (open_without_stairs.count(r.name) ? " (stairs)" : " (walls)") : " (door leaves)");
+      std::string leaves_named;
+      if (verbose && !r.structural && r.blockers.empty()) {
+        // Which leaves, taken away one at a time, open the room (bare buildings have no other movable cells).
+        for (const solver::ReachObstacle& leaf : input->obstacles) {
+          if (leaf.kind != solver::ObstacleKind::kDoorLeaf) continue;
+          solver::ReachInput without = *input;
+          std::erase_if(without.obstacles, [&](const solver::ReachObstacle& o) { return o.name == leaf.name; });
+          auto w = solver::CheckReach(without, quick);
+          if (!w.ok()) continue;
+          for (const auto& t : w->targets)
+            if (t.name == r.name && t.reachable) leaves_named += (leaves_named.empty() ? ": " : ", ") + leaf.name;
+        }
+      }
+      line += " " + r.name + (r.structural ? (open_without_stairs.count(r.name) ? " (stairs)" : " (walls)")
+                                           : " (door leaves" + leaves_named + ")");
     }
     if (verbose) std::printf("%s\n", line.c_str());
   }
