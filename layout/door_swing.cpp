@@ -357,6 +357,8 @@ std::vector<DoorSwing> DoorSwings(const Layout& layout, int level, const SwingCl
       const Point hinge = k.hinge_at_a ? s.a : s.b, free_end = k.hinge_at_a ? s.b : s.a;
       Segment leaf{{hinge.x + in.x * depth, hinge.y + in.y * depth}, {hinge.x + in.x * (depth + width), hinge.y + in.y * (depth + width)}};
       if (k.flat) {
+        // On its way to the wall the leaf passes where a 90 degree leaf stands: that must fit the room.
+        if (!f.ClearOfWalls(leaf)) continue;
         // Folded onto the wall beside the hinge: the wall must run straight on for the leaf's width and the
         // thickness of a wall meeting it there, with no other opening in it.
         const Point away{(hinge.x - free_end.x) / width, (hinge.y - free_end.y) / width};
