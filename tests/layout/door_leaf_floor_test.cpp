@@ -26,9 +26,9 @@ TEST_CASE("a door between two narrow halls opens 180 degrees, flat against the w
   const DoorSwing w = SwingOfDoor(l, l.doors[0], 0);
   CHECK(w.flat);
   CHECK(w.open_angle() == Approx(M_PI));
-  // The smaller-room rule's tie goes to the room left of the segment (north, room_0/1); the leaf lies on
+  // The smaller-room rule's tie goes to the room left of the segment (north, office_0/1); the leaf lies on
   // the door's line, one width beyond the hinge, away from the opening.
-  CHECK(w.into == l.FindRoom("room_0/1"));
+  CHECK(w.into == l.FindRoom("office_0/1"));
   CHECK(w.leaf_side.y == Approx(1.0));
   CHECK(w.leaf_end.y == Approx(1.5));
   CHECK(Distance(w.hinge, w.leaf_end) == Approx(1.0));
@@ -49,8 +49,8 @@ TEST_CASE("a door off a narrow hall opens into the room beyond, though the hall 
   l.rooms[1].polygon = {{0, 1.5}, {6, 1.5}, {6, 4.5}, {0, 4.5}};
   const DoorSwing w = SwingOfDoor(l, l.doors[0], 0);
   CHECK_FALSE(w.flat);
-  CHECK(w.into == l.FindRoom("room_0/1"));
-  CHECK(w.other == l.FindRoom("room_0/0"));
+  CHECK(w.into == l.FindRoom("office_0/1"));
+  CHECK(w.other == l.FindRoom("office_0/0"));
   CHECK(w.leaf_end.y == Approx(2.5));
   // A wide hall keeps the size rule's choice: with the south room 3 m deep too, the leaf opens into the
   // smaller of the two, at 90 degrees.
@@ -58,7 +58,7 @@ TEST_CASE("a door off a narrow hall opens into the room beyond, though the hall 
   l.rooms[1].polygon = {{0, 1.5}, {6, 1.5}, {6, 4.6}, {0, 4.6}};
   const DoorSwing wide = SwingOfDoor(l, l.doors[0], 0);
   CHECK_FALSE(wide.flat);
-  CHECK(wide.into == l.FindRoom("room_0/0"));
+  CHECK(wide.into == l.FindRoom("office_0/0"));
   CHECK(wide.leaf_end.y == Approx(0.5));
 }
 

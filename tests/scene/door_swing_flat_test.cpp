@@ -27,7 +27,7 @@ TEST_CASE("a leaf opened flat against the wall keeps its half disc clear of furn
   // The leaf in the building: 4 cm off the wall face on the rule's side, one door width beside the opening.
   const MeshPart* leaf = nullptr;
   for (const MeshPart& p : building->parts)
-    if (p.kind == PartKind::kDoorLeaf && p.element == "room0_room0-1") leaf = &p;
+    if (p.kind == PartKind::kDoorLeaf && p.element == "office0_office0-1") leaf = &p;
   REQUIRE(leaf);
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
   for (const Vec3& v : leaf->mesh.vertices)
@@ -45,7 +45,7 @@ TEST_CASE("a leaf opened flat against the wall keeps its half disc clear of furn
   const auto swings = DoorSwings(*layout, *building, options, 0);
   const DoorSwing* door = nullptr;
   for (const DoorSwing& s : swings)
-    if (s.element == "room0_room0-1") door = &s;
+    if (s.element == "office0_office0-1") door = &s;
   REQUIRE(door);
   CHECK(door->side == (rule.leaf_side.y > 0 ? 1 : -1));
   CHECK(door->hinge == (rule.hinge.x == Approx(2.5) ? 0 : 1));
