@@ -135,28 +135,30 @@ class RoomFloor {
     return true;
   }
 
-  // Whether `leaf` (a thin segment), standing beside the leaves already in the room, keeps the floor as
-  // joined as it was: from `from` (the door's own mouth) every mouth reached before is reached still, and
-  // at most `lost_area` of the floor reached before is cut off (beyond the cells the leaf itself covers).
-  bool StaysOpen(const Point& from, const std::vector<Segment>& standing, const Segment& leaf) const {
+  // What `leaf` (a thin segment), standing beside the leaves already in the room, costs the floor as seen
+  // from `from` (the door's own mouth): 1000 for every mouth reached before and not after, plus the m2 of
+  // floor reached before and cut off after (beyond the cells the leaf itself covers); 0 when nothing is lost.
+  double Damage(const Point& from, const std::vector<Segment>& standing, const Segment& leaf) const {
+    constexpr double kMouth = 1000.0;
     const std::vector<char> before = Free(standing);
     std::vector<Segment> with = standing;
     with.push_back(leaf);
     const std::vector<char> after = Free(with);
     const long s0 = Snap(from, before);
-    if (s0 < 0) return true;  // no floor to keep
+    if (s0 < 0) return 0.0;  // no floor to keep
     const long s1 = Snap(from, after);
-    if (s1 < 0) return false;
+    if (s1 < 0) return kMouth * (static_cast<double>(mouths_.size()) + 1.0);
     const std::vector<char> r0 = Reached(before, s0), r1 = Reached(after, s1);
+    double damage = 0.0;
     for (const Point& m : mouths_) {
       const long c0 = Snap(m, before);
       if (c0 < 0 || !r0[c0]) continue;
       const long c1 = Snap(m, after);
-      if (c1 < 0 || !r1[c1]) return false;
+      if (c1 < 0 || !r1[c1]) damage += kMouth;
     }
     long lost = 0;
     for (size_t k = 0; k < r0.size(); ++k) lost += r0[k] && after[k] && !r1[k];
-    return lost * c_.cell * c_.cell <= c_.lost_area;
+    return damage + lost * c_.cell * c_.cell;
   }
 
  private:
@@ -345,9 +347,13 @@ std::vector<DoorSwing> DoorSwings(const Layout& layout, int level, const SwingCl
     const size_t upright = order.size();
     for (size_t k = 0; k < upright; ++k) order.push_back({order[k].side, order[k].hinge_at_a, true});
 
-    // The first candidate whose leaf keeps its room's floor joined; else the first.
+    // The first candidate whose leaf keeps its room's floor joined; else the 90 degree leaf that fits its
+    // room and costs the floor least (it stands too, for the doors after it); else the first.
     std::optional<DoorSwing> chosen;
     Segment chosen_leaf;
+    std::optional<Candidate> least;
+    Segment least_leaf;
+    double least_damage = 1e300;
     for (const Candidate& k : order) {
       const int room = k.side > 0 ? left : right;
       if (room < 0 || IsStaircaseHall(layout, room) || width <= 0.0) continue;
@@ -378,16 +384,20 @@ std::vector<DoorSwing> DoorSwings(const Layout& layout, int level, const SwingCl
         if (!wall) continue;
       }
       const Point mouth = f.Mouth(s, in, depth);
-      if (!f.ClearOfWalls(leaf) || !f.StaysOpen(mouth, standing[room], leaf)) continue;
+      if (!f.ClearOfWalls(leaf)) continue;
+      const double damage = f.Damage(mouth, standing[room], leaf);
+      if (damage > clearance.lost_area) {
+        if (!k.flat && damage < least_damage) least = k, least_leaf = leaf, least_damage = damage;
+        continue;
+      }
       chosen = MakeSwing(*element, level, left, right, k);
       chosen_leaf = leaf;
       break;
     }
-    if (chosen) {
-      standing[chosen->into].push_back(chosen_leaf);
-    } else {
+    if (!chosen && least) chosen = MakeSwing(*element, level, left, right, *least), chosen_leaf = least_leaf;
+    if (chosen && !IsStaircaseHall(layout, chosen->into)) standing[chosen->into].push_back(chosen_leaf);
+    if (!chosen)
       chosen = MakeSwing(*element, level, left, right, order.empty() ? Candidate{side, hinge_at_a(side), false} : order.front());
-    }
     out.push_back(*chosen);
   }
   return out;

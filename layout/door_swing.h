@@ -15,14 +15,15 @@
 //  - the leaf must not close the floor it stands on (issue 13): of the candidate swings, in this order of
 //    preference -- the side above with its hinge, the same side with the other hinge, the other side with
 //    either hinge (the entrance only opens in), each open 90 degrees -- the first whose leaf leaves the
-//    room's walking floor connected is taken (FloorStaysOpen below). Where no 90 degree leaf can stand, the
+//    room's walking floor connected is taken. Where no 90 degree leaf can stand, the
 //    leaf opens 180 degrees, flat against the wall beside its hinge (ordinary butt hinges open that far
-//    when the wall is straight and free for a leaf's width), in the same order. Where neither can, the first
-//    candidate stands (the builder hangs it closed when its sweep hits a wall).
+//    when the wall is straight and free for a leaf's width), in the same order. Where neither can, the
+//    90 degree leaf that fits its room and costs the floor least stands (ways closed, then area cut off),
+//    else the first candidate; the builder hangs a leaf closed when its sweep hits a wall or a stair.
 //    A staircase hall's floor is mostly flights and their hole, which the layout does not know, so a leaf is
 //    never found to stand well in one: it swings elsewhere when any other candidate does.
 //    Doors are decided in order (the entrance first, then `doors` in layout order); the leaves already
-//    standing in a room count as obstacles for the next door's leaf, so two leaves never meet in a passage.
+//    standing in a room count as obstacles for the next door's leaf (two leaves meeting in a passage).
 // Metres, plan frame; rings counter-clockwise.
 #include <vector>
 
@@ -33,7 +34,7 @@ namespace villa {
 inline constexpr double kDoorProbe = 0.05;        // m off the door's middle to find the rooms beside it
 inline constexpr double kDoorStripDepth = 0.6;    // m, the clearance strip on the side away from the leaf
 
-// What "the leaf leaves the floor connected" means (FloorStaysOpen). The layout has no wall thicknesses, so
+// What "the leaf leaves the floor connected" means. The layout has no wall thicknesses, so
 // the builder's defaults (BuildOptions) stand here; the person is the reachability check's (docs/REACH.md).
 struct SwingClearance {
   double person_radius = 0.2;    // m, the walking person's disc
