@@ -4,7 +4,7 @@
 //     and per villa (thread CPU seconds), and which rooms the building itself closes, split by cause;
 //  2. the furnished villas (`villa furnish` with procedural assets, seed S, one room at a time, the
 //     reachability check and its feedback loop on, as by default): RCH and ACC before and after the
-//     feedback, what is still unreachable by cause (the building: walls, stairs, holes; open door leaves;
+//     feedback, what is still unreachable by cause (the building: walls, stairs, holes and open door leaves;
 //     furniture), the actions the rooms' agents took, and the seconds of the check and the loop a villa.
 //   villa_bench_reach [--villas N] [--seed S] [--radius R] [--bare | --furnished] [--verbose]
 #include <time.h>
@@ -85,25 +85,42 @@ void Bare(const std::vector<bench::BenchVilla>& villas, const solver::ReachOptio
     paths += report->paths_drawn;
     times.Add(report->levels);
     if (report->rooms_reachable == report->rooms) continue;
-    // Diagnosis: the same check with the staircases and their holes as floor.
-    std::set<std::string> open_without_stairs;
-    solver::ReachInput flat = *input;
-    std::erase_if(flat.obstacles, [](const solver::ReachObstacle& o) {
-      return o.kind == solver::ObstacleKind::kStair || o.kind == solver::ObstacleKind::kStairHole;
-    });
+    // Diagnosis: the same check without some of the building's obstacles (bare buildings have no movable
+    // cells, so every unreached room is structural): the targets it then reaches.
     solver::ReachOptions quick = options;
     quick.paths = false;
-    if (auto r = solver::CheckReach(flat, quick); r.ok()) {
-      for (const auto& target : r->targets)
-        if (target.reachable) open_without_stairs.insert(target.name);
-    }
+    auto reached_without = [&](auto drop) {
+      std::set<std::string> open;
+      solver::ReachInput without = *input;
+      std::erase_if(without.obstacles, drop);
+      if (auto r = solver::CheckReach(without, quick); r.ok())
+        for (const auto& target : r->targets)
+          if (target.reachable) open.insert(target.name);
+      return open;
+    };
+    const std::set<std::string> open_without_stairs = reached_without([](const solver::ReachObstacle& o) {
+      return o.kind == solver::ObstacleKind::kStair || o.kind == solver::ObstacleKind::kStairHole;
+    });
+    const std::set<std::string> open_without_leaves =
+        reached_without([](const solver::ReachObstacle& o) { return o.kind == solver::ObstacleKind::kDoorLeaf; });
     std::string line = "  " + v.name + ": " + std::to_string(report->rooms_reachable) + "/" + std::to_string(report->rooms) + " rooms;";
     for (const auto& r : report->targets) {
       if (r.reachable) continue;
-      structural += r.structural;
-      leaves += !r.structural && r.blockers.empty();
-      stair_caused += r.structural && open_without_stairs.count(r.name);
-      line += " " + r.name + (r.structural ? (open_without_stairs.count(r.name) ? " (stairs)" : " (walls)") : " (door leaves)");
+      const bool by_stairs = open_without_stairs.count(r.name) > 0;
+      const bool by_leaves = !by_stairs && open_without_leaves.count(r.name) > 0;
+      structural += !by_leaves;
+      leaves += by_leaves;
+      stair_caused += by_stairs;
+      std::string leaves_named;
+      if (verbose && by_leaves) {
+        // Which leaves, taken away one at a time, open the room.
+        for (const solver::ReachObstacle& leaf : input->obstacles) {
+          if (leaf.kind != solver::ObstacleKind::kDoorLeaf) continue;
+          if (reached_without([&](const solver::ReachObstacle& o) { return o.name == leaf.name; }).count(r.name))
+            leaves_named += (leaves_named.empty() ? ": " : ", ") + leaf.name;
+        }
+      }
+      line += " " + r.name + (by_stairs ? " (stairs)" : by_leaves ? " (door leaves" + leaves_named + ")" : " (walls)");
     }
     if (verbose) std::printf("%s\n", line.c_str());
   }
@@ -175,7 +192,8 @@ void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, cons
     for (const char* kind : {"rooms", "zones"}) {
       for (const nlohmann::json& t : record[kind]) {
         if (t["reachable"].get<bool>()) continue;
-        const std::string cause = t["structural"].get<bool>() ? "building"
+        // Structural: the building, its open door leaves included (the bare part tells them apart).
+        const std::string cause = t["structural"].get<bool>() ? "building or door leaves"
                                   : t["blockers"].empty()     ? "door leaves"
                                                               : "furniture";
         ++(std::string(kind) == "rooms" ? rooms_by_cause : zones_by_cause)[cause];

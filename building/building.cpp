@@ -423,7 +423,10 @@ struct StairSide {
   int near = 0;
   double strip = 0.0;          // m from the free rectangle's near edge; 0 keeps the default
   int passage = -1;            // the side (adjacent to `near`) a passage runs along, the full depth; -1: none
-  double passage_width = 0.0;  // m of the free rectangle's width the passage takes
+  double passage_width = 0.0;  // m of the free rectangle's width the passage takes (each, when both)
+  bool both = false;           // passages along both sides adjacent to `near` (`passage` names one of them)
+  bool OnPassage(int side) const { return passage >= 0 && (side == passage || (both && side == (passage + 2) % 4)); }
+  int Passages() const { return passage < 0 ? 0 : both ? 2 : 1; }
 };
 
 // The sides of the free rectangle at across = 0 and at across = width of near side `near`'s frame
@@ -443,11 +446,12 @@ double StripNeeded(const StairBox& box, const StairSide& side, const StairDoor& 
     if (d0 > d1) std::swap(d0, d1);
     return std::pair{std::max(d0, 0.0), std::min(d1, hi) - std::max(d0, 0.0)};
   };
-  if (door.side == near || (side.passage >= 0 && door.side == side.passage)) return 0.0;
+  if (door.side == near || side.OnPassage(door.side)) return 0.0;
   if (door.side < 0) return kNever;
   if (door.side == (near + 2) % 4) {
-    if (side.passage < 0) return kNever;
-    return overlap(side.passage, box.inset[side.passage] + side.passage_width).second >= kServedOverlap ? 0.0 : kNever;
+    for (int k : {AcrossStart(near), AcrossEnd(near)})
+      if (side.OnPassage(k) && overlap(k, box.inset[k] + side.passage_width).second >= kServedOverlap) return 0.0;
+    return kNever;
   }
   auto [d0, width] = overlap(near, 1e300);
   if (width < kServedOverlap) return kNever;
@@ -476,7 +480,7 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
       }
   struct Score {
     int levels = 0, doors = 0, whole = 0, lowest = 0;
-    bool passage = false;
+    int passages = 0;
     double strip = 0.0;
     Point mid;
   };
@@ -485,7 +489,7 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
     if (a.doors != b.doors) return a.doors > b.doors;
     if (a.whole != b.whole) return a.whole > b.whole;
     if (a.lowest != b.lowest) return a.lowest > b.lowest;
-    if (a.passage != b.passage) return !a.passage;
+    if (a.passages != b.passages) return a.passages < b.passages;
     if (std::abs(a.strip - b.strip) > 1e-9) return a.strip < b.strip;
     if (std::abs(a.mid.y - b.mid.y) > 1e-6) return a.mid.y < b.mid.y;
     return a.mid.x < b.mid.x;
@@ -498,21 +502,26 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
     const double depth = box.Depth(k), width = box.Width(k);
     double deepest = 0.0;
     if (auto f = SizeFlights(depth, treads, 0.0)) deepest = std::max(f->arrival, depth - treads * kMinGoing - kMinLanding);
-    // Full-width flights, or flights narrowed to leave a passage along either adjacent side.
-    const double passage_width = width - std::max(kMinStairWidth, width / 2.0);
-    for (int passage : {-1, AcrossStart(k), AcrossEnd(k)}) {
-      if (passage >= 0 && passage_width < kMinPassage) continue;
-      StairSide candidate{k, 0.0, passage, passage >= 0 ? passage_width : 0.0};
+    // Full-width flights, flights narrowed to leave a passage along either adjacent side, or narrowed in
+    // the middle with a passage along both (for doors on three sides).
+    const double flights = std::max(kMinStairWidth, width / 2.0);
+    const double passage_width = width - flights, half_width = (width - flights) / 2.0;
+    const StairSide candidates[] = {{k, 0.0, -1, 0.0, false},
+                                    {k, 0.0, AcrossStart(k), passage_width, false},
+                                    {k, 0.0, AcrossEnd(k), passage_width, false},
+                                    {k, 0.0, AcrossStart(k), half_width, true}};
+    for (StairSide candidate : candidates) {
+      if (candidate.passage >= 0 && candidate.passage_width < kMinPassage) continue;
       Score s;
       s.mid = box.SideMid(k);
-      s.passage = passage >= 0;
+      s.passages = candidate.Passages();
       std::vector<bool> level_served(levels.size(), false);
       for (const StairDoor& d : doors) {
         double need = StripNeeded(box, candidate, d);
         if (need > deepest + 1e-9) continue;
         s.strip = std::max(s.strip, need);
         ++s.doors;
-        s.whole += d.side == k || d.side == passage;
+        s.whole += d.side == k || candidate.OnPassage(d.side);
         s.lowest += d.level == levels.front();
         level_served[std::find(levels.begin(), levels.end(), d.level) - levels.begin()] = true;
       }
@@ -554,10 +563,11 @@ std::optional<StairPlan> PlanStair(const Room& room, const StairBox& box, StairS
   }
   const double depth = box.Depth(side.near);
   double width = box.Width(side.near);
-  // A passage beside the flights: they narrow, and shift off it when it runs along the across = 0 side.
+  // A passage beside the flights: they narrow, and shift off it when it runs along the across = 0 side;
+  // passages on both sides leave them in the middle.
   if (side.passage >= 0) {
-    width -= side.passage_width;
-    if (side.passage == AcrossStart(side.near)) origin = Add(origin, Scale(across, side.passage_width));
+    width -= side.Passages() * side.passage_width;
+    if (side.OnPassage(AcrossStart(side.near))) origin = Add(origin, Scale(across, side.passage_width));
   }
   const int risers = options.stair_risers / 2;  // per flight
   const int treads = risers - 1;
@@ -898,21 +908,37 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         part.kind = PartKind::kDoorLeaf;
         double lt = options.door_leaf_thickness;
         double width = p.cut.s1 - p.cut.s0 - 2 * gap;
-        // Swung 90 degrees open as layout/door_swing.h's rule says (the floor plan draws the same swing):
-        // into its room, hinged at the jamb nearer that room's corner. Hung closed in its opening when the
-        // leaf's sweep would hit a wall or a staircase.
+        // Swung open as layout/door_swing.h's rule says (the floor plan draws the same swing): into its
+        // room, hinged at the jamb it names, 90 degrees, or 180 degrees flat against the wall beside the
+        // hinge. Hung closed in its opening when the leaf's sweep would hit a wall or a staircase.
         bool placed_open = false;
         if (options.door_leaves_open) {
-          const DoorSwing swing = SwingOfDoor(layout, *p.element, level);
+          SwingClearance clearance;
+          clearance.exterior_wall = options.exterior_wall_thickness;
+          clearance.interior_wall = options.interior_wall_thickness;
+          clearance.leaf_thickness = lt;
+          const DoorSwing swing = SwingOfDoor(layout, *p.element, level, clearance);
           const int side = Dot(swing.leaf_side, f.normal) >= 0.0 ? 1 : -1;
           const double s_hinge = f.S(swing.hinge);
           const int hinge = std::abs(s_hinge - p.cut.s0) <= std::abs(s_hinge - p.cut.s1) ? 0 : 1;
-          double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt;
-          double q0 = side > 0 ? half + gap : -half - gap - width;
-          // The swept quarter disc lies within this square beside the opening.
+          // The leaf's box in the wall's frame: s along it, q across (from the centre line).
+          double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt, s1 = s0 + lt;
+          double q0 = side > 0 ? half + gap : -half - gap - width, q1 = q0 + width;
+          // The swept quarter disc lies within this square beside the opening; a flat leaf's half disc
+          // within the square and the one beside it over the wall it folds onto.
           double sweep_s0 = hinge == 0 ? p.cut.s0 : p.cut.s1 - width - 2 * gap;
-          Ring sweep = CleanRing({f.ToPlan(sweep_s0, q0), f.ToPlan(sweep_s0 + width + 2 * gap, q0),
-                                  f.ToPlan(sweep_s0 + width + 2 * gap, q0 + width), f.ToPlan(sweep_s0, q0 + width)},
+          double sweep_s1 = sweep_s0 + width + 2 * gap;
+          if (swing.flat) {
+            s0 = hinge == 0 ? p.cut.s0 - width : p.cut.s1;
+            s1 = s0 + width;
+            q0 = side > 0 ? half + gap : -half - gap - lt;
+            q1 = q0 + lt;
+            if (hinge == 0) sweep_s0 -= width;
+            else sweep_s1 += width;
+          }
+          const double sq0 = side > 0 ? half + gap : -half - gap - width;
+          Ring sweep = CleanRing({f.ToPlan(sweep_s0, sq0), f.ToPlan(sweep_s1, sq0), f.ToPlan(sweep_s1, sq0 + width),
+                                  f.ToPlan(sweep_s0, sq0 + width)},
                                  1e-9);
           std::string blocker;
           for (const WallPiece& w : walls)
@@ -921,7 +947,7 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
             if (blocker.empty() && st.level == level && ConvexOverlapArea(st.footprint, sweep) > 1e-4)
               blocker = "the staircase in " + st.room;
           if (blocker.empty()) {
-            part.mesh = BoxInFrame(f, s0, s0 + lt, q0, q0 + width, p.cut.z0 + 0.01, p.cut.z1 - gap);
+            part.mesh = BoxInFrame(f, s0, s1, q0, q1, p.cut.z0 + 0.01, p.cut.z1 - gap);
             placed_open = true;
           } else {
             building.warnings.push_back(std::string(ElementKindKey(p.element->kind)) + " " + p.name + ": its swing" +

@@ -140,7 +140,7 @@ Registration registration{60, [](CLI::App& app) {
       ->capture_default_str()
       ->check(NumberIn(0.0, 0.5, /*above_min=*/true));
   sub->add_flag("!--closed-doors", command->options.door_leaves_open,
-                "hang door leaves closed in their openings (default: swung open 90 degrees)");
+                "hang door leaves closed in their openings (default: swung open, 90 degrees or flat against the wall)");
   sub->callback([command] { Run(*command); });
 }};
 

@@ -23,6 +23,12 @@
 namespace villa {
 namespace {
 
+// The turn (+pi or -pi) of a leaf opened flat from angle a0 (its leaf) back to its free jamb: the way that
+// passes `side` (the leaf side, in the frame of a0) half way.
+double FlatTurn(double a0, Point side) {
+  return std::cos(a0 + M_PI / 2.0) * side.x + std::sin(a0 + M_PI / 2.0) * side.y >= 0.0 ? M_PI : -M_PI;
+}
+
 using plan::Fill;
 using plan::LineCap;
 using plan::LineJoin;
@@ -423,6 +429,7 @@ Result<Frame> MakeFrame(const Content& c, const PlanRenderOptions& options, cons
         const double length = std::hypot(bisector.x, bisector.y);
         grow(w.leaf_end);
         if (length > 0.0) grow(Add(w.hinge, Scale(bisector, radius / length)));
+        if (w.flat) grow(Add(w.hinge, Scale(w.leaf_side, radius)));  // the top of its half circle
       }
     }
   }
@@ -859,7 +866,8 @@ class PlanPainter {
     if (panoramic) paint_.Line(a, b, Pen(e.on_wall ? kPanoramicLine : kError, 1.6));
   }
 
-  // A door leaf standing open at 90 degrees with its quarter swing arc; the entrance also gets the
+  // A door leaf standing open at 90 degrees with its quarter swing arc (180 degrees flat against the wall
+  // with a half circle, where the rule opens it so); the entrance also gets the
   // arrow from outside. The leaf swings into the smaller room (a bedroom off a living room), never
   // onto a balcony, and into the building for the entrance.
   void DrawDoor(const PlacedElement& e, bool entrance) {
@@ -875,6 +883,7 @@ class PlanPainter {
     double a1 = std::atan2(fe.y - h.y, fe.x - h.x);
     while (a1 - a0 > M_PI) a1 -= 2.0 * M_PI;
     while (a0 - a1 > M_PI) a1 += 2.0 * M_PI;
+    if (e.swing.flat) a1 = a0 + FlatTurn(a0, {e.swing.leaf_side.x, -e.swing.leaf_side.y});  // screen y is down
     const double radius = length * s();
     paint_.Path({SubPath{Arc(h, radius, a0, a1), false}}, std::nullopt, Pen(e.on_wall ? kMuted : kError, 1.0));
     paint_.Line(h, le, Pen(ink, std::max(2.0, 0.05 * s())));
@@ -936,9 +945,11 @@ class PlanPainter {
         double a1 = std::atan2(w.free_end.y - w.hinge.y, w.free_end.x - w.hinge.x);
         while (a1 - a0 > M_PI) a1 -= 2.0 * M_PI;
         while (a0 - a1 > M_PI) a1 += 2.0 * M_PI;
+        if (w.flat) a1 = a0 + FlatTurn(a0, w.leaf_side);
         Ring sector{w.hinge};
-        for (int i = 0; i <= 8; ++i) {
-          const double a = a0 + (a1 - a0) * i / 8.0;
+        const int steps = w.flat ? 16 : 8;
+        for (int i = 0; i <= steps; ++i) {
+          const double a = a0 + (a1 - a0) * i / steps;
           sector.push_back({w.hinge.x + radius * std::cos(a), w.hinge.y + radius * std::sin(a)});
         }
         Placed box{sector[0], sector[0]};

@@ -13,15 +13,16 @@ using namespace villa::geo;
 
 constexpr double kStripDepth = 0.6;  // m beyond the wall face (PRIORS.md door clearance)
 
-// The rectangle over the door segment from offset q0 to q1 along its left normal, CCW.
-Ring Band(const Segment& door, double q0, double q1) {
+// The rectangle from s0 to s1 along the door segment (m from door.a) and from offset q0 to q1 along its
+// left normal, CCW.
+Ring Band(const Segment& door, double s0, double s1, double q0, double q1) {
   Point u = Unit(Sub(door.b, door.a));
   Point n = Left(u);
   if (q0 > q1) std::swap(q0, q1);
-  return CleanRing({Add(door.a, Scale(n, q0)), Add(door.b, Scale(n, q0)), Add(door.b, Scale(n, q1)),
-                    Add(door.a, Scale(n, q1))},
-                   1e-9);
+  const Point a = Add(door.a, Scale(u, s0)), b = Add(door.a, Scale(u, s1));
+  return CleanRing({Add(a, Scale(n, q0)), Add(b, Scale(n, q0)), Add(b, Scale(n, q1)), Add(a, Scale(n, q1))}, 1e-9);
 }
+Ring Band(const Segment& door, double q0, double q1) { return Band(door, 0.0, Length(door), q0, q1); }
 
 bool OnExterior(const Segment& s, const std::vector<Segment>& exterior) {
   for (const Segment& e : exterior) {
@@ -71,7 +72,20 @@ std::vector<DoorSwing> DoorSwings(const Layout& layout, const BuildingMesh& buil
     // An open leaf stands perpendicular to the wall, reaching about one door width beyond it.
     const double reach = std::max(std::abs(q_min), std::abs(q_max));
     const bool open = count > 0 && reach > 0.5 * width && (q_min > 0.0 || q_max < 0.0);
-    if (open) {
+    // A leaf opened 180 degrees (layout/door_swing.h: where no leaf can stand at 90 degrees) lies flat
+    // against the wall beside its opening, on one side of it; its sweep is the half disc over the opening
+    // and that wall (two squares), kept clear like a quarter disc's square.
+    const double s_mean = count > 0 ? s_sum / count : 0.0;
+    const bool flat = count > 0 && !open && (q_min > 0.0 || q_max < 0.0) && (s_mean < 0.0 || s_mean > width);
+    if (flat) {
+      swing.side = q_min > 0.0 ? 1 : -1;
+      swing.hinge = s_mean < 0.0 ? 0 : 1;
+      // Its half disc: the square over the opening and the one over the wall it folds onto.
+      swing.sweep = swing.hinge == 0 ? Band(e.shape, -width, width, 0.0, swing.side * width)
+                                     : Band(e.shape, 0.0, 2.0 * width, 0.0, swing.side * width);
+      const double face = outer ? 0.0 : half;
+      swing.strips.push_back(Band(e.shape, 0.0, -swing.side * (face + kStripDepth)));
+    } else if (open) {
       swing.side = q_min > 0.0 ? 1 : -1;
       swing.hinge = s_sum / count < width / 2.0 ? 0 : 1;
       swing.sweep = Band(e.shape, 0.0, swing.side * reach);

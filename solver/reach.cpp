@@ -306,7 +306,9 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
       for (const Ring& piece : o.pieces) {
         const PlanObstacle p{ShapeOf(piece), o.z0, o.z1, static_cast<int>(k)};
         full.push_back(p);
-        if (o.kind != ObstacleKind::kObject && o.kind != ObstacleKind::kDoorLeaf) building.push_back(p);
+        // Door leaves are fixed like walls: the person does not push a leaf and the solver cannot move
+        // one, so the search for blockers goes round them (naming the furniture beside them), not through.
+        if (o.kind != ObstacleKind::kObject) building.push_back(p);
       }
     }
     L.building = std::make_unique<FreeSpace>(L.input->floor, std::move(building));
@@ -437,8 +439,8 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
       }
       if (best < 0) {
         res.structural = true;
-        res.note = open_start < 0 ? "no free floor at the entrance, even without furniture and door leaves"
-                                  : "no way in even without furniture and door leaves: walls, stairs or holes close it";
+        res.note = open_start < 0 ? "no free floor at the entrance, even without furniture"
+                                  : "no way in even without furniture: walls, stairs, holes or open door leaves close it";
         continue;
       }
       std::set<std::string> seen;

@@ -195,9 +195,11 @@ struct TargetResult {
   // met), the leaves on it (the building's: nothing the solver moves), and that way's raster cells as world
   // points per level (the walkway the feedback keeps free).
   std::vector<std::string> blockers;
+  // Open door leaves on the blocked way: none since the leaves count as fixed (2026-11-24, the blocked way
+  // goes round them); kept for the report's format.
   std::vector<std::string> door_leaves;
   std::vector<std::pair<int, std::vector<Point>>> blocked_way;
-  bool structural = false;         // unreachable even without objects and door leaves: walls, stairs, holes
+  bool structural = false;         // unreachable even without objects: walls, stairs, holes, open door leaves
 };
 
 struct LevelStats {

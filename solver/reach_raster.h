@@ -40,7 +40,7 @@ struct LevelCells {
   Grid grid;
   std::vector<Cell> cell;
   std::vector<float> clearance;  // m from the centre to the nearest obstacle, objects included (transform)
-  std::vector<float> clearance_fixed;  // the same without objects and door leaves
+  std::vector<float> clearance_fixed;  // the same without objects (the building and its open door leaves)
   long exact = 0;                // cells the query decided itself
 };
 

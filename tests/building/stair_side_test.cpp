@@ -132,3 +132,37 @@ TEST_CASE("a door no side of the stack can serve is named in a warning") {
   CHECK(named >= 1);
   CHECK(named <= 2);
 }
+
+// villa-000046 of `villa synth --count 50 --seed 7`: the 4 x 4 m utility room at (2, 0) on three floors has
+// doors on three of its sides (west, north and east on the top floor). No single strip, and no strip with
+// one passage, serves them all; flights narrowed in the middle, with a passage along both sides, do.
+TEST_CASE("a stair room with doors on three sides gets a passage on both sides of its flights") {
+  auto layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/stair_doors_three_sides.json");
+  REQUIRE(layout);
+  auto b = BuildBuilding(*layout);
+  REQUIRE(b);
+  REQUIRE(b->stairs.size() == 2);
+  CHECK_FALSE(Warned(*b, "opens onto the flights"));
+  const Ring room = layout->rooms[layout->FindRoom("utility-room_0/0")].polygon;
+  for (const BuiltStair& s : b->stairs) {
+    INFO("stair of level " << s.level);
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (Point p : s.footprint) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    // The room spans x 2..6, y 0..4 (interior walls 0.12 m, centred): a passage at least 0.9 m wide between
+    // the flights and the wall's face on two opposite sides, and the flights still 1.8 m wide.
+    const bool along_x = x0 - 2.06 >= 0.9 - 1e-6 && 5.94 - x1 >= 0.9 - 1e-6 && x1 - x0 >= 1.8 - 1e-6;
+    const bool along_y = y0 - 0.06 >= 0.9 - 1e-6 && 3.94 - y1 >= 0.9 - 1e-6 && y1 - y0 >= 1.8 - 1e-6;
+    CHECK((along_x || along_y));
+  }
+  // Every door and open of the stair room, on every level, opens onto floor: 0.3 m inside it is off the
+  // flights of that level and off the hole of the one below.
+  for (const auto* list : {&layout->doors, &layout->opens}) {
+    for (const Element& door : *list) {
+      if (DistanceToBoundary(Lerp(door.shape.a, door.shape.b, 0.5), room) > 1e-6) continue;
+      INFO(door.name);
+      const Point p = InFront(door, room, 0.3);
+      for (const BuiltStair& s : b->stairs)
+        if (s.level == door.level || s.level + 1 == door.level) CHECK_FALSE(PointInRing(p, s.footprint, 0));
+    }
+  }
+}
