@@ -394,7 +394,7 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
         act(owner->second.room, Remove(solver, t.name, "its zone stays unreachable and no free slot has a reachable one"));
       }
     }
-    if (fr.actions.empty()) break;
+    if (fr.actions.empty()) continue;  // nothing moved: on to the removals, with nothing new to check
     summary.rounds.push_back(std::move(fr));
     auto next = check();
     if (!next.ok()) return Error{next.error()};
