@@ -194,8 +194,8 @@ bool ReachFeedbackOptions::IsValid(std::string* message) const {
     if (message) *message = "slot_step must be in [0.02, 1] m, is " + Fixed(slot_step, 3);
     return false;
   }
-  if (slot_tries < 1 || slot_tries > 10000) {
-    if (message) *message = "slot_tries must be in [1, 10000], is " + std::to_string(slot_tries);
+  if (slot_tries < 1 || slot_tries > 100000) {
+    if (message) *message = "slot_tries must be in [1, 100000], is " + std::to_string(slot_tries);
     return false;
   }
   return true;

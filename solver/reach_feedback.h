@@ -33,7 +33,7 @@ struct ReachFeedbackOptions {
   // still blocks a room) it is removed, unless only a door leaf is in the way (the building's to mend).
   bool last_resort = true;
   double slot_step = 0.1;        // m between the slots tried (along walls, over the floor), [0.02, 1]
-  int slot_tries = 40;           // slots checked against the room's hard constraints per object, [1, 10000]
+  int slot_tries = 1000;         // slots checked against the room's hard constraints per object, [1, 100000]
   bool IsValid(std::string* message) const;
 };
 
