@@ -365,6 +365,12 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
     }
     levels[l].stats.free_area = free_cells * cell_area;
     levels[l].stats.reached_area = reached * cell_area;
+    ReachedCells rc;
+    rc.level = l;
+    rc.x0 = lc.grid.x0, rc.y0 = lc.grid.y0, rc.cell = lc.grid.cell, rc.nx = lc.grid.nx, rc.ny = lc.grid.ny;
+    rc.reached.resize(lc.grid.size());
+    for (long c = 0; c < lc.grid.size(); ++c) rc.reached[c] = std::isfinite(ways.dist[graph.offset[l] + c]) ? 1 : 0;
+    report.reached.push_back(std::move(rc));
   }
 
   // ---- targets: reached or not, and where the person stands
@@ -568,6 +574,12 @@ Result<ReachReport> CheckReach(const ReachInput& input, const ReachOptions& opti
   }
   report.seconds = Since(start);
   return report;
+}
+
+bool ReachedCells::At(Point p) const {
+  const double fi = std::floor((p.x - x0) / cell), fj = std::floor((p.y - y0) / cell);
+  if (fi < 0 || fj < 0 || fi >= nx || fj >= ny) return false;
+  return reached[static_cast<long>(fj) * nx + static_cast<long>(fi)] != 0;
 }
 
 const TargetResult* ReachReport::Find(std::string_view name) const {

@@ -213,9 +213,23 @@ struct LevelStats {
   double seconds_queries = 0.0;  // path queries and simplification on this level
 };
 
+// The raster cells of one level a person reached from the entrance (with everything in place), for the
+// feedback's last resort: a zone moved where a reached cell's disc touches it is reachable, as long as the
+// move itself does not cut the way to that cell.
+struct ReachedCells {
+  int level = 0;
+  double x0 = 0.0, y0 = 0.0;  // world corner of cell (0, 0), m
+  double cell = 0.02;         // m
+  int nx = 0, ny = 0;
+  std::vector<uint8_t> reached;  // row-major, nx * ny: 1 reached
+  // Whether the cell holding p was reached (false outside the grid).
+  bool At(Point p) const;
+};
+
 struct ReachReport {
   bool entrance_free = false;   // a free cell near the entrance
   std::vector<TargetResult> targets;  // in input order
+  std::vector<ReachedCells> reached;  // per level, ascending (not in ToJson)
   int rooms = 0, rooms_reachable = 0;
   int zones = 0, zones_reachable = 0;
   int paths_drawn = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "solver/free_space.h"
 
@@ -41,7 +42,143 @@ std::vector<KeepOut> WalkwayPieces(const std::vector<std::pair<int, std::vector<
   return out;
 }
 
+// Whether a person standing on a reached cell touches one of `zone`'s boxes with their disc clear of
+// `owner` (the owner's box where it would stand; the cells were reached with it elsewhere). Every other
+// cell is tried: the check after the move decides.
+bool ZoneTouchable(const ReachedCells& cells, const std::vector<Ring>& zone, const OrientedBox& owner, double radius) {
+  const Point u = owner.U(), v = owner.V();
+  auto clear_of_owner = [&](Point p) {
+    const Point d = Sub(p, owner.c);
+    return std::hypot(std::max(0.0, std::abs(Dot(d, u)) - owner.hx), std::max(0.0, std::abs(Dot(d, v)) - owner.hy)) >= radius;
+  };
+  for (const Ring& z : zone) {
+    if (z.empty()) continue;
+    Point lo = z[0], hi = z[0];
+    for (const Point& p : z) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    const int i0 = std::max(0, static_cast<int>(std::floor((lo.x - radius - cells.x0) / cells.cell)));
+    const int j0 = std::max(0, static_cast<int>(std::floor((lo.y - radius - cells.y0) / cells.cell)));
+    const int i1 = std::min(cells.nx - 1, static_cast<int>(std::floor((hi.x + radius - cells.x0) / cells.cell)));
+    const int j1 = std::min(cells.ny - 1, static_cast<int>(std::floor((hi.y + radius - cells.y0) / cells.cell)));
+    for (int j = j0; j <= j1; j += 2) {
+      for (int i = i0; i <= i1; i += 2) {
+        if (!cells.reached[static_cast<long>(j) * cells.nx + i]) continue;
+        const Point p{cells.x0 + (i + 0.5) * cells.cell, cells.y0 + (j + 0.5) * cells.cell};
+        const double d = PointInRing(p, z, 0) ? 0.0 : DistanceToBoundary(p, z);
+        if (d <= radius && clear_of_owner(p)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+// A place the last resort may move an object to: its pose, the wall it backs onto (-1: none) and how far
+// it is from where the object stands (m; the nearest are tried first).
+struct Slot {
+  Pose pose;
+  int wall = -1;
+  double distance = 0.0;
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+double WrapYaw(double yaw) {
+  double y = std::remainder(yaw, 2.0 * kPi);
+  return y <= -kPi ? y + 2.0 * kPi : y;
+}
+
+// Slots for a floor object, nearest its place first: against a wall, every `step` m along each wall with
+// its back to it; standing free, every `step` m over the room's floor in its yaw and the three quarter
+// turns of it.
+std::vector<Slot> FloorSlots(const RoomProblem& problem, const ProblemObject& o, const ObjectPlacement& pl, double step) {
+  std::vector<Slot> out;
+  const Point at{pl.pose.x, pl.pose.y};
+  if (o.relation == Relation::kAgainstWall) {
+    const double off = 0.5 * o.asset.size.y * pl.pose.scale + o.wall_gap;
+    for (size_t w = 0; w < problem.walls.size(); ++w) {
+      const WallEdge& e = problem.walls[w];
+      const double len = Dist(e.a, e.b);
+      if (len < 1e-6) continue;
+      const Point d = Unit(Sub(e.b, e.a)), n = Left(d);  // the room is on the wall's left
+      for (double t = 0.5 * step; t < len; t += step) {
+        const Point c = Add(Add(e.a, Scale(d, t)), Scale(n, off));
+        Pose p = pl.pose;
+        p.x = c.x, p.y = c.y, p.yaw = std::atan2(n.x, -n.y);  // the front, (sin yaw, -cos yaw), faces n
+        out.push_back({p, static_cast<int>(w), Dist(c, at)});
+      }
+    }
+  } else if (o.relation == Relation::kOnTop && o.parent == "floor" && !problem.free_floor.empty()) {
+    Point lo = problem.free_floor[0], hi = lo;
+    for (const Point& p : problem.free_floor) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    for (double y = lo.y + 0.5 * step; y < hi.y; y += step) {
+      for (double x = lo.x + 0.5 * step; x < hi.x; x += step) {
+        if (!PointInRing({x, y}, problem.free_floor, 0)) continue;
+        for (int k = 0; k < 4; ++k) {
+          Pose p = pl.pose;
+          p.x = x, p.y = y, p.yaw = WrapYaw(pl.pose.yaw + k * 0.5 * kPi);
+          out.push_back({p, -1, Dist({x, y}, at) + 1e-3 * k});
+        }
+      }
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Slot& a, const Slot& b) { return a.distance < b.distance; });
+  return out;
+}
+
+// Moves object `id` of `solver` to the nearest slot whose zone a person on `cells` touches and that keeps
+// the room's hard constraints; the action's result, or nothing when no slot does.
+std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::string& id, const ReachedCells& cells,
+                                                const ReachFeedbackOptions& options) {
+  const RoomSolution now = solver.Solution();
+  int i = -1;
+  for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
+    if (now.objects[k].id == id && now.placements[k].placed) i = static_cast<int>(k);
+  }
+  if (i < 0) return std::nullopt;
+  const ProblemObject& o = now.objects[i];
+  const std::optional<InteractionZone> zone = ZoneOf(o);
+  if (!zone) return std::nullopt;
+  int tries = 0;
+  for (const Slot& slot : FloorSlots(solver.Problem(), o, now.placements[i], options.slot_step)) {
+    const OrientedBox box = StandingBox(o, slot.pose);
+    if (!ZoneTouchable(cells, ZoneFootprints(box, zone->side, zone->depth * slot.pose.scale), box, options.reach.radius)) continue;
+    const std::optional<int> wall = slot.wall >= 0 ? std::optional<int>(slot.wall) : std::nullopt;
+    if (!solver.Fits(id, slot.pose, wall)) {
+      if (++tries >= options.slot_tries) break;
+      continue;
+    }
+    Action a;
+    a.kind = ActionKind::kUpdatePose;
+    a.id = id;
+    a.pose = slot.pose;
+    a.wall = wall;
+    a.reason = "reachability: its zone cannot be reached where it stands; moved " + Fixed(slot.distance, 2) +
+               " m to a free slot a person can step up to";
+    ActionResult r = solver.Apply(a);
+    if (r.status != ActionStatus::kRefused) return r;
+    if (++tries >= options.slot_tries) break;
+  }
+  return std::nullopt;
+}
+
+ActionResult Remove(RoomSolver& solver, const std::string& id, const std::string& why) {
+  Action a;
+  a.kind = ActionKind::kRemoveEntity;
+  a.id = id;
+  a.reason = "reachability: " + why;
+  return solver.Apply(a);
+}
+
 }  // namespace
+
+std::optional<InteractionZone> ZoneOf(const ProblemObject& o) {
+  std::optional<InteractionZone> zone = o.zone;
+  if (!zone && o.asset.interaction_zone && o.asset.Has(kInteractor)) {
+    zone = InteractionZone{o.asset.interaction_zone->side, o.asset.interaction_zone->depth, {}};
+  }
+  const bool hung = o.relation == Relation::kOnWall || o.relation == Relation::kHanging;
+  if (!zone || !(zone->depth > 0.0) || hung) return std::nullopt;
+  return zone;
+}
 
 bool ReachFeedbackOptions::IsValid(std::string* message) const {
   if (!reach.IsValid(message)) return false;
@@ -51,6 +188,14 @@ bool ReachFeedbackOptions::IsValid(std::string* message) const {
   }
   if (!(walkway_margin >= 0.0 && walkway_margin <= 0.5)) {
     if (message) *message = "walkway_margin must be in [0, 0.5] m, is " + Fixed(walkway_margin, 3);
+    return false;
+  }
+  if (!(slot_step >= 0.02 && slot_step <= 1.0)) {
+    if (message) *message = "slot_step must be in [0.02, 1] m, is " + Fixed(slot_step, 3);
+    return false;
+  }
+  if (slot_tries < 1 || slot_tries > 100000) {
+    if (message) *message = "slot_tries must be in [1, 100000], is " + std::to_string(slot_tries);
     return false;
   }
   return true;
@@ -69,12 +214,7 @@ std::vector<ReachObject> ReachObjectsOf(const RoomSolution& solution, const std:
     r.level = level;
     r.box = StandingBox(o, pl.pose);
     r.covering = IsFloorCovering(o);
-    std::optional<InteractionZone> zone = o.zone;
-    if (!zone && o.asset.interaction_zone && o.asset.Has(kInteractor)) {
-      zone = InteractionZone{o.asset.interaction_zone->side, o.asset.interaction_zone->depth, {}};
-    }
-    const bool hung = o.relation == Relation::kOnWall || o.relation == Relation::kHanging;
-    if (zone && zone->depth > 0.0 && !hung) {
+    if (const std::optional<InteractionZone> zone = ZoneOf(o)) {
       r.zone = ZoneFootprints(r.box, zone->side, zone->depth * pl.pose.scale);
       for (const std::string& id : zone->exempt) {
         for (size_t j = 0; j < n; ++j) {
@@ -207,6 +347,64 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     if (!next.ok()) return Error{next.error()};
     report = std::move(*next);
   }
+  // The last resort: what the rounds left. First the owners of unreachable zones in rooms a person enters
+  // move to slots whose zone a reached cell touches, and what still blocks a room is removed; after a check,
+  // the owners of zones still unreachable are removed, unless only door leaves close the way (the building's
+  // to mend: a leaf's swing, not the furniture).
+  const std::string rounds_reason = summary.reason;
+  for (const char* stage : {"move", "remove"}) {
+    if (summary.all_reachable || !options.last_resort) break;
+    std::set<std::string> rooms_unreached;
+    for (const TargetResult& t : report.targets) {
+      if (t.kind == TargetKind::kRoom && !t.reachable) rooms_unreached.insert(t.name);
+    }
+    FeedbackRound fr;
+    fr.stage = stage;
+    const bool moving = std::string(stage) == "move";
+    std::set<std::string> gone;  // removed in this stage, with what stood on them
+    auto act = [&](const std::string& room, const ActionResult& r) {
+      if (r.action.kind == ActionKind::kRemoveEntity && r.status != ActionStatus::kRefused) {
+        summary.removed += static_cast<int>(r.removed.size());
+        gone.insert(r.removed.begin(), r.removed.end());
+      }
+      if (r.action.kind == ActionKind::kUpdatePose) ++summary.moved;
+      fr.actions.push_back({room, r});
+    };
+    for (const TargetResult& t : report.targets) {
+      if (t.reachable) continue;
+      fr.unreachable.push_back(t.name);
+      const bool leaves_only = !t.structural && t.blockers.empty();
+      if (t.kind == TargetKind::kRoom) {
+        // A room sealed by furniture the walkways could not clear: what stands in its way goes.
+        if (leaves_only || !t.door_leaves.empty()) continue;
+        for (const std::string& id : t.blockers) {
+          const auto b = seen.find(id);
+          if (gone.count(id) || b == seen.end() || !solvers.count(b->second.room)) continue;
+          act(b->second.room, Remove(*solvers.at(b->second.room), id, "it closes the way into " + t.name + " after every round"));
+        }
+        continue;
+      }
+      const auto owner = seen.find(t.name);
+      if (rooms_unreached.count(t.room) || owner == seen.end() || gone.count(t.name) || !solvers.count(owner->second.room)) continue;
+      RoomSolver& solver = *solvers.at(owner->second.room);
+      if (moving) {
+        if (t.level >= static_cast<int>(report.reached.size())) continue;
+        if (auto r = MoveToReachableSlot(solver, t.name, report.reached[t.level], options)) act(owner->second.room, *r);
+      } else if (!leaves_only) {
+        act(owner->second.room, Remove(solver, t.name, "its zone stays unreachable and no free slot has a reachable one"));
+      }
+    }
+    if (fr.actions.empty()) continue;  // nothing moved: on to the removals, with nothing new to check
+    summary.rounds.push_back(std::move(fr));
+    auto next = check();
+    if (!next.ok()) return Error{next.error()};
+    report = std::move(*next);
+    int left = 0;
+    for (const TargetResult& t : report.targets) left += !t.reachable;
+    summary.all_reachable = left == 0;
+    summary.reason = rounds_reason + "; last resort: " + std::to_string(summary.moved) + " moved, " + std::to_string(summary.removed) + " removed, " +
+                      (left ? std::to_string(left) + " target(s) still unreachable" : "every room and zone reachable");
+  }
   summary.last = std::move(report);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
@@ -216,7 +414,8 @@ std::string FeedbackSummary::BriefReport() const {
   std::string out = "reach feedback: " + reason + " (RCH " + Fixed(first.Rch(), 3) + " -> " + Fixed(last.Rch(), 3) + ", ACC " +
                     Fixed(first.Acc(), 3) + " -> " + Fixed(last.Acc(), 3) + ")\n";
   for (size_t r = 0; r < rounds.size(); ++r) {
-    out += "  round " + std::to_string(r + 1) + ": " + std::to_string(rounds[r].unreachable.size()) + " unreachable, " +
+    out += "  round " + std::to_string(r + 1) + (rounds[r].stage == "walkways" ? "" : " (last resort: " + rounds[r].stage + ")") +
+           ": " + std::to_string(rounds[r].unreachable.size()) + " unreachable, " +
            std::to_string(rounds[r].walkways.size()) + " walkway(s)";
     for (const RoomAction& a : rounds[r].actions) {
       out += "; " + a.room + ": " + std::string(ActionKindName(a.result.action.kind)) + " " + a.result.action.id + " (" +
@@ -235,9 +434,11 @@ nlohmann::ordered_json FeedbackSummary::ToJson() const {
   j["acc_before"] = std::round(first.Acc() * 1e4) / 1e4;
   j["rooms_reachable_before"] = first.rooms_reachable;
   j["zones_reachable_before"] = first.zones_reachable;
+  j["last_resort"] = {{"moved", moved}, {"removed", removed}};
   j["rounds"] = nlohmann::ordered_json::array();
   for (const FeedbackRound& r : rounds) {
     nlohmann::ordered_json jr;
+    jr["stage"] = r.stage;
     jr["unreachable"] = r.unreachable;
     jr["walkways"] = nlohmann::ordered_json::array();
     for (const Walkway& w : r.walkways)

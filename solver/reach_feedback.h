@@ -12,6 +12,7 @@
 // walkway; the owner's own place becomes a keep-out instead (a "spot"), so the owner is moved to a free
 // slot or, failing that, removed. Zones of a room that cannot be entered wait until it can.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ struct ReachFeedbackOptions {
   ReachOptions reach;
   int rounds = 3;                // check, lay walkways, let the agents act; then a last check. [0, 20]
   double walkway_margin = 0.05;  // m beyond the radius on each side of a walkway, [0, 0.5]
+  // The last resort, once the rounds are spent: the owner of a zone still unreachable in a room a person
+  // enters moves to the nearest free slot whose zone a reached cell touches; failing that (and for what
+  // still blocks a room) it is removed, unless only a door leaf is in the way (the building's to mend).
+  bool last_resort = true;
+  double slot_step = 0.1;        // m between the slots tried (along walls, over the floor), [0.02, 1]
+  int slot_tries = 1000;         // slots checked against the room's hard constraints per object, [1, 100000]
   bool IsValid(std::string* message) const;
 };
 
@@ -46,6 +53,9 @@ struct RoomAction {
 };
 
 struct FeedbackRound {
+  // "walkways" (the rounds), "move" (the last resort's moves to slots with a reachable zone, and the
+  // removals of what blocks a room), "remove" (owners of zones still unreachable after the moves).
+  std::string stage = "walkways";
   std::vector<std::string> unreachable;  // targets unreachable when the round began
   std::vector<Walkway> walkways;
   std::vector<RoomAction> actions;       // what the rooms' agents did
@@ -56,13 +66,15 @@ struct FeedbackSummary {
   std::string reason;               // one line: how it ended
   std::vector<FeedbackRound> rounds;
   ReachReport first;                // before any action
+  int moved = 0;                    // the last resort: owners moved to a slot with a reachable zone
+  int removed = 0;                  // the last resort: objects removed (with what stood on them)
   ReachReport last;                 // after the last round
   double seconds = 0.0;
 
   std::string BriefReport() const;
   // {"all_reachable", "reason", "rch_before", "acc_before", "rooms_reachable_before",
-  // "zones_reachable_before", "rounds": [{"unreachable", "walkways",
-  // "actions": [{"room", ...action result}]}]}
+  // "zones_reachable_before", "last_resort": {"moved", "removed"}, "rounds": [{"stage", "unreachable",
+  // "walkways", "actions": [{"room", ...action result}]}]}
   nlohmann::ordered_json ToJson() const;
 };
 
@@ -70,6 +82,8 @@ struct FeedbackSummary {
 // coverings marked, each V_int object's zone (its own or its asset's) with whether objects allowed in it
 // stand there.
 std::vector<ReachObject> ReachObjectsOf(const RoomSolution& solution, const std::string& room, int level);
+// The zone an object keeps free: its own, else its asset's when it is an interactor; none when hung.
+std::optional<InteractionZone> ZoneOf(const ProblemObject& object);
 
 // Runs the loop on a building: `building` is BuildingReachInput's (no objects yet); `solvers` the rooms'
 // initialised solvers by room name (rooms without one hold no objects and are never changed). The

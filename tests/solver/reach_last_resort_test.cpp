@@ -1,0 +1,155 @@
+// The reachability loop's last resort (solver/reach_feedback.h): a zone the bare building leaves no floor
+// for is moved to a slot a person can step up to, and a small dining room whose table and chairs close the
+// way in ends with the room and every chair that is left reachable, checked through the reach API.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fixtures.h"
+#include "reach_checks.h"
+#include "solver/free_space.h"
+#include "solver/reach_feedback.h"
+
+namespace villa::solver {
+namespace {
+
+using namespace fixtures;
+
+// house_one_floor.json's bedroom (0, 5)-(5, 9), its free floor inside the walls; its door is in the south
+// wall at x 1.5-2.5 (the problem does not know it, as a careless plan would not).
+const Ring kBedroomFloor = {{0.25, 5.06}, {4.94, 5.06}, {4.94, 8.75}, {0.25, 8.75}};
+
+ActionResult Put(RoomSolver& solver, const std::string& id, double x, double y, double yaw) {
+  Action a;
+  a.kind = ActionKind::kUpdatePose;
+  a.id = id;
+  a.pose = Pose{x, y, std::nan(""), yaw, 1.0};
+  return solver.Apply(a);
+}
+
+bool Removed(const RoomSolution& s, const std::string& id) {
+  return std::find(s.summary.removed.begin(), s.summary.removed.end(), id) != s.summary.removed.end();
+}
+
+TEST_CASE("a zone planned where the bare building leaves no floor is moved where a person reaches it", "[reach]") {
+  Built built = BuildFixture("house_one_floor.json");
+  // A partition 5 cm thick, 0.3 m in front of the bedroom's north wall from its west wall to x = 1.6: the slot
+  // behind it is too narrow for the person (0.3 m < 0.4 m), so nothing in it is reached, furnished or not.
+  const Ring partition = {{0.25, 8.40}, {1.6, 8.40}, {1.6, 8.45}, {0.25, 8.45}};
+  ReachObstacle wall;
+  wall.name = "partition";
+  wall.kind = ObstacleKind::kWall;
+  wall.level = 0;
+  wall.pieces = {partition};
+  wall.z0 = built.input.levels[0].floor_z - 0.05;
+  wall.z1 = built.input.levels[0].floor_z + 2.6;
+  built.input.obstacles.push_back(wall);
+
+  RoomProblem problem = WithFloor(kBedroomFloor);
+  problem.room = "bedroom_0/0";
+  problem.keep_outs.push_back({partition, problem.floor_z, problem.floor_z + 2.6, KeepOutKind::kOther, "partition"});
+  ProblemObject stool = BoxObject("stool-0", 0.2, 0.2, 0.45);
+  stool.zone = InteractionZone{"front", 0.3, {}};
+  problem.objects.push_back(stool);
+  RoomSolver solver(problem, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  // In the slot, facing along it (+x): its zone lies 0.7 m inside the slot's mouth.
+  const ActionResult put = Put(solver, "r/stool-0", 0.6, 8.6, std::numbers::pi / 2.0);
+  INFO(put.message);
+  REQUIRE(put.status == ActionStatus::kApplied);
+
+  SECTION("without the last resort the zone stays unreachable: nothing in the way can be moved") {
+    ReachFeedbackOptions options;
+    options.last_resort = false;
+    auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, options);
+    REQUIRE(summary.ok());
+    const TargetResult* zone = summary->last.Find("r/stool-0");
+    REQUIRE(zone);
+    CHECK_FALSE(zone->reachable);
+    CHECK(zone->structural);
+  }
+  SECTION("with it the stool moves (it is not removed) and its zone is reached") {
+    auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
+    REQUIRE(summary.ok());
+    INFO(summary->BriefReport() << summary->last.BriefReport());
+    const TargetResult* before = summary->first.Find("r/stool-0");
+    REQUIRE(before);
+    CHECK_FALSE(before->reachable);
+    CHECK(before->structural);
+    CHECK(summary->all_reachable);
+    CHECK(summary->moved == 1);
+    CHECK(summary->removed == 0);
+    const TargetResult* after = summary->last.Find("r/stool-0");
+    REQUIRE(after);
+    CHECK(after->reachable);
+    CHECK(after->share > 0.0);
+    const RoomSolution s = solver.Solution();
+    CHECK_FALSE(Removed(s, "r/stool-0"));
+    // It keeps clear of the partition (the room's keep-out), and the record names the stage.
+    const OrientedBox box = StandingBox(s.objects[0], s.placements[0].pose);
+    INFO("stool at " << box.c.x << ", " << box.c.y);
+    CHECK(PlanClearance(PlanShape::Polygon(box.Footprint()), PlanShape::Polygon(partition)) >= 0.0);
+    const auto json = summary->ToJson();
+    CHECK(json["last_resort"]["moved"] == 1);
+    CHECK(json["rounds"].back()["stage"] == "move");
+  }
+}
+
+TEST_CASE("a small dining room whose table and chairs close the way to its door is reachable after the loop", "[reach]") {
+  const Built built = BuildFixture("house_one_floor.json");
+  RoomProblem problem = WithFloor(kBedroomFloor);
+  problem.room = "bedroom_0/0";
+  problem.objects.push_back(TableObject("table-0", 1.2, 0.8, 0.75));
+  const std::vector<std::string> chairs = {"r/chair-0", "r/chair-1", "r/chair-2", "r/chair-3"};
+  for (const std::string& id : chairs) {
+    ProblemObject chair = BoxObject(id.substr(2), 0.45, 0.45, 0.9);
+    chair.zone = InteractionZone{"front", 0.5, {"r/table-0"}};
+    problem.objects.push_back(chair);
+  }
+  RoomSolver solver(problem, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  // Park the chairs, then the table in front of the door (x 1.5-2.5 on the south wall) and the chairs at its
+  // long sides, the two on the south side across the doorway.
+  for (size_t k = 0; k < chairs.size(); ++k) Put(solver, chairs[k], 0.6 + 0.7 * k, 8.3, 0.0);
+  REQUIRE(Put(solver, "r/table-0", 2.0, 5.95, 0.0).status == ActionStatus::kApplied);
+  const double pi = std::numbers::pi;
+  const double south = 5.95 - 0.4 - 0.05 - 0.225, north = 5.95 + 0.4 + 0.05 + 0.225;
+  const double at[4][3] = {{1.7, south, pi}, {2.3, south, pi}, {1.7, north, 0.0}, {2.3, north, 0.0}};
+  for (size_t k = 0; k < chairs.size(); ++k) {
+    const ActionResult r = Put(solver, chairs[k], at[k][0], at[k][1], at[k][2]);
+    INFO(chairs[k] << ": " << r.message);
+    REQUIRE(r.status != ActionStatus::kRefused);
+  }
+
+  auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
+  REQUIRE(summary.ok());
+  INFO(summary->BriefReport() << summary->last.BriefReport());
+  const TargetResult* before = summary->first.Find("bedroom_0/0");
+  REQUIRE(before);
+  CHECK_FALSE(before->reachable);
+  CHECK_FALSE(before->blockers.empty());
+  // After: the room, and the zone of every chair still there, reached; the table is never removed.
+  CHECK(summary->all_reachable);
+  const TargetResult* room = summary->last.Find("bedroom_0/0");
+  REQUIRE(room);
+  CHECK(room->reachable);
+  const RoomSolution s = solver.Solution();
+  CHECK_FALSE(Removed(s, "r/table-0"));
+  int kept = 0;
+  for (const std::string& id : chairs) {
+    if (Removed(s, id)) continue;
+    ++kept;
+    const TargetResult* zone = summary->last.Find(id);
+    REQUIRE(zone);
+    CHECK(zone->reachable);
+  }
+  CHECK(kept + summary->removed >= static_cast<int>(chairs.size()));
+  CHECK(kept >= 2);  // moves first: most chairs keep their place at the table or near it
+}
+
+}  // namespace
+}  // namespace villa::solver
