@@ -380,6 +380,8 @@ class Planning {
     n.wish = wish;
     n.mount = item ? item->mount : DefaultMount(info);
     if (parent >= 0) n.mount = Mount::kParent;
+    if (n.mount == Mount::kWall && info.name == "sofa" && room_.category == Category::kLivingRoom && SofaFloats())
+      n.mount = Mount::kFloor;
     n.size = SizeOf(info);
     if (item) n.hints.assign(item->hints.begin(), item->hints.end());
     const bool prompt = origin == Origin::kPrompt;
@@ -474,6 +476,19 @@ class Planning {
     const CategoryInfo* info = FindCategory(item.category);
     if (!info || !Allowed(item) || CountOf(&item) >= MaxOf(item)) return false;
     return Add(*info, &item, Origin::kPrior, -1, -1, Relation::kOnTop, false) >= 0;
+  }
+
+  // Whether a living room's sofa stands free (its back to the room, facing the TV on its wall): the TV
+  // stand is 2-3 m in front of the sofa (priors.cpp), so with both against opposite walls the room must be
+  // 3.4-4.4 m across (sofa and stand depths and their wall gaps included). A room deeper than that both
+  // ways (or too narrow one way and too deep the other) lets the sofa float, as a designer would.
+  bool SofaFloats() const {
+    constexpr double kAcrossMin = 3.4, kAcrossMax = 4.4;  // m wall to wall
+    if (room_.free_floor.empty()) return false;
+    const Box2 box = BoundingBox(room_.free_floor.front());
+    const double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
+    const auto fits = [&](double d) { return d >= kAcrossMin && d <= kAcrossMax; };
+    return !fits(w) && !fits(h) && std::max(w, h) > kAcrossMax;
   }
 
   // ---- the steps
