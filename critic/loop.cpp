@@ -152,7 +152,15 @@ struct LoopState {
   solver::CriticFigures figures;
   std::string stopped;
   int kept_round = 0;  // the model critic went back to this round's arrangement (0: it did not)
+  // The offline critic's best arrangement seen (fewest unmet relations, physically clean): an undo the
+  // solver had to repair (shift) can leave a room worse than before the attempt; the loop ends on the best.
+  std::shared_ptr<const solver::RoomSolver::Snapshot> best_room;
+  Unmet best_unmet;
+  bool back_to_best = false;
 };
+
+// Notes the session's arrangement as the best seen when it is physically clean with fewer unmet relations.
+void NoteBest(LoopState& st);
 
 RoomRelations Measure(const LoopState& st, const solver::RoomSolution& s) { return MeasureRelations(s.objects, s.placements, st.graph); }
 
@@ -165,7 +173,26 @@ void LogViews(RoundLog& log, const std::vector<solver::RoomViewImage>& views, st
   }
 }
 
+void NoteBest(LoopState& st) {
+  const solver::RoomSolution now = st.session.Solution();
+  if (HardTrouble(now)) return;
+  const Unmet u = UnmetOf(Measure(st, now));
+  if (st.best_room && !(u < st.best_unmet)) return;
+  st.best_room = st.session.Save();
+  st.best_unmet = u;
+}
+
+// Ends the offline rounds on the best arrangement seen, when the present one is worse.
+void BackToBest(LoopState& st) {
+  if (!st.best_room) return;
+  const solver::RoomSolution now = st.session.Solution();
+  if (!HardTrouble(now) && !(st.best_unmet < UnmetOf(Measure(st, now)))) return;
+  st.session.Restore(*st.best_room);
+  st.back_to_best = true;
+}
+
 void OfflineRounds(LoopState& st) {
+  NoteBest(st);
   std::set<std::string> given_up;
   double best_score = -1.0;
   int tries = 0;
@@ -265,6 +292,7 @@ void OfflineRounds(LoopState& st) {
       }
       entry["kept"] = helped;
       kept += helped;
+      NoteBest(st);
       if (!helped) {
         given_up.insert(attempt.problem);
         escalating = escalating || attempt.problem.find(" [group]") == std::string::npos;
@@ -566,7 +594,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
   solver::RoomSolver& session = input.session ? *input.session : *own;
   const auto start = Clock::now();
 
-  LoopState st{input, options, session, {}, {}, Json::array(), {}, {}, ""};
+  LoopState st{input, options, session, {}, {}, Json::array(), {}, {}, "", 0, nullptr, {}, false};
   // The graph's edges between objects the solver was given (edges of objects dropped before solving are
   // no critic's business).
   for (const scene::SemanticEdge& e : *input.edges)
@@ -587,6 +615,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
 
   if (options.kind == CriticKind::kOffline) {
     OfflineRounds(st);
+    BackToBest(st);
   } else if (options.kind == CriticKind::kMllm) {
     if (Status s = ModelRounds(st); !s.ok()) return Error{input.problem->room + ": critic: " + s.error()};
   }
@@ -615,6 +644,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
               {"relations_before", RelationsJson(before)},
               {"relations_after", RelationsJson(after)}};
   if (st.kept_round > 0) record["kept_round"] = st.kept_round;
+  if (st.back_to_best) record["back_to_best"] = true;  // the offline rounds ended worse than their best
   if (!st.log_errors.empty()) record["log_errors"] = st.log_errors;
   if (!st.room_log.empty()) {
     std::error_code ec;

@@ -114,7 +114,8 @@ TEST_CASE("The model critic's requests carry five PNG views as data URIs, the st
     CHECK(parts[0]["type"] == "text");
     // The text state names the objects and the measured relations.
     const std::string text = parts[0]["text"].get<std::string>();
-    CHECK(text.find("sofa-0: sofa; against_wall wall") != std::string::npos);
+    CHECK(text.find("sofa-0: sofa; ontop floor") != std::string::npos);  // it stands free in this deep room
+    CHECK(text.find("tv-stand-0: tv-stand; against_wall wall") != std::string::npos);
     CHECK(text.find("relations of the graph") != std::string::npos);
     int images = 0;
     for (const Json& part : parts)
