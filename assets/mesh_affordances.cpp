@@ -4,7 +4,7 @@
 #include <cmath>
 #include <deque>
 
-#include "assets/ray_caster.h"
+#include "mesh/ray_caster.h"
 
 namespace villa {
 namespace {

@@ -18,11 +18,10 @@
 #include <vector>
 
 #include "assets/procedural.h"
+#include "bench/support/villas.h"
 #include "critic/critic.h"
 #include "critic/relations.h"
 #include "layout/geometry.h"
-#include "layout/layout_io.h"
-#include "partitioner/dataset.h"
 #include "scene/acquire.h"
 #include "solver/furnish.h"
 #include "util/text_table.h"
@@ -33,11 +32,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kPaperSecondsPerRoom = 15.0 * 60.0;
-
-struct Villa {
-  std::string name;
-  Layout layout;
-};
 
 struct Tally {
   int rooms = 0, converged = 0, clean = 0, objects = 0, colliding = 0, floating = 0, consumers = 0, out = 0, inside = 0,
@@ -85,37 +79,6 @@ std::string ShapeOf(const Ring& polygon) {
   return IsConvex(ring) ? "rectangle" : "L / non-convex";
 }
 
-std::vector<Villa> Examples() {
-  std::vector<Villa> out;
-  for (const char* name : {"l-shaped-house", "two-floor-house", "three-floor-villa", "u-shaped-bungalow"}) {
-    auto layout = LoadLayout(std::string(VILLA_SOURCE_DIR) + "/examples/" + name + ".json");
-    if (!layout.ok()) {
-      std::fprintf(stderr, "%s\n", layout.error().c_str());
-      std::exit(1);
-    }
-    out.push_back({std::string("examples/") + name, *layout});
-  }
-  return out;
-}
-
-std::vector<Villa> Synthesized(uint64_t count, uint64_t seed) {
-  SynthOptions options;
-  options.count = count;
-  options.seed = seed;
-  std::vector<Villa> out;
-  std::vector<std::string> failures;
-  SynthesizeShard(
-      options,
-      [&](const std::string& line) {
-        const Json record = Json::parse(line);
-        auto layout = LayoutFromJson(record["layout"], record["id"].get<std::string>());
-        if (layout.ok()) out.push_back({record["id"].get<std::string>(), *layout});
-      },
-      [](std::size_t) {}, &failures);
-  for (const std::string& f : failures) std::fprintf(stderr, "synth: %s\n", f.c_str());
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -152,8 +115,7 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(seed), critic_name.c_str(),
               library_dir.empty() ? "procedural only" : ("library " + library_dir + " (" +
                                                          std::to_string(library->library->records().size()) + " records)").c_str());
-  std::vector<Villa> all = Examples();
-  for (Villa& v : Synthesized(villas, seed)) all.push_back(std::move(v));
+  const std::vector<bench::BenchVilla> all = bench::BenchVillas(villas, seed);
 
   std::map<std::string, Tally> by_type, by_shape, by_count;
   Tally total, rich, small_bath;
@@ -163,7 +125,7 @@ int main(int argc, char** argv) {
   critic::RelationTally before, after;
   std::vector<double> critic_seconds;
   int critic_removed = 0;
-  for (const Villa& v : all) {
+  for (const bench::BenchVilla& v : all) {
     solver::FurnishOptions options;
     options.jobs = 1;
     options.seed = seed;

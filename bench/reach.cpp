@@ -17,9 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/support/villas.h"
 #include "building/building.h"
-#include "layout/layout_io.h"
-#include "partitioner/dataset.h"
 #include "scene/acquire.h"
 #include "solver/furnish.h"
 #include "solver/reach.h"
@@ -33,38 +32,6 @@ double ThreadSeconds() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
-
-struct Villa {
-  std::string name;
-  Layout layout;
-};
-
-std::vector<Villa> Villas(uint64_t count, uint64_t seed) {
-  std::vector<Villa> out;
-  for (const char* name : {"l-shaped-house", "two-floor-house", "three-floor-villa", "u-shaped-bungalow"}) {
-    auto layout = LoadLayout(std::string(VILLA_SOURCE_DIR) + "/examples/" + name + ".json");
-    if (!layout.ok()) {
-      std::fprintf(stderr, "%s\n", layout.error().c_str());
-      std::exit(1);
-    }
-    out.push_back({std::string("examples/") + name, *layout});
-  }
-  SynthOptions options;
-  options.count = count;
-  options.seed = seed;
-  std::vector<std::string> failures;
-  SynthesizeShard(
-      options,
-      [&](const std::string& line) {
-        // ordered: the rooms keep the order `villa synth` writes them in (the builder's choices follow it)
-        const nlohmann::ordered_json record = nlohmann::ordered_json::parse(line);
-        auto layout = LayoutFromJson(record["layout"], record["id"].get<std::string>());
-        if (layout.ok()) out.push_back({record["id"].get<std::string>(), *layout});
-      },
-      [](std::size_t) {}, &failures);
-  for (const std::string& f : failures) std::fprintf(stderr, "synth: %s\n", f.c_str());
-  return out;
 }
 
 // Level times summed over the levels checked.
@@ -86,13 +53,13 @@ struct LevelTimes {
   }
 };
 
-void Bare(const std::vector<Villa>& villas, const solver::ReachOptions& options, bool verbose) {
+void Bare(const std::vector<bench::BenchVilla>& villas, const solver::ReachOptions& options, bool verbose) {
   int rooms = 0, reached = 0, paths = 0, structural = 0, leaves = 0, stair_caused = 0;
   double cpu = 0.0, worst = 0.0;
   LevelTimes times;
   std::printf("\n1. bare buildings (no furniture), radius %.2f m, cells %.0f mm; thread CPU seconds\n", options.radius,
               options.cell * 1000);
-  for (const Villa& v : villas) {
+  for (const bench::BenchVilla& v : villas) {
     const BuildOptions build;
     auto building = BuildBuilding(v.layout, build);
     if (!building.ok()) {
@@ -148,7 +115,7 @@ void Bare(const std::vector<Villa>& villas, const solver::ReachOptions& options,
   std::printf("  per villa: %.3f s CPU (worst %.3f s)\n", cpu / std::max<size_t>(1, villas.size()), worst);
 }
 
-void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::ReachOptions& reach, bool verbose) {
+void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, const solver::ReachOptions& reach, bool verbose) {
   auto library = scene::OpenFurnishingLibrary("", true);
   if (!library.ok()) {
     std::fprintf(stderr, "%s\n", library.error().c_str());
@@ -163,7 +130,7 @@ void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::Re
   double share_sum = 0.0;  // ACC: the zones' reachable shares, summed
   double seconds = 0.0, worst = 0.0, furnish_seconds = 0.0;
   LevelTimes times;
-  for (const Villa& v : villas) {
+  for (const bench::BenchVilla& v : villas) {
     solver::FurnishOptions options;
     options.jobs = 1;
     options.seed = seed;
@@ -212,7 +179,11 @@ void Furnished(const std::vector<Villa>& villas, uint64_t seed, const solver::Re
                                   : t["blockers"].empty()     ? "door leaves"
                                                               : "furniture";
         ++(std::string(kind) == "rooms" ? rooms_by_cause : zones_by_cause)[cause];
-        line += " " + t[std::string(kind) == "rooms" ? "room" : "object"].get<std::string>() + " (" + cause + ")";
+        line += ' ';
+        line += t[std::string(kind) == "rooms" ? "room" : "object"].get<std::string>();
+        line += " (";
+        line += cause;
+        line += ')';
       }
     }
     if (verbose && !line.empty()) std::printf("  %s:%s\n", v.name.c_str(), line.c_str());
@@ -267,7 +238,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "villa_bench_reach: %s\n", message.c_str());
     return 2;
   }
-  const std::vector<Villa> villas = Villas(count, seed);
+  const std::vector<bench::BenchVilla> villas = bench::BenchVillas(count, seed);
   std::printf("reach: the 4 examples and the %llu villas of `villa synth --count %llu --seed %llu`\n",
               static_cast<unsigned long long>(count), static_cast<unsigned long long>(count),
               static_cast<unsigned long long>(seed));

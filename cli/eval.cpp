@@ -18,6 +18,7 @@
 #include "layout/layout_io.h"
 #include "util/progress.h"
 #ifdef VILLA_HAVE_FURNISH
+#include "cli/furnish_flags.h"
 #include "generator/scene_eval.h"
 #endif
 
@@ -37,9 +38,11 @@ struct EvalCommand {
   bool scenes = false;
   int scenes_per_layout = 3;
   std::vector<std::string> glbs, scene_files, layout_files;
-  std::string library;
-  bool procedural_only = false;
+  std::string keep;
   PlanOptions options;
+#ifdef VILLA_HAVE_FURNISH
+  solver::FurnishOptions furnish;  // --library, --procedural, --no-reach, --radius (cli/furnish_flags.h)
+#endif
 };
 
 void Print(const std::string& text) { std::cout << text; }
@@ -59,7 +62,7 @@ void RunGlb(const EvalCommand& command) {
     solver::GlbMetricsOptions o;
     if (!command.scene_files.empty()) o.scene = command.scene_files[i];
     if (!command.layout_files.empty()) o.layout = command.layout_files[i];
-    o.library = command.library;
+    o.library = command.furnish.library;
     for (const std::string& path : {o.scene.string(), o.layout.string(), command.glbs[i]})
       if (!path.empty() && !std::filesystem::exists(path)) throw UsageError(path + ": no such file");
     auto measured = solver::MeasureFurnishedGlb(command.glbs[i], o);
@@ -101,7 +104,10 @@ void RunGlb(const EvalCommand& command) {
 }
 
 void RunScenes(EvalCommand& command) {
-  if (!command.glbs.empty()) return RunGlb(command);
+  if (!command.glbs.empty()) {
+    if (!command.keep.empty()) throw UsageError("eval: --keep keeps the scenes --scenes furnishes; --glb furnishes none");
+    return RunGlb(command);
+  }
   if (!command.scene_files.empty() || !command.layout_files.empty())
     throw UsageError("eval: --scene and --layout go with --glb");
   if (command.inputs.empty()) throw UsageError("eval: --scenes needs request files (JSONL) or layouts, or --glb FILE");
@@ -113,10 +119,17 @@ void RunScenes(EvalCommand& command) {
   SceneEvalOptions options;
   options.plan = command.options;
   options.scenes_per_layout = command.scenes_per_layout;
+  options.furnish = command.furnish;
   options.furnish.jobs = command.jobs;
-  options.furnish.library = command.library;
-  options.furnish.procedural_only = command.procedural_only;
   if (std::string problem = options.Check(); !problem.empty()) throw UsageError("eval: " + problem);
+  if (!command.keep.empty()) {
+    // Kept scenes never replace anything: a new or empty folder.
+    std::error_code ec;
+    if (std::filesystem::exists(command.keep, ec) &&
+        (!std::filesystem::is_directory(command.keep, ec) || !std::filesystem::is_empty(command.keep, ec)))
+      throw UsageError("eval: --keep " + command.keep + ": not a new or empty folder (nothing in it is replaced)");
+    options.keep = command.keep;
+  }
   std::unique_ptr<ProgressBar> bar;
   options.on_start = [&](size_t scenes) { bar = std::make_unique<ProgressBar>("scenes", scenes); };
   options.on_scene_done = [&] { bar->Advance(); };
@@ -151,6 +164,7 @@ void Run(EvalCommand& command) {
 #endif
   }
   if (!command.glbs.empty()) throw UsageError("eval: --glb goes with --scenes");
+  if (!command.keep.empty()) throw UsageError("eval: --keep goes with --scenes");
   if (command.markdown) throw UsageError("eval: --markdown goes with --scenes");
   if (command.inputs.size() != 1) throw UsageError("eval: give one JSONL file of requests");
   EvalOptions options;
@@ -208,8 +222,12 @@ Registration registration{55, [](CLI::App& app) {
   sub->add_option("--glb", command->glbs, "with --scenes: score this furnished .glb (repeatable)");
   sub->add_option("--scene", command->scene_files, "with --glb: its scene.json (repeatable, one per --glb)");
   sub->add_option("--layout", command->layout_files, "with --glb: its layout (repeatable, one per --glb)");
-  sub->add_option("--library", command->library, "with --scenes: the asset library folder (default: the installed one)");
-  sub->add_flag("--procedural", command->procedural_only, "with --scenes: procedural assets only");
+  sub->add_option("--keep", command->keep,
+                  "with --scenes: keep each scene's layout.json, scene.json, furnished.glb, report.json and CREDITS in "
+                  "DIR/<NNN-request>/<seed>/ (a new or empty folder)");
+#ifdef VILLA_HAVE_FURNISH
+  AddFurnishFlags(sub, command->furnish, {.seed = false, .jobs = false, .reach = true, .scope = "with --scenes: "});
+#endif
   sub->callback([command] { Run(*command); });
 }};
 

@@ -10,6 +10,7 @@
 
 #include "cli/command.h"
 #include "cli/flags.h"
+#include "cli/furnish_flags.h"
 #include "cli/embedding_flags.h"
 #include "critic/critic.h"
 #include "critic/graph_planner.h"
@@ -135,24 +136,9 @@ Registration registration{75, [](CLI::App& app) {
   sub->add_option("--text", o.text,
                   "the request: \"a cosy living room with two armchairs and bookshelves full of books; a desk by the "
                   "window in the office\" (objects are bound to the rooms the text names)");
-  sub->add_option("--seed", o.seed, "seed of every random choice (plans, procedural assets, solver)")
-      ->capture_default_str()
-      ->transform(Seed());
-  sub->add_option("--jobs", o.jobs, "rooms furnished at once (0: one per hardware thread)")
-      ->capture_default_str()
-      ->transform(WholeIn(0, 256));
-  sub->add_option("--library", o.library,
-                  "asset library folder (default: $VILLA_ASSETS, else ~/.local/share/villa/assets when installed, else "
-                  "procedural assets only)");
-  sub->add_flag("--procedural", o.procedural_only, "procedural assets only, whatever library is installed");
+  AddFurnishFlags(sub, o, {.seed = true, .jobs = true, .reach = true, .scope = ""});
   sub->add_flag("--force", o.force, "overwrite the files of an earlier run in DIR");
   sub->add_flag("--allow-invalid", o.allow_invalid, "furnish even when the layout breaks the geometric rules 1-5");
-  sub->add_flag("--no-reach", [&o](std::int64_t) { o.check_reach = false; },
-                "skip reachability (a person walking from the entrance to every room and interaction zone, and the "
-                "feedback that clears what furniture blocks); RCH and ACC are then not measured");
-  sub->add_option("--radius", o.reach.reach.radius, "the person's radius for reachability, m")
-      ->capture_default_str()
-      ->check(NumberIn(0.0, 2.0, /*above_min=*/true));
   critic::CriticOptions& c = command->critic_options;
   sub->add_option("--critic", command->critic, "offline (default: geometric, no server), mllm (a multimodal model) or none")
       ->check(CLI::IsMember({"offline", "mllm", "none"}));

@@ -9,7 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
-#include "cli/flags.h"
+#include "cli/furnish_flags.h"
 #include "generator/generate.h"
 #include "util/progress.h"
 
@@ -91,13 +91,7 @@ Registration registration{65, [](CLI::App& app) {
   sub->add_option("text", command->text, "the request, in English (\"-\" reads it from stdin)")->required();
   sub->add_option("-o,--out", command->out, "output folder (created if missing)")->required();
   AddBackendFlags(sub, command->backend, command->api_key_env, command->options);
-  sub->add_option("--jobs", f.jobs, "rooms furnished at once (0: one per hardware thread)")
-      ->capture_default_str()
-      ->transform(WholeIn(0, 256));
-  sub->add_option("--library", f.library,
-                  "asset library folder (default: $VILLA_ASSETS, else ~/.local/share/villa/assets when installed, else "
-                  "procedural assets only)");
-  sub->add_flag("--procedural", f.procedural_only, "procedural assets only, whatever library is installed");
+  AddFurnishFlags(sub, f);
   sub->add_flag("--no-furnish", command->no_furnish, "plan and build only (building.glb, no furniture)");
   sub->add_flag("--force", command->force, "overwrite existing output files in OUTDIR");
   sub->add_flag("-q,--quiet", command->quiet, "print nothing on success");

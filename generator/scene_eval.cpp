@@ -1,6 +1,7 @@
 #include "generator/scene_eval.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -10,6 +11,7 @@
 #include "layout/layout_io.h"
 #include "scene/acquire.h"
 #include "scene/file_digest.h"
+#include "util/atomic_file.h"
 #include "util/text_table.h"
 
 namespace villa {
@@ -254,6 +256,43 @@ std::string SceneEvalOptions::Check() const {
   return furnish.Check();
 }
 
+std::string KeptLayoutName(size_t index, const std::string& id) {
+  std::string number = std::to_string(index + 1);
+  if (number.size() < 3) number.insert(0, 3 - number.size(), '0');
+  // A layout file's id is its path: its file name is what tells it apart.
+  const std::string base = id.substr(id.find_last_of('/') == std::string::npos ? 0 : id.find_last_of('/') + 1);
+  std::string name;
+  for (char c : base.substr(0, 60))
+    name += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c : '_';
+  return number + "-" + name;
+}
+
+namespace {
+
+// One scene's outputs under keep/<layout>/<seed>/: written into keep/<layout>/.<seed>.partial, then that
+// folder renamed into place (a crash leaves at most a hidden .partial folder, never a half scene).
+Status KeepScene(const fs::path& keep, const std::string& layout_name, uint64_t seed, const std::string& layout_text,
+                 const solver::FurnishedVilla& villa, const solver::FurnishOptions& furnish) {
+  const fs::path parent = keep / layout_name, final_dir = parent / std::to_string(seed);
+  const fs::path partial = parent / ("." + std::to_string(seed) + ".partial");
+  std::error_code ec;
+  if (fs::exists(final_dir, ec)) return Error{final_dir.string() + ": already there; not replaced"};
+  fs::remove_all(partial, ec);  // our own leftover of an interrupted run
+  fs::create_directories(partial, ec);
+  if (ec) return Error{partial.string() + ": cannot create the folder: " + ec.message()};
+  solver::FurnishOptions options = furnish;
+  options.pictures = false;
+  options.force = false;
+  auto written = solver::WriteFurnishedVilla(villa, partial, options);
+  if (!written.ok()) return Error{written.error()};
+  if (Status s = WriteFileAtomic(partial / "layout.json", layout_text); !s) return s;
+  fs::rename(partial, final_dir, ec);
+  if (ec) return Error{final_dir.string() + ": cannot move the scene's folder into place: " + ec.message()};
+  return Status::Ok();
+}
+
+}  // namespace
+
 Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& requests, const SceneEvalOptions& options) {
   const auto start = Clock::now();
   if (std::string problem = options.Check(); !problem.empty()) return Error{"usage: " + problem};
@@ -261,6 +300,7 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
   if (!library.ok()) return Error{library.error()};
   SceneEvalSummary summary;
   summary.library_note = library->note;
+  summary.kept_in = options.keep.string();
   const int k = options.scenes_per_layout;
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   summary.jobs = options.furnish.jobs > 0 ? options.furnish.jobs : static_cast<int>(hardware);
@@ -306,6 +346,11 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
         auto villa = solver::FurnishLayout(*layout, {request.id, scene::Sha256Hex(layout_text)}, library->library,
                                            library->file, furnish);
         summary.furnish_seconds += Since(t);
+        if (villa.ok() && !options.keep.empty()) {
+          if (Status kept = KeepScene(options.keep, KeptLayoutName(i, request.id), scene.seed, layout_text, *villa, furnish); !kept)
+            return Error{"--keep: " + kept.error()};
+          ++summary.kept;
+        }
         if (villa.ok()) {
           scene.summary = villa->summary;
           std::vector<RoomScore> rooms = RoomScoresOf(*villa, scene.layout, s);
@@ -409,6 +454,7 @@ std::string TimesLine(const SceneEvalSummary& s) {
   out += s.reach_measured ? "RCH and ACC measured by the reachability check\n"
                           : "RCH and ACC not measured: no reachability check is plugged in\n";
   if (!s.library_note.empty()) out += "assets: " + s.library_note + "\n";
+  if (!s.kept_in.empty()) out += "kept: " + std::to_string(s.kept) + " scene folder(s) in " + s.kept_in + "\n";
   return out;
 }
 
@@ -509,6 +555,7 @@ Json SceneEvalJson(const SceneEvalSummary& s) {
                      {"brief_adherence", ratio(s.adherence)}}},
           {"reach", s.reach_measured ? "measured" : "not measured"},
           {"library", s.library_note},
+          {"kept", s.kept},
           {"seconds", {{"total", Round4(s.seconds)}, {"plan", Round4(s.plan_seconds)}, {"furnish", Round4(s.furnish_seconds)},
                        {"room_seconds", Round4(s.room_seconds)}, {"rooms", s.furnished_rooms},
                        {"per_room", Round4(t.room)}, {"per_villa", Round4(t.villa)}, {"jobs", s.jobs},

@@ -90,6 +90,11 @@ struct SceneEvalOptions {
   // and its seed plan.seed + i + k for scene k of request i.
   solver::FurnishOptions furnish;
   int scenes_per_layout = 3;  // [1, 100]
+  // Where each scene's outputs are kept ("" = nowhere): keep/<layout>/<seed>/ holds layout.json,
+  // scene.json, furnished.glb, report.json and CREDITS (the files `villa furnish` writes, no pictures),
+  // written into a hidden sibling folder and renamed into place, so a scene's folder is whole or absent.
+  // <layout> is KeptLayoutName of the request; a scene folder already there is never replaced.
+  std::filesystem::path keep;
   std::function<void(size_t scenes)> on_start;  // once, with the number of scenes
   std::function<void()> on_scene_done;          // after each scene
 
@@ -125,7 +130,14 @@ struct SceneEvalSummary {
   double room_seconds = 0.0;        // summed over furnished rooms (plan + acquire + solve), as on one core
   int furnished_rooms = 0;          // room furnishings behind room_seconds
   int jobs = 0;
+  int kept = 0;                     // scene folders written under options.keep
+  std::string kept_in;              // options.keep ("" = none)
 };
+
+// The folder of request `index` (0-based) under --keep: "001-" and the request's id (its last path
+// component) with every character outside [A-Za-z0-9._-] as '_', cut to 60 characters ("001-cottage",
+// "002-two-floor-house.json").
+std::string KeptLayoutName(size_t index, const std::string& id);
 
 // Plans, builds and furnishes every request (options checked first). Errors: bad options, a library that
 // cannot be opened; a request that gives no valid layout is reported in its LayoutResult.

@@ -1,91 +1,42 @@
 #include "render/view3d.h"
 
 #include <cairo.h>
-#include <embree3/rtcore.h>
 #include <png.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <thread>
 
+#include "mesh/ray_caster.h"
 #include "util/atomic_file.h"
 
 namespace villa {
 namespace {
 
-struct DeviceDeleter {
-  void operator()(RTCDevice d) const { rtcReleaseDevice(d); }
-};
-struct SceneDeleter {
-  void operator()(RTCScene s) const { rtcReleaseScene(s); }
-};
-
-
-struct Hit {
-  bool hit = false;
-  float t = 0.0f;
-  unsigned geom = 0;
-  unsigned prim = 0;
-};
-
-Hit Cast(RTCScene scene, Vec3 origin, Vec3 dir, float tnear, float tfar) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray.org_x = static_cast<float>(origin.x);
-  rh.ray.org_y = static_cast<float>(origin.y);
-  rh.ray.org_z = static_cast<float>(origin.z);
-  rh.ray.dir_x = static_cast<float>(dir.x);
-  rh.ray.dir_y = static_cast<float>(dir.y);
-  rh.ray.dir_z = static_cast<float>(dir.z);
-  rh.ray.tnear = tnear;
-  rh.ray.tfar = tfar;
-  rh.ray.mask = 0xFFFFFFFF;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
-  return {true, rh.ray.tfar, rh.hit.geomID, rh.hit.primID};
-}
-
 class Tracer {
  public:
   Tracer(const ViewScene& scene, const RenderOptions& options) : scene_meshes_(scene.meshes), options_(options) {
-    device_.reset(rtcNewDevice("threads=1"));
-    scene_.reset(rtcNewScene(device_.get()));
     int top = options.top_level;
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
       const ViewMesh& view = scene.meshes[i];
       if (top >= 0 && view.level > top) continue;
       if (top >= 0 && view.cut == CutAway::kRemove) continue;
       if (!view.mesh) continue;
-      const TriangleMesh& m = *view.mesh;
-      if (m.triangles.empty()) continue;
-      RTCGeometry geom = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                           3 * sizeof(float), m.vertices.size()));
-      for (size_t k = 0; k < m.vertices.size(); ++k) {
-        v[3 * k] = static_cast<float>(m.vertices[k].x);
-        v[3 * k + 1] = static_cast<float>(m.vertices[k].y);
-        v[3 * k + 2] = static_cast<float>(m.vertices[k].z);
-      }
-      auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(unsigned), m.triangles.size()));
-      for (size_t k = 0; k < m.triangles.size(); ++k)
-        for (int c = 0; c < 3; ++c) idx[3 * k + c] = static_cast<unsigned>(m.triangles[k][c]);
-      rtcCommitGeometry(geom);
-      unsigned id = rtcAttachGeometry(scene_.get(), geom);
-      rtcReleaseGeometry(geom);
-      if (id >= mesh_of_.size()) mesh_of_.resize(id + 1, -1);
+      const int id = rays_.Add(*view.mesh);
+      if (id < 0) continue;
+      if (id >= static_cast<int>(mesh_of_.size())) mesh_of_.resize(id + 1, -1);
       mesh_of_[id] = static_cast<int>(i);
     }
-    rtcCommitScene(scene_.get());
+    rays_.Commit();
     light_ = Normalized(options.light_direction);
     cut_z_ = top >= 0 ? scene.floor_z[top] + options.cut_height : std::numeric_limits<double>::infinity();
   }
 
-  bool ok() const { return device_ && scene_; }
+  bool ok() const { return rays_.ok(); }
 
   Rgb Trace(Vec3 origin, Vec3 dir) const {
     Rgb color{0, 0, 0};
@@ -93,16 +44,16 @@ class Tracer {
     float tnear = 0.0f;
     int inside = -1;  // the cut solid the ray is in, entered above the cut plane
     for (int bounce = 0; bounce < 24 && transmit > 0.01; ++bounce) {
-      Hit h = Cast(scene_.get(), origin, dir, tnear, std::numeric_limits<float>::infinity());
-      if (!h.hit) {
+      const std::optional<RayCaster::Hit> h = rays_.Cast(origin, dir, std::numeric_limits<float>::infinity(), tnear);
+      if (!h) {
         Add(color, inside >= 0 ? options_.section_color : options_.background, transmit);
         break;
       }
-      const int mesh_index = mesh_of_[h.geom];
+      const int mesh_index = mesh_of_[h->mesh];
       const ViewMesh& view = scene_meshes_[mesh_index];
-      Vec3 p = origin + dir * h.t;
-      tnear = h.t + 1e-4f;
-      Vec3 n = Normal(*view.mesh, h.prim);
+      Vec3 p = origin + dir * h->t;
+      tnear = static_cast<float>(h->t) + 1e-4f;  // t is a float widened: stepping on stays in float
+      Vec3 n = h->normal;
       bool back = Dot(n, dir) > 0.0;
       const bool glass = view.alpha < 1.0;
       // Entered a solid above the cut and now below it: the cut face is what shows. (The solid's own
@@ -143,12 +94,6 @@ class Tracer {
   }
   static Rgb Mix(Rgb c, double light) { return {c.r * light, c.g * light, c.b * light}; }
 
-  static Vec3 Normal(const TriangleMesh& mesh, unsigned prim) {
-    const auto& t = mesh.triangles[prim];
-    const auto& v = mesh.vertices;
-    return Normalized(Cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
-  }
-
   double Shade(Vec3 p, Vec3 n) const {
     double lambert = std::max(0.0, Dot(n, light_));
     if (lambert > 0.0 && options_.shadows && Occluded(p + n * 1e-3, light_)) lambert = 0.0;
@@ -158,11 +103,11 @@ class Tracer {
   bool Occluded(Vec3 origin, Vec3 dir) const {
     float tnear = 0.0f;
     for (int k = 0; k < 24; ++k) {
-      Hit h = Cast(scene_.get(), origin, dir, tnear, 1e4f);
-      if (!h.hit) return false;
-      const ViewMesh& view = scene_meshes_[mesh_of_[h.geom]];
-      Vec3 p = origin + dir * h.t;
-      tnear = h.t + 1e-4f;
+      const std::optional<RayCaster::Hit> h = rays_.Cast(origin, dir, 1e4, tnear);
+      if (!h) return false;
+      const ViewMesh& view = scene_meshes_[mesh_of_[h->mesh]];
+      Vec3 p = origin + dir * h->t;
+      tnear = static_cast<float>(h->t) + 1e-4f;
       if (view.alpha < 1.0) continue;
       if (view.cut == CutAway::kCut && p.z > cut_z_ && view.level == options_.top_level) continue;
       return true;
@@ -172,9 +117,8 @@ class Tracer {
 
   const std::vector<ViewMesh>& scene_meshes_;
   const RenderOptions& options_;
-  std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
-  std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
-  std::vector<int> mesh_of_;  // Embree geometry id -> index into scene_meshes_
+  RayCaster rays_;
+  std::vector<int> mesh_of_;  // caster mesh id -> index into scene_meshes_
   Vec3 light_;
   double cut_z_ = 0.0;
 };

@@ -109,6 +109,29 @@ std::vector<ViewLabel> Labels(const RoomViewInput& room) {
   return labels;
 }
 
+// What every picture of a room is drawn from: the box the cameras frame, the building's view scene, the
+// parts of it around the room and the room's posed objects (members built in this order).
+struct RoomStage {
+  explicit RoomStage(const RoomViewInput& room)
+      : room(room), box(RoomBox(room)), building(ViewSceneOf(*room.building)), parts(PartsAround(room, building, box)),
+        posed(PoseObjects(room)) {}
+  // The scene seen from `azimuth_deg` (-1: from above), walls on the camera's side cut.
+  ViewScene SceneFrom(double azimuth_deg) const { return SceneFor(parts, posed, building, room.level, azimuth_deg); }
+  // Cut-away at the room's level, `cut_height` m above its floor.
+  RenderOptions Render(double cut_height) const {
+    RenderOptions render;
+    render.top_level = room.level;
+    render.cut_height = cut_height;
+    return render;
+  }
+
+  const RoomViewInput& room;
+  const Box3 box;
+  const ViewScene building;
+  const RoomParts parts;
+  const PosedMeshes posed;
+};
+
 Status CheckInput(const RoomViewInput& room) {
   if (!room.building) return Error{"room view of " + room.room + ": no building given"};
   if (room.polygon.size() < 3) return Error{"room view of " + room.room + ": the room polygon has fewer than 3 corners"};
@@ -132,25 +155,19 @@ std::string RoomViewOptions::Check() const {
 Result<std::vector<RoomViewImage>> RenderRoomViews(const RoomViewInput& room, const RoomViewOptions& options) {
   if (std::string problem = options.Check(); !problem.empty()) return Error{"room views: " + problem};
   if (Status s = CheckInput(room); !s.ok()) return Error{s.error()};
-  const Box3 box = RoomBox(room);
-  const ViewScene building_scene = ViewSceneOf(*room.building);
-  const RoomParts parts = PartsAround(room, building_scene, box);
-  const PosedMeshes posed = PoseObjects(room);
+  const RoomStage stage(room);
   const std::vector<ViewLabel> labels = options.labels ? Labels(room) : std::vector<ViewLabel>{};
-  RenderOptions render;
+  RenderOptions render = stage.Render(options.cut_height);
   render.samples = options.samples;
   render.threads = options.threads;
-  render.top_level = room.level;
-  render.cut_height = options.cut_height;
   LabelStyle style;
   style.font_px = options.label_px;
 
-  std::vector<Camera> cameras = RoomCameras(box, options.size_px, options.elevation_deg);
+  std::vector<Camera> cameras = RoomCameras(stage.box, options.size_px, options.elevation_deg);
   std::vector<RoomViewImage> out;
   for (size_t v = 0; v < cameras.size(); ++v) {
     const double azimuth = v == 0 ? -1.0 : kCornerAzimuths[v - 1];
-    const ViewScene scene = SceneFor(parts, posed, building_scene, room.level, azimuth);
-    auto image = RenderView(scene, cameras[v], render);
+    auto image = RenderView(stage.SceneFrom(azimuth), cameras[v], render);
     if (!image.ok()) return Error{"room views of " + room.room + ": " + image.error()};
     if (!labels.empty())
       if (Status s = DrawLabels(*image, cameras[v], labels, style); !s.ok()) return Error{s.error()};
@@ -164,23 +181,24 @@ Result<Image> RoomPicture(const RoomViewInput& room, int panel_px) {
   options.size_px = panel_px;
   if (std::string problem = options.Check(); !problem.empty()) return Error{"room picture: " + problem};
   if (Status s = CheckInput(room); !s.ok()) return Error{s.error()};
-  const Box3 box = RoomBox(room);
-  const ViewScene building_scene = ViewSceneOf(*room.building);
-  const RoomParts parts = PartsAround(room, building_scene, box);
-  const PosedMeshes posed = PoseObjects(room);
-  RenderOptions render;
+  const RoomStage stage(room);
+  RenderOptions render = stage.Render(options.cut_height);
   render.samples = 1;
   render.threads = 0;
-  render.top_level = room.level;
-  render.cut_height = options.cut_height;
-  const Camera cameras[2] = {FramingCamera(box, 0.0, 90.0, panel_px, panel_px),
-                             FramingCamera(box, kPictureAzimuth, options.elevation_deg, panel_px, panel_px)};
+  const Camera cameras[2] = {FramingCamera(stage.box, 0.0, 90.0, panel_px, panel_px),
+                             FramingCamera(stage.box, kPictureAzimuth, options.elevation_deg, panel_px, panel_px)};
   const double azimuths[2] = {-1.0, kPictureAzimuth};
+  // The top view is lit flat: no shadows, so the walls' shadows do not lie on the floor as dark patches;
+  // every level surface then gets the same light, the floor and the tops in the tones the corner view
+  // gives them where the sun reaches. The corner view keeps its shadows: they give the room its depth.
+  RenderOptions flat = render;
+  flat.shadows = false;
+  const RenderOptions* lighting[2] = {&flat, &render};
   constexpr int kGap = 8;
   Image out{2 * panel_px + kGap, panel_px, {}};
   out.rgb.assign(size_t{3} * out.width * out.height, 255);
   for (int k = 0; k < 2; ++k) {
-    auto image = RenderView(SceneFor(parts, posed, building_scene, room.level, azimuths[k]), cameras[k], render);
+    auto image = RenderView(stage.SceneFrom(azimuths[k]), cameras[k], *lighting[k]);
     if (!image.ok()) return Error{"room picture of " + room.room + ": " + image.error()};
     for (int y = 0; y < panel_px; ++y)
       std::copy_n(image->rgb.begin() + size_t{3} * y * panel_px, size_t{3} * panel_px,

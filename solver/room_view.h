@@ -61,8 +61,9 @@ struct RoomViewImage {
 // The top view, then the four corner views, in that order.
 Result<std::vector<RoomViewImage>> RenderRoomViews(const RoomViewInput& room, const RoomViewOptions& options);
 
-// The picture `villa furnish` writes for a room: its top view beside the view from the south-west
-// corner (azimuth 315), each `panel_px` square, 8 px apart, no labels.
+// The picture `villa furnish` writes for a room: its top view (no shadows: flat-lit) beside the
+// view from the south-west corner (azimuth 315, sun and shadows), each `panel_px` square, 8 px apart, no
+// labels.
 Result<Image> RoomPicture(const RoomViewInput& room, int panel_px = 512);
 
 }  // namespace villa::solver

@@ -2118,7 +2118,10 @@ std::string BriefOneLine(const Brief& brief) {
   }
   for (const auto& c : brief.connections) {
     std::string to;
-    for (Category t : c.to) to += (to.empty() ? "" : "|") + std::string(CategoryName(t));
+    for (Category t : c.to) {
+      if (!to.empty()) to += '|';
+      to += CategoryName(t);
+    }
     std::string where = LevelText(c.level);
     parts.push_back(std::string(CategoryName(c.from)) + " -" + std::string(LinkKindName(c.kind)) + "- " + to +
                     (where.empty() ? "" : " (" + where + ")"));
@@ -2132,7 +2135,10 @@ std::string BriefOneLine(const Brief& brief) {
   for (const auto& e : brief.entrance) parts.push_back("entrance into " + std::string(CategoryName(e.category)));
   for (const auto& s : brief.sides) parts.push_back(std::string(CategoryName(s.category)) + " on the " + s.side + " side");
   std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : ", ") + p;
+  for (const auto& p : parts) {
+    if (!out.empty()) out += ", ";
+    out += p;
+  }
   return out.empty() ? "(no requirements)" : out;
 }
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "generator/scene_eval.h"
+#include "layout/layout_io.h"
 #include "test_files.h"
 #include "villa_cli.h"
 
@@ -200,4 +201,48 @@ TEST_CASE("villa eval --scenes furnishes every layout three times and prints the
   CHECK(testing::RunVilla("eval --scenes --glb " + (dir.path / "none.glb").string()).status == 2);
   CHECK(testing::RunVilla("eval --scenes " + kHouse + " --scenes-per-layout 0").status == 2);
   CHECK(testing::RunVilla("eval --glb " + kHouse).status == 2);
+}
+
+TEST_CASE("villa eval --scenes --keep DIR keeps every scene's files under DIR/<request>/<seed>/", "[generator][eval]") {
+  CHECK(KeptLayoutName(0, "cottage") == "001-cottage");
+  CHECK(KeptLayoutName(41, "/some/where/villa one.json") == "042-villa_one.json");
+  CHECK(KeptLayoutName(999, std::string(100, 'x')) == "1000-" + std::string(60, 'x'));
+
+  TempDir dir("seval_keep");
+  const fs::path keep = dir.path / "kept";
+  const testing::CliRun run =
+      testing::RunVilla("eval --scenes " + kHouse + " --procedural --no-reach --scenes-per-layout 2 --json --keep " + keep.string());
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  REQUIRE(j["scenes"].size() == 2);
+  CHECK(j["kept"] == 2);
+  const fs::path layout_dir = keep / "001-house_one_floor.json";
+  std::set<std::string> seeds, listed;
+  for (const auto& s : j["scenes"]) seeds.insert(std::to_string(s["seed"].get<uint64_t>()));
+  for (const auto& e : fs::directory_iterator(layout_dir)) listed.insert(e.path().filename().string());
+  CHECK(listed == seeds);  // one folder a scene, named by its seed; no .partial folder left
+  for (const std::string& seed : seeds) {
+    const fs::path d = layout_dir / seed;
+    for (const char* f : {"layout.json", "scene.json", "furnished.glb", "report.json", "CREDITS"}) CHECK(fs::is_regular_file(d / f));
+    CHECK_FALSE(fs::exists(d / "plan.png"));
+    // The scene and the report are the ones scored: the report names the seed, both hold its objects.
+    const auto report = nlohmann::json::parse(std::ifstream(d / "report.json"));
+    CHECK(std::to_string(report["seed"].get<uint64_t>()) == seed);
+    const auto scene = nlohmann::json::parse(std::ifstream(d / "scene.json"));
+    for (const auto& s : j["scenes"])
+      if (std::to_string(s["seed"].get<uint64_t>()) == seed) CHECK(scene["objects"].size() == s["objects"].get<size_t>());
+    const auto layout = LoadLayout((d / "layout.json").string());
+    REQUIRE(layout.ok());
+    CHECK(layout->rooms.size() == LoadLayout(kHouse)->rooms.size());
+    std::ifstream glb(d / "furnished.glb", std::ios::binary);
+    char magic[4] = {};
+    glb.read(magic, 4);
+    CHECK(std::string(magic, 4) == "glTF");
+  }
+  // The folder is no longer empty: a second run is refused before anything is furnished or replaced.
+  const testing::CliRun again = testing::RunVilla("eval --scenes " + kHouse + " --procedural --keep " + keep.string());
+  CHECK(again.status == 2);
+  CHECK(again.out.find("--keep") != std::string::npos);
+  CHECK(testing::RunVilla("eval --scenes --glb " + kHouse + " --keep " + (dir.path / "k2").string()).status == 2);
 }

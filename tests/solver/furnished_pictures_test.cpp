@@ -3,14 +3,20 @@
 // run; the 3D preview shows the furniture over the bare building.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <set>
 
+#include "building/building.h"
 #include "building/view_scene.h"
 #include "layout/layout_io.h"
 #include "render/palette.h"
 #include "scene/acquire.h"
+#include "scene/room_context.h"
 #include "solver/furnish.h"
+#include "solver/room_view.h"
 
 using namespace villa;
 
@@ -91,4 +97,43 @@ TEST_CASE("The furnished preview shows the furniture over the bare building, at 
     changed += bare->rgb[i] != furnished->rgb[i] || bare->rgb[i + 1] != furnished->rgb[i + 1] || bare->rgb[i + 2] != furnished->rgb[i + 2];
   // The exterior panel is the same building; the cut-away shows a room full of furniture.
   CHECK(changed > bare->rgb.size() / 3 / 50);
+}
+
+TEST_CASE("rooms/<room>.png: the top view is flat-lit (no wall shadows on the floor), the corner view keeps its shadows",
+          "[solver][pictures]") {
+  auto layout = LoadLayout(std::string(VILLA_FIXTURE_DIR) + "/layouts/house_one_floor.json");
+  REQUIRE(layout.ok());
+  auto building = BuildBuilding(*layout, {});
+  REQUIRE(building.ok());
+  // The bedroom (a 5 x 4 m box), empty: its middle shows bare floor in both views.
+  auto context = scene::RoomContextOf(*layout, *building, {}, "bedroom_0/0");
+  REQUIRE(context.ok());
+  solver::RoomViewInput input;
+  input.building = &*building;
+  input.room = context->name;
+  input.level = context->level;
+  input.polygon = context->polygon;
+  input.floor_z = context->floor_z;
+  input.clear_height = context->clear_height;
+  constexpr int kPanel = 128;
+  auto picture = solver::RoomPicture(input, kPanel);
+  REQUIRE(picture.ok());
+  REQUIRE(picture->width == 2 * kPanel + 8);
+  // The top view's middle 30 % (the floor more than a metre from every wall): one colour, no shadow patch.
+  std::set<std::array<std::uint8_t, 3>> top;
+  for (int y = kPanel * 35 / 100; y < kPanel * 65 / 100; ++y)
+    for (int x = kPanel * 35 / 100; x < kPanel * 65 / 100; ++x) {
+      const size_t i = (static_cast<size_t>(y) * picture->width + x) * 3;
+      top.insert({picture->rgb[i], picture->rgb[i + 1], picture->rgb[i + 2]});
+    }
+  CHECK(top.size() == 1);
+  // The corner view is shaded: the walls' shadows darken part of the floor, so its lower half holds more
+  // than one tone of floor colour plus the background.
+  std::set<std::array<std::uint8_t, 3>> corner;
+  for (int y = kPanel / 2; y < kPanel; ++y)
+    for (int x = kPanel + 8; x < picture->width; ++x) {
+      const size_t i = (static_cast<size_t>(y) * picture->width + x) * 3;
+      corner.insert({picture->rgb[i], picture->rgb[i + 1], picture->rgb[i + 2]});
+    }
+  CHECK(corner.size() > 3);
 }
