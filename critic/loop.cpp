@@ -23,6 +23,11 @@ using Json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+std::string Fixed2(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", v);
+  return text;
+}
 double Round4(double v) {
   const double r = std::round(v * 1e4) / 1e4;
   return r == 0.0 ? 0.0 : r;
@@ -146,7 +151,16 @@ struct LoopState {
   std::vector<std::string> log_errors;
   solver::CriticFigures figures;
   std::string stopped;
+  int kept_round = 0;  // the model critic went back to this round's arrangement (0: it did not)
+  // The offline critic's best arrangement seen (fewest unmet relations, physically clean): an undo the
+  // solver had to repair (shift) can leave a room worse than before the attempt; the loop ends on the best.
+  std::shared_ptr<const solver::RoomSolver::Snapshot> best_room;
+  Unmet best_unmet;
+  bool back_to_best = false;
 };
+
+// Notes the session's arrangement as the best seen when it is physically clean with fewer unmet relations.
+void NoteBest(LoopState& st);
 
 RoomRelations Measure(const LoopState& st, const solver::RoomSolution& s) { return MeasureRelations(s.objects, s.placements, st.graph); }
 
@@ -159,7 +173,26 @@ void LogViews(RoundLog& log, const std::vector<solver::RoomViewImage>& views, st
   }
 }
 
+void NoteBest(LoopState& st) {
+  const solver::RoomSolution now = st.session.Solution();
+  if (HardTrouble(now)) return;
+  const Unmet u = UnmetOf(Measure(st, now));
+  if (st.best_room && !(u < st.best_unmet)) return;
+  st.best_room = st.session.Save();
+  st.best_unmet = u;
+}
+
+// Ends the offline rounds on the best arrangement seen, when the present one is worse.
+void BackToBest(LoopState& st) {
+  if (!st.best_room) return;
+  const solver::RoomSolution now = st.session.Solution();
+  if (!HardTrouble(now) && !(st.best_unmet < UnmetOf(Measure(st, now)))) return;
+  st.session.Restore(*st.best_room);
+  st.back_to_best = true;
+}
+
 void OfflineRounds(LoopState& st) {
+  NoteBest(st);
   std::set<std::string> given_up;
   double best_score = -1.0;
   int tries = 0;
@@ -213,12 +246,15 @@ void OfflineRounds(LoopState& st) {
       for (const std::vector<Step>& alternative : attempt.alternatives) {
         if (tries >= st.options.max_tries) break;
         std::vector<solver::ActionResult> results;
-        std::map<std::string, solver::ObjectPlacement> was;
+        // Where each object moved stood, in the order they were first moved: undone in reverse, so that an
+        // object goes back only after those that moved into its place have left it (a run's members).
+        std::vector<std::pair<std::string, solver::ObjectPlacement>> was;
         bool refused = false;
         for (const Step& step : alternative) {
           solver::Action a = step.action;
-          for (size_t k = 0; k < before.objects.size(); ++k)
-            if (before.objects[k].id == a.id) was.emplace(a.id, before.placements[k]);
+          const bool first = std::none_of(was.begin(), was.end(), [&](const auto& w) { return w.first == a.id; });
+          for (size_t k = 0; k < before.objects.size() && first; ++k)
+            if (before.objects[k].id == a.id) was.emplace_back(a.id, before.placements[k]);
           if (step.suggest) {
             // Where the solver would put it now, after the steps before this one.
             auto slot = st.session.Suggest(a.id);
@@ -241,7 +277,8 @@ void OfflineRounds(LoopState& st) {
         const RoomRelations after_relations = Measure(st, after);
         helped = !HardTrouble(after) && !results.empty() && !refused && UnmetOf(after_relations) < unmet_before;
         if (!helped) {
-          for (const auto& [id, placement] : was) {
+          for (auto it = was.rbegin(); it != was.rend(); ++it) {
+            const auto& [id, placement] = *it;
             const int k = [&] {
               for (size_t j = 0; j < before.objects.size(); ++j)
                 if (before.objects[j].id == id) return static_cast<int>(j);
@@ -255,6 +292,7 @@ void OfflineRounds(LoopState& st) {
       }
       entry["kept"] = helped;
       kept += helped;
+      NoteBest(st);
       if (!helped) {
         given_up.insert(attempt.problem);
         escalating = escalating || attempt.problem.find(" [group]") == std::string::npos;
@@ -373,6 +411,11 @@ void Account(solver::CriticFigures& f, const JsonChatResult& chat) {
 Status ModelRounds(LoopState& st) {
   const std::string& room = st.input.problem->room;
   double best_score = -1.0;
+  // The best round judged so far (the lowest E with the model's score) and its arrangement: a round judged
+  // worse goes back to it and the loop ends there.
+  int best_round = 0;
+  double best_energy = 0.0;
+  std::shared_ptr<const solver::RoomSolver::Snapshot> best_room;
   std::vector<solver::ActionResult> last;
   solver::RoomViewOptions views = st.options.views;
   for (int round = 1; round <= st.options.rounds; ++round) {
@@ -431,6 +474,19 @@ Status ModelRounds(LoopState& st) {
     record["score"] = Round4(evaluation.score);
     record["energy_with_score"] = Round4(energy);
     record["problems"] = problems;
+    if (best_round > 0 && energy > best_energy + 1e-9) {
+      st.session.Restore(*best_room);
+      record["rolled_back_to"] = best_round;
+      st.kept_round = best_round;
+      finish_round("E rose to " + Fixed2(energy) + " from round " + std::to_string(best_round) + "'s " + Fixed2(best_energy) +
+                   ": back to round " + std::to_string(best_round) + "'s arrangement");
+      return Status::Ok();
+    }
+    if (best_round == 0 || energy < best_energy - 1e-9) {
+      best_round = round;
+      best_energy = energy;
+      best_room = st.session.Save();
+    }
     if (energy <= st.options.energy_threshold && evaluation.score <= best_score + 1e-9) {
       finish_round("E <= " + std::to_string(st.options.energy_threshold).substr(0, 4) + " and the score stopped improving");
       return Status::Ok();
@@ -538,7 +594,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
   solver::RoomSolver& session = input.session ? *input.session : *own;
   const auto start = Clock::now();
 
-  LoopState st{input, options, session, {}, {}, Json::array(), {}, {}, ""};
+  LoopState st{input, options, session, {}, {}, Json::array(), {}, {}, "", 0, nullptr, {}, false};
   // The graph's edges between objects the solver was given (edges of objects dropped before solving are
   // no critic's business).
   for (const scene::SemanticEdge& e : *input.edges)
@@ -559,6 +615,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
 
   if (options.kind == CriticKind::kOffline) {
     OfflineRounds(st);
+    BackToBest(st);
   } else if (options.kind == CriticKind::kMllm) {
     if (Status s = ModelRounds(st); !s.ok()) return Error{input.problem->room + ": critic: " + s.error()};
   }
@@ -572,7 +629,7 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
   Json rounds = Json::array();
   for (const Json& r : st.rounds) {
     Json brief{{"round", r["round"]}};
-    for (const char* key : {"score", "energy_with_score", "kept", "stopped", "error"})
+    for (const char* key : {"score", "energy_with_score", "kept", "stopped", "error", "rolled_back_to"})
       if (r.contains(key)) brief[key] = r[key];
     brief["energy"] = r["energy"]["total"];
     if (r.contains("energy_after")) brief["energy_after"] = r["energy_after"]["total"];
@@ -586,12 +643,15 @@ Result<CritiqueResult> CritiqueRoom(const solver::RoomCriticInput& input, const 
               {"stopped", st.stopped},
               {"relations_before", RelationsJson(before)},
               {"relations_after", RelationsJson(after)}};
+  if (st.kept_round > 0) record["kept_round"] = st.kept_round;
+  if (st.back_to_best) record["back_to_best"] = true;  // the offline rounds ended worse than their best
   if (!st.log_errors.empty()) record["log_errors"] = st.log_errors;
   if (!st.room_log.empty()) {
     std::error_code ec;
     fs::create_directories(st.room_log, ec);
     Json index{{"room", input.problem->room}, {"critic", st.figures.critic}, {"rounds", st.figures.rounds}, {"stopped", st.stopped},
                {"relations_before", RelationsJson(before)}, {"relations_after", RelationsJson(after)}};
+    if (st.kept_round > 0) index["kept_round"] = st.kept_round;
     if (Status s = WriteFileAtomic(st.room_log / "critic.json", index.dump(2) + "\n"); !s.ok()) record["log_errors"].push_back(s.error());
   }
   st.figures.record = std::move(record);

@@ -514,6 +514,212 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
   return Attempt{line, Best(session, std::move(ranked), options.alternatives)};
 }
 
+// The run through object m: the wall-standing objects (against_wall, nothing under them) linked to it by
+// next_to edges, in the order of the chain (a kitchen's fridge, counters, cooker, dishwasher); empty unless
+// they form one simple path of three or more.
+std::vector<int> RunThrough(const Room& room, int m) {
+  const auto standing = [&](int k) {
+    return k >= 0 && room.parent[k] < 0 && room.solution.objects[k].relation == solver::Relation::kAgainstWall;
+  };
+  if (!standing(m)) return {};
+  std::map<int, std::set<int>> links;
+  for (const scene::SemanticEdge& e : room.graph) {
+    if (e.relation != scene::SemanticRelation::kNextTo) continue;
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a == b || !standing(a) || !standing(b)) continue;
+    links[a].insert(b);
+    links[b].insert(a);
+  }
+  std::set<int> seen{m};
+  std::vector<int> stack{m};
+  size_t link_count = 0;
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    link_count += links[k].size();
+    if (links[k].size() > 2) return {};
+    for (int j : links[k])
+      if (seen.insert(j).second) stack.push_back(j);
+  }
+  if (seen.size() < 3 || link_count / 2 != seen.size() - 1) return {};
+  int end = -1;
+  for (int k : seen)
+    if (links[k].size() == 1) {
+      end = k;
+      break;
+    }
+  std::vector<int> order{end};
+  for (int prev = -1, at = end; order.size() < seen.size();) {
+    const int next = *links[at].begin() != prev ? *links[at].begin() : *links[at].rbegin();
+    prev = at;
+    at = next;
+    order.push_back(at);
+  }
+  return order;
+}
+
+// An order of moves taking each object of `poses` to its pose, where none enters the place of one still to
+// move (height ranges counted: an upper cabinet hangs over a counter). Where every remaining one waits for
+// another (a cycle: the cooker must pass the fridge), one of them is parked first on another wall (all of
+// them stand against or hang on walls), clear of
+// everything and of every pose to come, and moved on when its pose is free. False when no order is found.
+bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& poses, double clearance,
+               std::vector<std::pair<int, Candidate>>* order) {
+  const size_t n = poses.size();
+  std::vector<solver::ObjectPlacement> at(n);
+  std::vector<ObjectBox> target(n);
+  for (size_t a = 0; a < n; ++a) {
+    at[a] = room.solution.placements[poses[a].first];
+    solver::ObjectPlacement pl = at[a];
+    pl.pose = poses[a].second.pose;
+    target[a] = BoxOf(room.solution.objects[poses[a].first], pl);
+  }
+  const auto height = [&](size_t a) { return room.stack_top[poses[a].first] - room.solution.placements[poses[a].first].pose.z; };
+  const auto meets = [&](const ObjectBox& box, double top, const ObjectBox& other, double other_top) {
+    return PlanGap(box, other) < 0.02 && std::min(top, other_top) > std::max(box.z0, other.z0) - 0.05;  // with margins
+  };
+  std::vector<bool> done(n, false), parked(n, false);
+  for (size_t step = 0; step < 2 * n + 1; ++step) {
+    int pick = -1;
+    for (size_t a = 0; a < n && pick < 0; ++a) {
+      if (done[a]) continue;
+      bool clear = true;
+      for (size_t b = 0; b < n && clear; ++b) {
+        if (b == a || done[b]) continue;
+        const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
+        clear = !meets(target[a], target[a].z0 + height(a), there, there.z0 + height(b));
+      }
+      if (clear) pick = static_cast<int>(a);
+    }
+    if (pick >= 0) {
+      done[pick] = true;
+      at[pick].pose = poses[pick].second.pose;
+      order->push_back(poses[pick]);
+      if (order->size() >= n + std::count(parked.begin(), parked.end(), true)) return true;
+      continue;
+    }
+    // Park the first waiting object not parked yet.
+    int park = -1;
+    for (size_t a = 0; a < n && park < 0; ++a)
+      if (!done[a] && !parked[a]) park = static_cast<int>(a);
+    if (park < 0) return false;
+    const int k = poses[park].first;
+    std::optional<Candidate> spot;
+    for (size_t w = 0; w < room.problem.walls.size() && !spot; ++w) {
+      if (static_cast<int>(w) == poses[park].second.wall) continue;
+      const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+      for (double t = 0.0; t < length && !spot; t += 0.25) {
+        auto c = OnWallAt(room, k, static_cast<int>(w), t, at[park].pose.scale);
+        if (!c || !Free(room, k, c->pose, clearance)) continue;
+        solver::ObjectPlacement pl = at[park];
+        pl.pose = c->pose;
+        const ObjectBox box = BoxOf(room.solution.objects[k], pl);
+        bool clear = true;
+        for (size_t b = 0; b < n && clear; ++b) clear = !meets(box, box.z0 + height(park), target[b], target[b].z0 + height(b));
+        if (clear) spot = c;
+      }
+    }
+    if (!spot) return false;
+    parked[park] = true;
+    at[park].pose = spot->pose;
+    at[park].wall = spot->wall;
+    order->push_back({k, *spot});
+  }
+  return false;
+}
+
+// Run moves for an unmet next_to inside a run: the whole run laid out again in its chain's order, each
+// member touching the next (2 cm apart), slid along every wall it may stand on, either way round. The
+// members move one after the other in an order where none enters another's present place; a layout
+// without such an order is not tried. Ranked like single moves, the best `keep` kept.
+std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Unmet& now, const OfflineProposalOptions& options,
+                                        const std::string& why) {
+  const std::vector<int> run = RunThrough(room, s);
+  if (run.empty() || std::find(run.begin(), run.end(), t) == run.end()) return {};
+  std::set<int> group(run.begin(), run.end());
+  // What hangs on the wall behind a member (a counter's upper cabinet, the cooker's hood) moves with it,
+  // keeping its place along the wall relative to the member.
+  std::vector<std::pair<int, int>> hung;  // (hung object, member)
+  for (const scene::SemanticEdge& e : room.graph) {
+    if (e.relation != scene::SemanticRelation::kBehind) continue;
+    const int h = room.Find(e.source), member = room.Find(e.target);
+    if (h < 0 || member < 0 || !group.count(member) || group.count(h) || room.parent[h] >= 0 ||
+        room.solution.objects[h].relation != solver::Relation::kOnWall)
+      continue;
+    hung.push_back({h, member});
+  }
+  for (const auto& [h, member] : hung) group.insert(h);
+  constexpr double kJoint = 0.02;  // m between neighbours of the run
+  double total = 0.0;
+  for (int k : run) total += room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale + kJoint;
+  struct Layout {
+    Unmet unmet;
+    double moved = 0.0;
+    std::vector<std::pair<int, Candidate>> poses;  // in the order they are applied
+  };
+  std::vector<Layout> layouts;
+  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+    bool allowed = true;
+    for (int k : run) allowed = allowed && (room.solution.objects[k].wall < 0 || room.solution.objects[k].wall == static_cast<int>(w));
+    const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+    if (!allowed || length < total) continue;
+    for (bool reversed : {false, true}) {
+      for (double start = 0.0; start + total <= length + kJoint; start += 0.05) {
+        std::vector<std::pair<int, Candidate>> poses;
+        double at = start;
+        for (size_t n = 0; n < run.size(); ++n) {
+          const int k = run[reversed ? run.size() - 1 - n : n];
+          const double width = room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale;
+          auto c = OnWallAt(room, k, static_cast<int>(w), at + 0.5 * width, room.solution.placements[k].pose.scale);
+          if (!c || !Free(room, k, c->pose, options.clearance, group)) break;
+          poses.push_back({k, *c});
+          at += width + kJoint;
+        }
+        if (poses.size() != run.size()) continue;
+        for (const auto& [h, member] : hung) {
+          const solver::WallEdge& wall = room.problem.walls[w];
+          const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+          const solver::ObjectPlacement& mp = room.solution.placements[member];
+          const solver::ObjectPlacement& hp = room.solution.placements[h];
+          // Its offset along the member's width now, kept (0 when it hangs on another wall).
+          const double offset = hp.wall == mp.wall ? geo::Dot(geo::Sub({hp.pose.x, hp.pose.y}, {mp.pose.x, mp.pose.y}), d) : 0.0;
+          const auto at_member = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == member; });
+          const double t = geo::Dot(geo::Sub({at_member->second.pose.x, at_member->second.pose.y}, wall.a), d) + offset;
+          auto c = OnWallAt(room, h, static_cast<int>(w), t, hp.pose.scale);
+          if (!c || !Free(room, h, c->pose, options.clearance, group)) break;
+          poses.push_back({h, *c});
+        }
+        if (poses.size() != run.size() + hung.size()) continue;
+        std::vector<std::pair<int, Candidate>> order;
+        if (!MoveOrder(room, poses, options.clearance, &order)) continue;
+        std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+        double moved = 0.0;
+        for (const auto& [k, c] : poses) {
+          placements = room.Moved(placements, k, c.pose, c.wall);
+          moved += std::hypot(c.pose.x - room.solution.placements[k].pose.x, c.pose.y - room.solution.placements[k].pose.y);
+        }
+        const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
+        if (u < now) layouts.push_back({u, moved, std::move(order)});
+      }
+    }
+  }
+  std::stable_sort(layouts.begin(), layouts.end(), [](const Layout& a, const Layout& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const Layout& l : layouts) {
+    if (static_cast<int>(out.size()) >= options.alternatives) break;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : l.poses) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the run laid out again)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    out.push_back(std::move(steps));
+  }
+  return out;
+}
+
 // The group move for an edge single moves could not mend: its hub (the end with more relations to other
 // objects) goes to a roomier place, then everything related to it is re-placed by the solver around it;
 // or, first, only the related objects are re-placed.
@@ -574,6 +780,8 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
     const int s = room.Find(c.edge.source), t = room.Find(c.edge.target);
     if (!given_up.count(line)) {
       Attempt single = SingleMoves(session, room, c, s, t, now, options, line, suggestion);
+      // A run of wall-standing objects chained next_to (a kitchen's) laid out again as a whole.
+      for (std::vector<Step>& run : RunMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(run));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;

@@ -67,6 +67,12 @@ Mount DefaultMount(const CategoryInfo& c) {
 
 bool IsRug(const CategoryInfo& c) { return c.name == "rug"; }
 
+// A kitchen's run: fridge, counters, cooker and dishwasher, chained next_to one after the other (priors.cpp),
+// so together they must fit one straight free stretch of wall (or the chain cannot hold).
+bool InKitchenRun(const CategoryInfo& c) {
+  return c.name == "counter" || c.name == "fridge" || c.name == "cooker" || c.name == "dishwasher";
+}
+
 // Furniture that also works away from the walls (a sofa's back to the room, an island desk) when no wall
 // stretch is long enough; storage and appliances do not.
 bool MayStandFree(const CategoryInfo& c) {
@@ -99,6 +105,7 @@ struct Node {
   double onwall_taken = 0.0;
   int stretch = -1;
   double stretch_taken = 0.0;
+  double run_taken = 0.0;  // m of the kitchen run (kitchens only)
 };
 
 class Planning {
@@ -129,9 +136,39 @@ class Planning {
       }
     }
     onwall_left_ = kOnWallShare * wall_free;
+    if (room_.category == Category::kKitchen) {
+      // A straight run where the smallest one (two counters, a fridge, a cooker) fits along one wall (the
+      // critic lays a straight run out again as a whole), else an L round a corner; where not even that
+      // fits, the run is not limited: the kitchen keeps its things, the chain is left to the solver.
+      double smallest = 0.0;
+      for (std::string_view c : {"counter", "counter", "fridge", "cooker"})
+        if (const CategoryInfo* info = FindCategory(c)) smallest += info->size_min.x + kWallGap;
+      run_left_ = LongestRun(false);
+      if (run_left_ < smallest) run_left_ = LongestRun(true);
+      run_limited_ = run_left_ >= smallest;
+    }
     // Sizes lean small in small rooms and large in large ones.
     double s = priors_.usual_area > 0 ? area / priors_.usual_area : 1.0;
     size_factor_ = std::clamp(0.2 + 0.3 * s, 0.1, 0.65);
+  }
+
+  // The longest run of wall a kitchen's chain may stand along: one free interval of a wall (the low
+  // members stand under its windows), or with `corner` an L of two intervals meeting in a corner, less the
+  // corner a counter's depth takes. 0 when the room has no free wall.
+  double LongestRun(bool corner) const {
+    constexpr double kCornerTaken = 0.65;  // m: a counter's depth, the corner's share of the second wall
+    double best = 0.0;
+    for (const WallEdge& w : room_.walls)
+      for (const Interval& f : w.free) best = std::max(best, f.second - f.first);
+    for (const WallEdge& a : room_.walls) {
+      if (!corner || a.free.empty() || a.free.back().second < a.length() - 0.01) continue;
+      for (const WallEdge& b : room_.walls) {
+        if (&a == &b || b.free.empty() || b.free.front().first > 0.01 || Distance(a.inner.b, b.inner.a) > 0.05) continue;
+        const double l = (a.free.back().second - a.free.back().first) + (b.free.front().second - b.free.front().first) - kCornerTaken;
+        best = std::max(best, l);
+      }
+    }
+    return best;
   }
 
   RoomPlan Run() {
@@ -242,6 +279,7 @@ class Planning {
   }
 
   void GiveBack(const Node& n) {
+    run_left_ += n.run_taken;
     floor_left_ += n.floor_taken;
     prompt_extra_ += n.extra_taken;
     rug_left_ += n.rug_taken;
@@ -342,6 +380,8 @@ class Planning {
     n.wish = wish;
     n.mount = item ? item->mount : DefaultMount(info);
     if (parent >= 0) n.mount = Mount::kParent;
+    if (n.mount == Mount::kWall && info.name == "sofa" && room_.category == Category::kLivingRoom && SofaFloats())
+      n.mount = Mount::kFloor;
     n.size = SizeOf(info);
     if (item) n.hints.assign(item->hints.begin(), item->hints.end());
     const bool prompt = origin == Origin::kPrompt;
@@ -367,12 +407,48 @@ class Planning {
       nodes_.push_back(n);
       return static_cast<int>(nodes_.size()) - 1;
     }
+    const bool run = run_limited_ && n.mount == Mount::kWall && InKitchenRun(info);
+    if (run && !FitRun(n)) return -1;
     if (!TakeRoom(n, prompt)) return -1;  // may turn a wall object free-standing
+    if (run) {
+      run_left_ -= n.size.x + kWallGap;
+      n.run_taken = n.size.x + kWallGap;
+    }
     n.relation = n.mount == Mount::kWall ? Relation::kAgainstWall
                  : n.mount == Mount::kOnWall ? Relation::kOnWall
                  : n.mount == Mount::kCeiling ? Relation::kHanging : Relation::kOnTop;
     nodes_.push_back(n);
     return static_cast<int>(nodes_.size()) - 1;
+  }
+
+  // Narrows a member of the kitchen run to what the run has left after the members it still needs (a
+  // fridge, a cooker, two counters); false when even its smallest does not fit. The counters of a room
+  // share one asset (scene/acquire.cpp: one per category, parent and relation), so they share the first
+  // one's width: the first takes an equal share of what the two need.
+  bool FitRun(Node& n) {
+    double reserve = 0.0;
+    for (std::string_view category : {"fridge", "cooker"}) {
+      const CategoryInfo* c = FindCategory(category);
+      if (c && n.info->name != category && CountOfCategory(category) == 0 && !excluded_.count(std::string(category)))
+        reserve += c->size_min.x + kWallGap;
+    }
+    double room = run_left_ - reserve;
+    if (n.info->name == "counter") {
+      for (const Node& other : nodes_)
+        if (!other.removed && other.info == n.info) {
+          if (room < other.size.x + kWallGap - 1e-9) return false;
+          n.size.x = other.size.x;
+          return true;
+        }
+      room = 0.5 * room;  // this counter and the second one of the priors' minimum
+    } else if (const CategoryInfo* counter = FindCategory("counter"); counter && CountOfCategory("counter") < 2) {
+      // Counters come first in the priors; a request's fridge or cooker may come before them.
+      room -= (2 - CountOfCategory("counter")) * (counter->size_min.x + kWallGap);
+    }
+    room -= kWallGap;
+    if (room < n.info->size_min.x - 1e-9) return false;
+    n.size.x = std::min(n.size.x, std::floor(room * 100.0) / 100.0);
+    return true;
   }
 
   // Whether the priors may add one more of `item` now.
@@ -400,6 +476,19 @@ class Planning {
     const CategoryInfo* info = FindCategory(item.category);
     if (!info || !Allowed(item) || CountOf(&item) >= MaxOf(item)) return false;
     return Add(*info, &item, Origin::kPrior, -1, -1, Relation::kOnTop, false) >= 0;
+  }
+
+  // Whether a living room's sofa stands free (its back to the room, facing the TV on its wall): the TV
+  // stand is 2-3 m in front of the sofa (priors.cpp), so with both against opposite walls the room must be
+  // 3.4-4.4 m across (sofa and stand depths and their wall gaps included). A room deeper than that both
+  // ways (or too narrow one way and too deep the other) lets the sofa float, as a designer would.
+  bool SofaFloats() const {
+    constexpr double kAcrossMin = 3.4, kAcrossMax = 4.4;  // m wall to wall
+    if (room_.free_floor.empty()) return false;
+    const Box2 box = BoundingBox(room_.free_floor.front());
+    const double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
+    const auto fits = [&](double d) { return d >= kAcrossMin && d <= kAcrossMax; };
+    return !fits(w) && !fits(h) && std::max(w, h) > kAcrossMax;
   }
 
   // ---- the steps
@@ -663,6 +752,8 @@ class Planning {
   std::vector<Node> nodes_;
   std::vector<Stretch> stretches_;
   double floor_left_ = 0.0, prompt_extra_ = 0.0, rug_left_ = 0.0, onwall_left_ = 0.0;
+  double run_left_ = 0.0;     // m of the kitchen run's wall still free (kitchens only)
+  bool run_limited_ = false;  // the kitchen run must fit run_left_
   double size_factor_ = 0.5;
   int lo_ = 0, hi_ = 0, target_ = 0;
   int dropped_ = 0;

@@ -824,6 +824,32 @@ void RoomSolver::KeepCurrent() {
   im.have_best = true;
 }
 
+struct RoomSolver::Snapshot {
+  std::string room;
+  RoomState state;
+  ExactMetrics metrics;
+  EnergyTerms energy;
+  std::vector<std::string> removed;
+};
+
+std::shared_ptr<const RoomSolver::Snapshot> RoomSolver::Save() const {
+  const Impl& im = *impl_;
+  return std::make_shared<const Snapshot>(Snapshot{im.problem.room, im.state, im.metrics, im.energy, im.summary.removed});
+}
+
+void RoomSolver::Restore(const Snapshot& snapshot) {
+  Impl& im = *impl_;
+  if (!im.initialised || snapshot.room != im.problem.room) return;
+  im.state = snapshot.state;
+  im.metrics = snapshot.metrics;
+  im.energy = snapshot.energy;
+  im.summary.removed = snapshot.removed;  // what came back is no longer removed
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  im.summary.energy_trace.push_back(im.energy.total);
+  KeepCurrent();
+}
+
 const RoomProblem& RoomSolver::Problem() const { return impl_->problem; }
 
 Status RoomSolver::AddKeepOuts(const std::vector<KeepOut>& zones) {

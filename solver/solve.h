@@ -100,6 +100,13 @@ class RoomSolver {
   // lower geometric proxy E of an earlier state would undo the critic's moves). Later states replace it
   // as before: by fewer exact violations, then lower E.
   void KeepCurrent();
+  // A copy of the arrangement as it stands (its objects, poses, check and energy), and going back to one
+  // (it becomes the state kept, as KeepCurrent; the actions taken since stay in the log): a critic that
+  // finds a later round worse returns to an earlier round's room. Restore ignores a snapshot of another
+  // session's room.
+  struct Snapshot;
+  std::shared_ptr<const Snapshot> Save() const;
+  void Restore(const Snapshot& snapshot);
   // Ends the session without more agent actions: the best state seen is kept, checked again (with the
   // clearance figure) and the outcome and its reason set, as at the end of RunAgent.
   void Finish();

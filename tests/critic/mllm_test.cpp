@@ -5,6 +5,7 @@
 // key kept out of everything written.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -113,7 +114,8 @@ TEST_CASE("The model critic's requests carry five PNG views as data URIs, the st
     CHECK(parts[0]["type"] == "text");
     // The text state names the objects and the measured relations.
     const std::string text = parts[0]["text"].get<std::string>();
-    CHECK(text.find("sofa-0: sofa; against_wall wall") != std::string::npos);
+    CHECK(text.find("sofa-0: sofa; ontop floor") != std::string::npos);  // it stands free in this deep room
+    CHECK(text.find("tv-stand-0: tv-stand; against_wall wall") != std::string::npos);
     CHECK(text.find("relations of the graph") != std::string::npos);
     int images = 0;
     for (const Json& part : parts)
@@ -192,7 +194,8 @@ TEST_CASE("update_pose from the model moves the TV stand to face the sofa, the s
   };
   REQUIRE(facing(stand->pose) <= 30.0);
   // Round 1: the model turns the screen away (a free place on a wall from which it does not face the sofa);
-  // round 2: it asks for it back where it faces the sofa.
+  // round 2: it scores the room no worse (a worse score would take round 1's room back, tested below) and
+  // asks for the screen back where it faces the sofa.
   std::optional<std::pair<solver::Pose, int>> away;
   const solver::RoomProblem& problem = room->mapped.problem;
   for (size_t w = 0; w < problem.walls.size() && !away; ++w) {
@@ -210,7 +213,7 @@ TEST_CASE("update_pose from the model moves the TV stand to face the sofa, the s
   back["x"] = stand->pose.x, back["y"] = stand->pose.y, back["wall"] = stand->wall;
   ScriptedServer server({Answer(Evaluation(6, {{{"tv-stand-0"}, "try the screen on the other wall"}})),
                          Answer(Json{{"actions", Json::array({there})}}),
-                         Answer(Evaluation(3, {{{"tv-stand-0", "sofa-0"}, "the screen does not face the sofa"}})),
+                         Answer(Evaluation(6, {{{"tv-stand-0", "sofa-0"}, "the screen does not face the sofa"}})),
                          Answer(Json{{"actions", Json::array({back})}}),
                          Answer(Evaluation(10))});
   auto result = critic::CritiqueRoom(room->input, ModelCritic(server, 3));
@@ -317,6 +320,48 @@ TEST_CASE("A model that names unknown objects or actions is asked again, a serve
   CHECK(kept->figures.record["stopped"].get<std::string>().find("model not found") != std::string::npos);
   CHECK(kept->solution.summary.metrics.Clean());
   CHECK(kept->solution.objects.size() == room->mapped.problem.objects.size() - kept->solution.summary.removed.size());
+}
+
+TEST_CASE("A round the model judges worse than the one before goes back to that round's arrangement", "[critic][mllm]") {
+  auto room = testing::MakeCriticRoom("living-room_0/0");
+  const std::string lamp = "living-room_0/0/floor-lamp-0";
+  // Round 1's arrangement is the solver's: a model content with it ends the loop there.
+  ScriptedServer content({Answer(Evaluation(10))});
+  auto base = critic::CritiqueRoom(room->input, ModelCritic(content));
+  REQUIRE(base.ok());
+  REQUIRE(PlacementOf(base->solution, lamp) != nullptr);
+  // Round 1 scores 6 and takes the lamp out; round 2 scores 3 (E 7 against 4): round 1's room comes back.
+  ScriptedServer server({Answer(Evaluation(6, {{{"floor-lamp-0"}, "the lamp stands in the way"}})),
+                         Answer(Json{{"actions", Json::array({Action("remove_entity", "floor-lamp-0")})}}),
+                         Answer(Evaluation(3, {{{"sofa-0"}, "the corner by the sofa is dark now"}}))});
+  TempDir logs("critic-logs");
+  critic::CriticOptions options = ModelCritic(server, 3);
+  options.log_dir = logs.path;
+  auto result = critic::CritiqueRoom(room->input, options);
+  REQUIRE(result.ok());
+  CHECK(server.bodies().size() == 3);  // no actions asked after the worse round
+  const Json& record = result->figures.record;
+  CHECK(record["kept_round"] == 1);
+  REQUIRE(record["rounds"].size() == 2);
+  CHECK(record["rounds"][1]["rolled_back_to"] == 1);
+  CHECK(record["stopped"].get<std::string>().find("back to round 1's arrangement") != std::string::npos);
+  // The room is round 1's, pose for pose, the lamp back and no longer counted removed.
+  const solver::RoomSolution& s = result->solution;
+  REQUIRE(s.objects.size() == base->solution.objects.size());
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    CHECK(s.objects[i].id == base->solution.objects[i].id);
+    CHECK(s.placements[i].pose.x == base->solution.placements[i].pose.x);
+    CHECK(s.placements[i].pose.y == base->solution.placements[i].pose.y);
+    CHECK(s.placements[i].pose.yaw == base->solution.placements[i].pose.yaw);
+  }
+  REQUIRE(PlacementOf(s, lamp) != nullptr);
+  CHECK(std::find(s.summary.removed.begin(), s.summary.removed.end(), lamp) == s.summary.removed.end());
+  CHECK(s.summary.metrics.Clean());
+  // The round log says it too.
+  const Json round2 = Json::parse(ReadAll(logs.path / critic::RoomLogFolder("living-room_0/0") / "round-2" / "round.json"));
+  CHECK(round2["rolled_back_to"] == 1);
+  const Json index = Json::parse(ReadAll(logs.path / critic::RoomLogFolder("living-room_0/0") / "critic.json"));
+  CHECK(index["kept_round"] == 1);
 }
 
 }  // namespace villa
