@@ -416,6 +416,7 @@ struct StairDoor {
   const Element* element = nullptr;
   int level = 0;
   int side = -1;  // side of the room's rectangle it lies on, -1 when on none (a room that is not a rectangle)
+  bool entrance = false;  // the building's entrance: everything is reached through it
 };
 
 // The near side of a stack, the strip depth it gets, and the passage left beside narrowed flights.
@@ -460,7 +461,8 @@ double StripNeeded(const StairBox& box, const StairSide& side, const StairDoor& 
 
 // Chooses the near side of a stair stack from the doors and opens of its room on every level the strip
 // serves (`levels`, ascending: the stairs' levels and the one above the top stair): the side that serves
-// the most levels, then the most doors, then the most doors on the near side or the passage's side (whole
+// the entrance (a stair room the entrance opens into: nothing is reached if it opens onto the flights),
+// then the most levels, then the most doors, then the most doors on the near side or the passage's side (whole
 // doors on floor, not a corner of one), then a door on the lowest level, then full-width flights, then the
 // shallower strip, then the side lowest in the plan (y, then x) -- geometry only, never the order of
 // elements in the file. Warns, naming the room and the door, for each door the chosen side leaves out.
@@ -472,19 +474,20 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
     for (const auto* list : {&layout.entrances, &layout.doors, &layout.opens})
       for (const Element& e : *list) {
         if (!e.OnLevel(l) || DistanceToBoundary(Lerp(e.shape.a, e.shape.b, 0.5), poly) >= kOnLine) continue;
-        StairDoor d{&e, l, -1};
+        StairDoor d{&e, l, -1, list == &layout.entrances};
         for (int k = 0; k < 4 && d.side < 0; ++k)
           if (std::abs(box.FromSide(k, e.shape.a)) < kSideTolerance && std::abs(box.FromSide(k, e.shape.b)) < kSideTolerance)
             d.side = k;
         doors.push_back(d);
       }
   struct Score {
-    int levels = 0, doors = 0, whole = 0, lowest = 0;
+    int entrances = 0, levels = 0, doors = 0, whole = 0, lowest = 0;
     int passages = 0;
     double strip = 0.0;
     Point mid;
   };
   auto better = [](const Score& a, const Score& b) {
+    if (a.entrances != b.entrances) return a.entrances > b.entrances;
     if (a.levels != b.levels) return a.levels > b.levels;
     if (a.doors != b.doors) return a.doors > b.doors;
     if (a.whole != b.whole) return a.whole > b.whole;
@@ -521,6 +524,7 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
         if (need > deepest + 1e-9) continue;
         s.strip = std::max(s.strip, need);
         ++s.doors;
+        s.entrances += d.entrance;
         s.whole += d.side == k || candidate.OnPassage(d.side);
         s.lowest += d.level == levels.front();
         level_served[std::find(levels.begin(), levels.end(), d.level) - levels.begin()] = true;
