@@ -343,7 +343,9 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
         furnish.text = request.text;
         furnish.seed = scene.seed;
         t = Clock::now();
-        auto villa = solver::FurnishLayout(*layout, {request.id, scene::Sha256Hex(layout_text)}, library->library,
+        // A kept scene names the layout.json beside it, so `villa reach DIR/scene.json` finds it.
+        const std::string layout_ref = options.keep.empty() ? request.id : "layout.json";
+        auto villa = solver::FurnishLayout(*layout, {layout_ref, scene::Sha256Hex(layout_text)}, library->library,
                                            library->file, furnish);
         summary.furnish_seconds += Since(t);
         if (villa.ok() && !options.keep.empty()) {

@@ -232,6 +232,9 @@ TEST_CASE("villa eval --scenes --keep DIR keeps every scene's files under DIR/<r
     const auto scene = nlohmann::json::parse(std::ifstream(d / "scene.json"));
     for (const auto& s : j["scenes"])
       if (std::to_string(s["seed"].get<uint64_t>()) == seed) CHECK(scene["objects"].size() == s["objects"].get<size_t>());
+    // It names the layout beside it, so `villa reach` on the kept scene works.
+    CHECK(scene["layout"]["file"] == "layout.json");
+    CHECK(testing::RunVilla("reach " + (d / "scene.json").string()).status == 0);
     const auto layout = LoadLayout((d / "layout.json").string());
     REQUIRE(layout.ok());
     CHECK(layout->rooms.size() == LoadLayout(kHouse)->rooms.size());
