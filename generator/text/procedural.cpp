@@ -8,11 +8,41 @@
 #include <set>
 
 #include "generator/text/backends.h"
+#include "layout/geometry.h"
 #include "layout/validate.h"
 #include "util/hash.h"
 
 namespace villa {
 namespace {
+
+// Staircase rooms (utility rooms of a building with several floors) with a door, an open or the entrance
+// on each of the four sides of their box: the builder's stair serves at most three (flights in the middle
+// with a passage on both sides; the far side holds the landing), so one of those doors opens onto the
+// flights and the room behind it is closed (docs/BUILDING.md "Staircases"). The search prefers layouts
+// without them.
+int UnservableStairRooms(const Layout& layout) {
+  if (layout.LevelCount() < 2) return 0;
+  constexpr double kOnSide = 0.05;  // m
+  int unservable = 0;
+  for (const Room& room : layout.rooms) {
+    if (room.category != Category::kUtilityRoom || room.polygon.empty()) continue;
+    double x0 = room.polygon[0].x, x1 = x0, y0 = room.polygon[0].y, y1 = y0;
+    for (const Point& p : room.polygon) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    bool side[4] = {false, false, false, false};
+    for (const auto* list : {&layout.entrances, &layout.doors, &layout.opens})
+      for (const Element& e : *list) {
+        if (!e.OnLevel(room.level)) continue;
+        const Point mid{(e.shape.a.x + e.shape.b.x) / 2.0, (e.shape.a.y + e.shape.b.y) / 2.0};
+        if (DistanceToBoundary(mid, room.polygon) > kOnSide) continue;
+        if (std::abs(mid.x - x0) < kOnSide) side[0] = true;
+        else if (std::abs(mid.x - x1) < kOnSide) side[1] = true;
+        else if (std::abs(mid.y - y0) < kOnSide) side[2] = true;
+        else if (std::abs(mid.y - y1) < kOnSide) side[3] = true;
+      }
+    unservable += side[0] && side[1] && side[2] && side[3];
+  }
+  return unservable;
+}
 
 // Floor counts to try, best guess first.
 std::vector<int> FloorCandidates(const Brief& brief) {
@@ -259,6 +289,7 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
 
   int best_met = -1;
   int best_extras = 0;
+  int best_stairs = 0;  // UnservableStairRooms of the best layout
   std::optional<Layout> best;
   std::optional<ShapeClass> best_shape;
   std::string last_failure;
@@ -299,14 +330,16 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     BriefCheck check = CheckBrief(brief, ps.layout);
     const int met = check.met();
     const int extras = extras_of(ps.layout);
-    if (met > best_met || (met == best_met && extras < best_extras)) {
+    const int stairs = UnservableStairRooms(ps.layout);
+    if (met > best_met || (met == best_met && (stairs < best_stairs || (stairs == best_stairs && extras < best_extras)))) {
       best_met = met;
       best_extras = extras;
+      best_stairs = stairs;
       best = std::move(ps.layout);
       best_shape = ps.shape;
     }
     if (best_met == goal && since_goal < 0) since_goal = 0;
-    if (best_met == goal && best_extras == 0) break;
+    if (best_met == goal && best_extras == 0 && best_stairs == 0) break;
   }
   PlanRound round;
   round.round = 0;

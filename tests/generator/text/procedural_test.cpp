@@ -5,7 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -194,6 +197,48 @@ TEST_CASE("villa eval --json on procedural prompts reports every prompt and the 
   CHECK(out["overall"]["rr"] == 1.0);
   CHECK(out["overall"]["brief_adherence"].get<double>() < 1.0);
   std::filesystem::remove_all(dir);
+}
+
+}  // namespace villa
+
+namespace villa {
+
+// The office villa of examples/prompts-scenes.jsonl once came out (seeds 5-7) with its 4 x 4 m staircase
+// room holding a door on each of its four sides; the stair serves at most three, so the bathroom behind
+// the fourth could not be entered (RCH 99.4 % on the prompt set). The search now prefers layouts without
+// such a room: no utility room of these plans has an opening on every side of its box.
+TEST_CASE("the procedural backend leaves a side of every staircase room without a door") {
+  const std::string text =
+      "A two-floor office villa: a meeting room and an office with a desk by the window, a kitchen and a bathroom "
+      "on the ground floor; a meeting room, two offices and a bathroom upstairs. Put a TV in the meeting room.";
+  for (std::uint64_t seed : {5u, 6u, 7u}) {
+    PlanOptions options;
+    options.seed = seed;
+    PlanSummary plan = PlanLayout(text, options);
+    INFO("seed " << seed << "\n" << plan.BriefReport());
+    REQUIRE(plan.layout.has_value());
+    CHECK(plan.valid());
+    const Layout& layout = *plan.layout;
+    REQUIRE(layout.LevelCount() == 2);
+    for (const Room& room : layout.rooms) {
+      if (room.category != Category::kUtilityRoom) continue;
+      double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+      for (const Point& p : room.polygon) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+      std::set<int> sides;
+      for (const auto* list : {&layout.entrances, &layout.doors, &layout.opens})
+        for (const Element& e : *list) {
+          if (!e.OnLevel(room.level)) continue;
+          const double mx = (e.shape.a.x + e.shape.b.x) / 2, my = (e.shape.a.y + e.shape.b.y) / 2;
+          const bool inside_x = mx > x0 - 0.05 && mx < x1 + 0.05, inside_y = my > y0 - 0.05 && my < y1 + 0.05;
+          if (inside_y && std::abs(mx - x0) < 0.05) sides.insert(0);
+          if (inside_y && std::abs(mx - x1) < 0.05) sides.insert(1);
+          if (inside_x && std::abs(my - y0) < 0.05) sides.insert(2);
+          if (inside_x && std::abs(my - y1) < 0.05) sides.insert(3);
+        }
+      INFO(room.name());
+      CHECK(sides.size() < 4);
+    }
+  }
 }
 
 }  // namespace villa
