@@ -33,17 +33,10 @@ using testing::ScriptedServer;
 Reply Vectors(const std::vector<std::vector<double>>& vectors) {
   Json data = Json::array();
   for (size_t i = 0; i < vectors.size(); ++i) data.push_back({{"object", "embedding"}, {"index", i}, {"embedding", vectors[i]}});
-  return {200, Json{{"object", "list"}, {"data", data}, {"model", "embedder"}}.dump(), 0.0, ""};
+  return testing::EmbeddingsReply(data);
 }
 
-LlmOptions EmbeddingModel(const ScriptedServer& server) {
-  LlmOptions o;
-  o.url = server.url();
-  o.model = "villa-embed";
-  o.timeout_s = 5;
-  o.max_retries = 0;
-  return o;
-}
+LlmOptions EmbeddingModel(const ScriptedServer& server) { return testing::ScriptedOptions(server, "villa-embed"); }
 
 AssetRecord Procedural(const std::string& category, Vec3 size) {
   auto id = ProceduralAssetId(category, size, "modern", 1);

@@ -41,9 +41,7 @@ Json Revision(const scene::RoomPlan& draft, const std::string& drop, const std::
 
 critic::GraphPlannerOptions Model(const ScriptedServer& server) {
   critic::GraphPlannerOptions o;
-  o.llm.url = server.url();
-  o.llm.model = "villa-planner";
-  o.llm.max_retries = 0;
+  o.llm = testing::ScriptedOptions(server, "villa-planner");
   return o;
 }
 

@@ -54,10 +54,8 @@ critic::CriticOptions ModelCritic(const ScriptedServer& server, int rounds = 1, 
   critic::CriticOptions o;
   o.kind = critic::CriticKind::kMllm;
   o.rounds = rounds;
-  o.llm.url = server.url();
-  o.llm.model = "villa-critic";
-  o.llm.timeout_s = 20;
-  o.llm.max_retries = 0;
+  o.llm = testing::ScriptedOptions(server, "villa-critic");
+  o.llm.timeout_s = 20;  // rendering and encoding the views runs beside the server on a loaded machine
   o.views.size_px = size_px;
   o.views.labels = true;
   return o;

@@ -19,18 +19,10 @@ using testing::Reply;
 using testing::ScriptedServer;
 
 LlmOptions OptionsFor(const ScriptedServer& server) {
-  LlmOptions o;
-  o.url = server.url();
-  o.model = "villa-critic";
-  o.timeout_s = 5;
+  LlmOptions o = testing::ScriptedOptions(server, "villa-critic", 2);
   o.backoff_initial_s = 0.01;
   o.backoff_max_s = 0.5;
-  o.max_retries = 2;
   return o;
-}
-
-Reply EmbeddingAnswer(const Json& data) {
-  return {200, Json{{"object", "list"}, {"data", data}, {"model", "embedder"}}.dump(), 0.0, ""};
 }
 
 }  // namespace
@@ -96,7 +88,7 @@ TEST_CASE("a chat with images sends them as image_url data URIs after the text, 
 }
 
 TEST_CASE("embeddings come back in input order whatever order the server lists them in") {
-  ScriptedServer server({EmbeddingAnswer(Json::array({Json{{"object", "embedding"}, {"index", 1}, {"embedding", {0.5, 0.25}}},
+  ScriptedServer server({testing::EmbeddingsReply(Json::array({Json{{"object", "embedding"}, {"index", 1}, {"embedding", {0.5, 0.25}}},
                                                       Json{{"object", "embedding"}, {"index", 0}, {"embedding", {1, -2}}}}))});
   LlmOptions o = OptionsFor(server);
   o.api_key = "sk-embed";
@@ -113,7 +105,7 @@ TEST_CASE("embeddings come back in input order whatever order the server lists t
 
 TEST_CASE("bad embedding answers are errors naming the entry") {
   auto error_for = [](const Json& data, int texts = 2) {
-    ScriptedServer server({EmbeddingAnswer(data)});
+    ScriptedServer server({testing::EmbeddingsReply(data)});
     std::vector<std::string> input(texts, "x");
     auto answer = Embeddings(OptionsFor(server), input);
     REQUIRE_FALSE(answer);
@@ -137,7 +129,7 @@ TEST_CASE("bad embedding answers are errors naming the entry") {
 }
 
 TEST_CASE("embeddings follow the retry policy: 5xx retried, other 4xx fail at once with the server's words") {
-  ScriptedServer flaky({Failure(503, "warming up"), EmbeddingAnswer(Json::array({Json{{"index", 0}, {"embedding", {1}}}}))});
+  ScriptedServer flaky({Failure(503, "warming up"), testing::EmbeddingsReply(Json::array({Json{{"index", 0}, {"embedding", {1}}}}))});
   auto answer = Embeddings(OptionsFor(flaky), {"x"});
   REQUIRE(answer);
   CHECK(answer->http_attempts == 2);

@@ -20,14 +20,7 @@ using testing::Failure;
 using testing::Json;
 using testing::ScriptedServer;
 
-LlmOptions OptionsFor(const ScriptedServer& server) {
-  LlmOptions o;
-  o.url = server.url();
-  o.model = "villa-json";
-  o.timeout_s = 5;
-  o.max_retries = 0;
-  return o;
-}
+LlmOptions OptionsFor(const ScriptedServer& server) { return testing::ScriptedOptions(server, "villa-json"); }
 
 struct TempDir {
   fs::path path;

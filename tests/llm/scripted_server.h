@@ -13,6 +13,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "llm/client.h"
+
 namespace villa::testing {
 
 using Json = nlohmann::ordered_json;
@@ -32,6 +34,11 @@ inline Reply Completion(const std::string& content, const std::string& finish_re
                                           {"message", Json{{"role", "assistant"}, {"content", content}}},
                                           {"finish_reason", finish_reason}}})}};
   return {200, body.dump(), 0.0, ""};
+}
+
+// An /v1/embeddings answer holding `data` (a list of {"object": "embedding", "index", "embedding"}).
+inline Reply EmbeddingsReply(const Json& data) {
+  return {200, Json{{"object", "list"}, {"data", data}, {"model", "embedder"}}.dump(), 0.0, ""};
 }
 
 inline Reply Failure(int status, const std::string& message, const std::string& retry_after = "") {
@@ -92,5 +99,15 @@ class ScriptedServer {
   std::vector<Json> bodies_;
   std::vector<std::string> authorization_;
 };
+
+// Options that reach `server` as `model`: a 5 s timeout and `max_retries` retries (none unless asked).
+inline LlmOptions ScriptedOptions(const ScriptedServer& server, const std::string& model, int max_retries = 0) {
+  LlmOptions o;
+  o.url = server.url();
+  o.model = model;
+  o.timeout_s = 5;
+  o.max_retries = max_retries;
+  return o;
+}
 
 }  // namespace villa::testing
