@@ -6,8 +6,10 @@
 // of `villa furnish`), also the share of the graphs' semantic edges satisfied per relation type and of the
 // interaction zones kept clear, before the critic (the solver alone) and after it, and the critic's
 // seconds a room. `make bench` runs it with procedural assets, without and with the offline critic;
-//   villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose]
+//   villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose] [--unmet] [--type T]
 // --library furnishes with an imported asset library instead (villa assets import --library DIR).
+// --unmet lists, room by room, every relation and zone that does not hold after the critic; --type furnishes
+// only the rooms of one type (kitchen, living-room, ...), for quick measures while working on one.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -85,7 +87,8 @@ int main(int argc, char** argv) {
   uint64_t villas = 50, seed = 7;
   std::string library_dir;
   std::string critic_name = "none";
-  bool verbose = false;
+  bool verbose = false, unmet = false;
+  std::string only_type;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--villas" && i + 1 < argc) villas = std::strtoull(argv[++i], nullptr, 10);
@@ -93,8 +96,10 @@ int main(int argc, char** argv) {
     else if (a == "--library" && i + 1 < argc) library_dir = argv[++i];
     else if (a == "--critic" && i + 1 < argc) critic_name = argv[++i];
     else if (a == "--verbose") verbose = true;
+    else if (a == "--unmet") unmet = true;
+    else if (a == "--type" && i + 1 < argc) only_type = argv[++i];
     else {
-      std::fprintf(stderr, "usage: villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose]\n");
+      std::fprintf(stderr, "usage: villa_bench_furnish [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--verbose] [--unmet] [--type T]\n");
       return 2;
     }
   }
@@ -120,7 +125,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Tally> by_type, by_shape, by_count;
   Tally total, rich, small_bath;
   int library_assets = 0, procedural_assets = 0, fallbacks = 0;
-  std::vector<std::string> failures;
+  std::vector<std::string> failures, unmet_lines;
   double wall = 0.0;
   critic::RelationTally before, after;
   std::vector<double> critic_seconds;
@@ -131,6 +136,11 @@ int main(int argc, char** argv) {
     options.seed = seed;
     options.check_reach = false;  // the solver alone; bench/reach.cpp measures reachability and its feedback
     options.critic = critic::MakeRoomCritic(critic_options);
+    if (!only_type.empty()) {
+      for (const Room& room : v.layout.rooms)
+        if (CategoryName(room.category) == only_type) options.rooms.push_back(room.name());
+      if (options.rooms.empty()) continue;
+    }
     auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
     if (!furnished.ok()) {
       std::fprintf(stderr, "%s: %s\n", v.name.c_str(), furnished.error().c_str());
@@ -151,6 +161,9 @@ int main(int argc, char** argv) {
             (*tally)[name].satisfied += n.satisfied, (*tally)[name].measured += n.measured, (*tally)[name].lost += n.lost;
           }
         critic_seconds.push_back(r.critic->seconds);
+        if (unmet)
+          for (const auto& line : r.critic->record["relations_after"]["unmet"])
+            unmet_lines.push_back(v.name + " " + r.room + " (" + FormatFixed(r.area, 1) + " m2): " + line.get<std::string>());
         for (const solver::ActionResult& a : r.solve->actions)
           critic_removed += a.action.kind == solver::ActionKind::kRemoveEntity && a.action.reason.rfind("critic:", 0) == 0 &&
                             a.status != solver::ActionStatus::kRefused;
@@ -225,6 +238,10 @@ int main(int argc, char** argv) {
                 relations.Render().c_str());
     std::printf("critic: %.3f s a room on average (max %.3f s), included in the seconds above; %d objects removed by it\n",
                 sum / critic_seconds.size(), worst, critic_removed);
+  }
+  if (unmet) {
+    std::printf("\nrelations and zones that do not hold after the critic (%zu):\n", unmet_lines.size());
+    for (const std::string& line : unmet_lines) std::printf("  %s\n", line.c_str());
   }
   std::printf("\nrooms not clean or with objects removed (%zu):\n", failures.size());
   for (const std::string& f : failures) std::printf("  %s\n", f.c_str());

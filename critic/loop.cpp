@@ -14,6 +14,7 @@
 #include "critic/offline.h"
 #include "critic/prompts.h"
 #include "util/atomic_file.h"
+#include "util/text_table.h"
 
 namespace villa::critic {
 namespace {
@@ -89,6 +90,22 @@ Json EnergyJson(const solver::EnergyTerms& e) {
   return {{"total", Round4(e.total)}, {"collision", Round4(e.collision)}, {"support", Round4(e.support)}, {"semantic", Round4(e.semantic)}};
 }
 
+// What does not hold, a line each: "sofa-0 face_to tv-stand-0: angle 42.0 deg > 30", "zone of bed-0 (sides,
+// 0.6 m): nightstand-1".
+Json UnmetLines(const RoomRelations& r) {
+  Json lines = Json::array();
+  for (const EdgeCheck& c : r.edges)
+    if (c.present && !c.satisfied)
+      lines.push_back(c.edge.source + " " + std::string(scene::SemanticRelationName(c.edge.relation)) + " " + c.edge.target + ": " + c.detail);
+  for (const ZoneCheck& z : r.zones) {
+    if (z.clear()) continue;
+    std::string line = "zone of " + z.owner + " (" + z.side + ", " + FormatFixed(z.depth, 2) + " m):";
+    for (const std::string& id : z.intruders) line += " " + id;
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
 Json RelationsJson(const RoomRelations& r) {
   RelationTally tally;
   AddToTally(r, tally);
@@ -97,7 +114,8 @@ Json RelationsJson(const RoomRelations& r) {
           {"edges", r.edges.size()},
           {"zones_clear", r.ZonesClear()},
           {"zones", r.zones.size()},
-          {"by_relation", TallyJson(tally)}};
+          {"by_relation", TallyJson(tally)},
+          {"unmet", UnmetLines(r)}};
 }
 
 // ---- the session helpers
