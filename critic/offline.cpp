@@ -151,8 +151,11 @@ std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, doub
   if (t < half + end || t > length - half - end) return std::nullopt;
   const solver::ObjectPlacement& now = room.solution.placements[i];
   const double z = o.relation == solver::Relation::kOnWall ? now.pose.z : room.problem.floor_z;
+  // Hung things keep 0.1 m from openings all round, as the solver's opening prisms demand (solver/layer.cpp).
+  const double around = o.relation == solver::Relation::kOnWall ? 0.1 : 0.01, rise = o.relation == solver::Relation::kOnWall ? 0.1 : 0.0;
   for (const solver::WallOpening& op : wall.openings)
-    if (t + half > op.t0 - 0.01 && t - half < op.t1 + 0.01 && z < op.z1 && z + o.asset.size.z * scale > op.z0) return std::nullopt;
+    if (t + half > op.t0 - around && t - half < op.t1 + around && z < op.z1 + rise && z + o.asset.size.z * scale > op.z0 - rise)
+      return std::nullopt;
   const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
   const Point c = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, o.wall_gap + 0.5 * o.asset.size.y * scale));
   Candidate out;
@@ -186,10 +189,12 @@ std::vector<double> GapsFor(const scene::SemanticEdge& e) {
 
 // Candidate poses for object m so that an edge with `other` may hold: in place (turned), around the other
 // object, or along the walls.
-std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const scene::SemanticEdge& edge, double scale) {
+// `other_box`: the other object's box where it is about to stand (default: where it stands).
+std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const scene::SemanticEdge& edge, double scale,
+                                     const ObjectBox* other_box = nullptr) {
   const solver::ProblemObject& o = room.solution.objects[m];
   const solver::ObjectPlacement& now = room.solution.placements[m];
-  const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
+  const ObjectBox ob = other_box ? *other_box : BoxOf(room.solution.objects[other], room.solution.placements[other]);
   std::vector<Candidate> out;
   if (WallBound(o)) {
     for (size_t w = 0; w < room.problem.walls.size(); ++w) {
@@ -508,7 +513,9 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
     const double scale = room.solution.placements[mover].pose.scale;
     const std::vector<Candidate> candidates = CandidatesFor(room, mover, room.Root(other), c.edge, scale);
     RankInto(room, mover, candidates, now, options.clearance, line, ranked);
-    if (ranked.empty() && o.scale_min < scale - 1e-9)
+    // At the smallest scale too when nothing fits at this one, and always for wall decor (a smaller picture
+    // fits between the window and the corner, centred over the sofa).
+    if ((ranked.empty() || o.relation == solver::Relation::kOnWall) && o.scale_min < scale - 1e-9)
       RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
     if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
   }
@@ -814,8 +821,8 @@ std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose&
 // hub (the painting) is hung again behind it where it lands. Every member must land free of everything
 // outside the cluster, on the free floor, out of the keep-outs (along its wall, clear of openings); the moves
 // are ordered so none enters the place of one still to move. Ranked like single moves.
-std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, const Unmet& now, const OfflineProposalOptions& options,
-                                            const std::string& why) {
+std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, const scene::SemanticEdge& edge, const Unmet& now,
+                                            const OfflineProposalOptions& options, const std::string& why) {
   if (room.Root(s) == room.Root(t)) return {};
   const int hub = HubOf(room, s, t);
   const int other = hub == room.Root(t) ? room.Root(s) : room.Root(t);
@@ -858,6 +865,21 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         std::find(before_hub.begin(), before_hub.end(), a) == before_hub.end())
       before_hub.push_back(a);
   }
+  // The other end, when it stands free on the floor with edges only to the hub's own object (not to what
+  // stands on it), may be re-seated against the hub after the move.
+  std::vector<scene::SemanticEdge> between;
+  bool reseat = room.parent[other] < 0 && room.solution.objects[other].parent == "floor" &&
+                room.solution.objects[other].relation == solver::Relation::kOnTop &&
+                !Covering(room.solution.objects[other], room.solution.placements[other].pose.scale);
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a < 0 || b < 0) continue;
+    if ((a == other && b == hub) || (a == hub && b == other)) between.push_back(e);
+    else if ((room.Root(a) == other && b == hub) || (a == hub && room.Root(b) == other) || (room.Root(a) == hub && b == other) ||
+             (a == other && room.Root(b) == hub))
+      reseat = false;
+  }
+  reseat = reseat && !between.empty();
   const solver::Pose& at = room.solution.placements[hub].pose;
   const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
   struct Motion {
@@ -965,6 +987,38 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       const solver::Pose hub_at = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == hub; })->second.pose;
       for (int h : hung)
         if (auto c = HungBehind(room, h, hub_at)) poses.push_back({h, *c});
+      if (reseat && !mo.other_at) {
+        // The other end re-seated against the hub where it lands (the side table at the sofa's end the slide
+        // made room for): the first pose where every edge between the two holds, clear of everything.
+        solver::ObjectPlacement hub_pl = room.solution.placements[hub];
+        hub_pl.pose = hub_at;
+        const ObjectBox hub_box = BoxOf(ho, hub_pl);
+        std::vector<ObjectBox> landed;
+        for (const auto& [k, cand] : poses) {
+          if (Covering(room.solution.objects[k], cand.pose.scale)) continue;
+          solver::ObjectPlacement pl = room.solution.placements[k];
+          pl.pose = cand.pose;
+          landed.push_back(BoxOf(room.solution.objects[k], pl));
+        }
+        const solver::ObjectPlacement& op = room.solution.placements[other];
+        for (const Candidate& c : CandidatesFor(room, other, hub, edge, op.pose.scale, &hub_box)) {
+          solver::ObjectPlacement pl = op;
+          pl.pose = c.pose;
+          const ObjectBox ob = BoxOf(room.solution.objects[other], pl);
+          bool holds = true;
+          for (const scene::SemanticEdge& e : between) {
+            const bool forward = room.Find(e.source) == other;
+            holds = holds && CheckEdge(e, forward ? ob : hub_box, forward ? hub_box : ob).satisfied;
+          }
+          if (!holds) continue;
+          if (std::any_of(landed.begin(), landed.end(), [&](const ObjectBox& b) { return PlanGap(ob, b) < options.clearance; })) continue;
+          std::set<int> ignore = moving;
+          ignore.insert(other);
+          if (!Free(room, other, c.pose, options.clearance, ignore)) continue;
+          poses.push_back({other, c});
+          break;
+        }
+      }
       for (int f : before_hub) {
         if (mo.turn != 0.0) continue;  // a turned hub faces another wall: its own edges decide
         const solver::WallEdge& wall = room.problem.walls[room.solution.placements[f].wall];
@@ -1045,7 +1099,7 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
       // A run of wall-standing objects chained next_to (a kitchen's) laid out again as a whole.
       for (std::vector<Step>& run : RunMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(run));
       // The edge's hub with its cluster, moved as one piece.
-      for (std::vector<Step>& moved : ClusterMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(moved));
+      for (std::vector<Step>& moved : ClusterMoves(room, s, t, c.edge, now, options, line)) single.alternatives.push_back(std::move(moved));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;
