@@ -885,6 +885,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   struct Motion {
     double dx = 0.0, dy = 0.0, turn = 0.0;
     std::optional<Candidate> other_at;  // the other end moved too
+    std::optional<Candidate> hub_at;    // the hub to another wall's slot
   };
   std::vector<Motion> motions;
   std::vector<Point> axes;
@@ -931,6 +932,43 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       }
     }
   }
+  // A hub against a wall facing the other end on the wall across (the sofa and the TV stand on opposite
+  // walls): the hub to every 25 cm of every wall it may stand on, the other end to the foot of its axis on
+  // the first wall it faces across the room, when the gap between them is in range.
+  if (facing_gap && on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
+    const solver::ProblemObject& oo = room.solution.objects[other];
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (ho.wall >= 0 && static_cast<int>(w) != ho.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const double length = geo::Dist(wall.a, wall.b);
+      const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
+      for (double tw = 0.0; tw < length; tw += 0.25) {
+        auto slot = OnWallAt(room, hub, static_cast<int>(w), tw, at.scale);
+        if (!slot) continue;
+        const Point c{slot->pose.x, slot->pose.y};
+        // The nearest wall across, facing back, whose span the hub's axis meets.
+        std::optional<Candidate> across;
+        double nearest = 1e9;
+        for (size_t v = 0; v < room.problem.walls.size(); ++v) {
+          if (v == w || (oo.wall >= 0 && static_cast<int>(v) != oo.wall)) continue;
+          const solver::WallEdge& facing_wall = room.problem.walls[v];
+          const Point dv = geo::Unit(geo::Sub(facing_wall.b, facing_wall.a)), nv = geo::Left(dv);
+          if (geo::Dot(nv, n) > -0.995) continue;
+          const double dist = geo::Dot(geo::Sub(c, facing_wall.a), nv);  // from that wall to the hub's centre
+          if (dist <= 0.0 || dist >= nearest) continue;
+          const double t_foot = geo::Dot(geo::Sub(c, facing_wall.a), dv);
+          auto stand = OnWallAt(room, other, static_cast<int>(v), t_foot, room.solution.placements[other].pose.scale);
+          if (!stand) continue;
+          const double gap = dist - 0.5 * ho.asset.size.y * at.scale - (oo.wall_gap + oo.asset.size.y * room.solution.placements[other].pose.scale);
+          if (gap < facing_gap->first || gap > facing_gap->second) continue;
+          nearest = dist;
+          across = stand;
+        }
+        if (!across) continue;
+        motions.push_back({c.x - at.x, c.y - at.y, solver::WrapAngle(slot->pose.yaw - at.yaw), across, slot});
+      }
+    }
+  }
   std::vector<MultiMove> layouts;
   for (const Variant& variant : variants) {
     const std::vector<int>& members = variant.members;
@@ -965,7 +1003,13 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         Candidate cand;
         cand.pose = {at.x + cs * rx - sn * ry + mo.dx, at.y + sn * rx + cs * ry + mo.dy, pl.pose.z,
                      solver::WrapAngle(pl.pose.yaw + mo.turn), pl.pose.scale};
-        if (room.solution.objects[k].relation == solver::Relation::kAgainstWall) {
+        if (k == hub && mo.hub_at) {
+          cand = *mo.hub_at;
+        } else if (room.solution.objects[k].relation == solver::Relation::kAgainstWall) {
+          if (mo.turn != 0.0) {  // a turned piece leaves its wall: what stands against it cannot come along
+            ok = false;
+            break;
+          }
           const solver::WallEdge& wall = room.problem.walls[pl.wall];
           const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
           auto on = OnWallAt(room, k, pl.wall, geo::Dot(geo::Sub({cand.pose.x, cand.pose.y}, wall.a), d), pl.pose.scale);
