@@ -91,20 +91,6 @@ std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame
   return ts;
 }
 
-// The free wall from `t` (m along it) toward its start (`way` -1) or its end (+1): to the wall's end or to
-// the nearest opening that comes down to where a nightstand or side table stands (a door; a window with
-// its sill below 0.7 m above the floor at `floor_z`; openings are in world heights).
-double SideFree(const WallEdge& wall, const WallFrame& wf, double floor_z, double t, double way) {
-  constexpr double kLowOpening = 0.7;  // m above the floor
-  double free = way > 0.0 ? wf.length - t : t;
-  for (const WallOpening& o : wall.openings) {
-    if (o.z0 >= floor_z + kLowOpening) continue;
-    if (way > 0.0 && o.t1 > t) free = std::min(free, std::max(0.0, o.t0 - t));
-    if (way < 0.0 && o.t0 < t) free = std::min(free, std::max(0.0, t - o.t1));
-  }
-  return free;
-}
-
 // A body standing on the floor with its back `gap` from a wall, facing into the room. `side_room`: the
 // wall length the objects meant to stand beside it need on each side (nightstands, side tables);
 // `hang_above`: something is to hang on the wall above it (the painting over the bed), so a window there
