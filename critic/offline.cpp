@@ -787,6 +787,7 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
     int shrink = 0;  // the scales: 0 as they are, 1 the bed at its smallest, 2 everything that can be
     double moved = 0.0;
     std::vector<std::pair<int, Candidate>> poses;
+    std::vector<std::pair<int, Candidate>> carried;  // rugs moved with the bed, last
     std::vector<int> replace;  // others to re-place afterwards
   };
   std::vector<Layout> layouts;
@@ -853,17 +854,33 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
             if (m && Free(room, k, m->pose, options.clearance, group))
               poses.push_back({k, *m});
           }
+          // A rug keeps its place relative to the bed (it lies under or beside it: nothing collides with
+          // it, so it moves last, in any order) where the floor is free for it.
+          std::vector<std::pair<int, Candidate>> carried;
+          const solver::Pose& from = room.solution.placements[g.bed].pose;
+          const double turn = c->pose.yaw - from.yaw, cos_t = std::cos(turn), sin_t = std::sin(turn);
+          for (int k : g.others) {
+            const solver::Pose& at = room.solution.placements[k].pose;
+            if (!Covering(room.solution.objects[k], at.scale)) continue;
+            const double dx = at.x - from.x, dy = at.y - from.y;
+            Candidate rug;
+            rug.pose = {c->pose.x + cos_t * dx - sin_t * dy, c->pose.y + sin_t * dx + cos_t * dy, at.z, solver::WrapAngle(at.yaw + turn),
+                        at.scale};
+            if (Free(room, k, rug.pose, options.clearance, group)) carried.push_back({k, rug});
+          }
           std::vector<solver::ObjectPlacement> placements = room.solution.placements;
           double moved = 0.0;
           for (const auto& [k, m] : poses) {
             placements = room.Moved(placements, k, m.pose, m.wall);
             moved += std::hypot(m.pose.x - room.solution.placements[k].pose.x, m.pose.y - room.solution.placements[k].pose.y);
           }
+          for (const auto& [k, m] : carried) placements = room.Moved(placements, k, m.pose, m.wall);
           const RoomRelations r = MeasureRelations(room.solution.objects, placements, room.graph);
           const Unmet u = UnmetOf(r);
           if (!(u < now)) continue;
-          Layout l{u, shrink, moved, std::move(poses), {}};
+          Layout l{u, shrink, moved, std::move(poses), std::move(carried), {}};
           for (int k : g.others) {
+            if (std::any_of(l.carried.begin(), l.carried.end(), [&](const auto& p) { return p.first == k; })) continue;
             const std::string& id = room.solution.objects[k].id;
             const bool unmet = std::any_of(r.edges.begin(), r.edges.end(),
                                            [&](const EdgeCheck& e) { return !e.satisfied && (e.edge.source == id || e.edge.target == id); });
@@ -887,6 +904,10 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
     std::vector<Step> steps;
     for (const auto& [k, c] : order) {
       const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the bed and its group laid out again)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (const auto& [k, c] : l.carried) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the rug moves with the bed)"));
       steps.insert(steps.end(), more.begin(), more.end());
     }
     // A smaller bed brings its pillows closer together: the solver lays them out again on it.
