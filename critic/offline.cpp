@@ -767,10 +767,11 @@ std::optional<BedGroup> BedGroupOf(const Room& room, int bed) {
 // where the group just clears a wall end or an opening), at the group's scales, with the bed at its
 // smallest, and with everything that carries nothing at its smallest: the nightstands 3 cm beside it on
 // their sides of it (one of either side on the side left free), what hangs above it centred over it at
-// its height (left where it is when a window or door is there). A layout is tried only where each member
-// is free of everything outside the group, in an order where none enters the place of one still to move;
-// the free-standing things related to the bed are re-placed by the solver afterwards when the layout
-// leaves their edges unmet. Ranked like single moves (then the less shrunk first), the best `keep` kept.
+// its height (left where it is when a window or door is there), a rug related to the bed carried along
+// (its place relative to the bed kept where the floor is free for it). A layout is tried only where each
+// member is free of everything outside the group, in an order where none enters the place of one still to
+// move; the other free-standing things related to the bed are re-placed by the solver afterwards when the
+// layout leaves their edges unmet. Ranked like single moves (then the less shrunk first), the best `keep`.
 std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g, const Unmet& now, const OfflineProposalOptions& options,
                                              const std::string& why) {
   constexpr double kBeside = 0.03;  // m between the bed and a nightstand (next_to asks at most 0.1)
