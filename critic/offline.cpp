@@ -147,7 +147,8 @@ std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, doub
   const solver::WallEdge& wall = room.problem.walls[w];
   const double length = geo::Dist(wall.a, wall.b);
   const double half = 0.5 * o.asset.size.x * scale;
-  if (t < half + 0.01 || t > length - half - 0.01) return std::nullopt;
+  const double end = o.relation == solver::Relation::kOnWall ? 0.1 : 0.01;  // wall decor keeps 10 cm from the ends (solver/place.cpp)
+  if (t < half + end || t > length - half - end) return std::nullopt;
   const solver::ObjectPlacement& now = room.solution.placements[i];
   const double z = o.relation == solver::Relation::kOnWall ? now.pose.z : room.problem.floor_z;
   for (const solver::WallOpening& op : wall.openings)
@@ -558,6 +559,36 @@ std::vector<int> RunThrough(const Room& room, int m) {
   return order;
 }
 
+// Several objects moved together (a run laid out again, a cluster carried): the relations left unmet, how
+// far they move, the moves in the order they are applied, and what the solver re-places after them.
+struct MultiMove {
+  Unmet unmet;
+  double moved = 0.0;
+  std::vector<std::pair<int, Candidate>> poses;
+  std::vector<int> ring;
+};
+
+// The best `keep` of them (fewest unmet, then least moved) as step sequences.
+std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<MultiMove> moves, int keep, const std::string& why,
+                                              const std::string& how) {
+  std::stable_sort(moves.begin(), moves.end(), [](const MultiMove& a, const MultiMove& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const MultiMove& l : moves) {
+    if (static_cast<int>(out.size()) >= keep) break;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : l.poses) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (" + how + ")"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (int k : l.ring) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    out.push_back(std::move(steps));
+  }
+  return out;
+}
+
 // An order of moves taking each object of `poses` to its pose, where none enters the place of one still to
 // move (height ranges counted: an upper cabinet hangs over a counter). Where every remaining one waits for
 // another (a cycle: the cooker must pass the fridge), one of them is parked first on another wall (all of
@@ -578,6 +609,8 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
   const auto meets = [&](const ObjectBox& box, double top, const ObjectBox& other, double other_top) {
     return PlanGap(box, other) < 0.02 && std::min(top, other_top) > std::max(box.z0, other.z0) - 0.05;  // with margins
   };
+  // A rug lies under the others: it neither blocks nor is blocked.
+  const auto covering = [&](size_t a) { return Covering(room.solution.objects[poses[a].first], at[a].pose.scale); };
   std::vector<bool> done(n, false), parked(n, false);
   for (size_t step = 0; step < 2 * n + 1; ++step) {
     int pick = -1;
@@ -585,7 +618,7 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
       if (done[a]) continue;
       bool clear = true;
       for (size_t b = 0; b < n && clear; ++b) {
-        if (b == a || done[b]) continue;
+        if (b == a || done[b] || covering(a) || covering(b)) continue;
         const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
         clear = !meets(target[a], target[a].z0 + height(a), there, there.z0 + height(b));
       }
@@ -652,12 +685,7 @@ std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Un
   constexpr double kJoint = 0.02;  // m between neighbours of the run
   double total = 0.0;
   for (int k : run) total += room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale + kJoint;
-  struct Layout {
-    Unmet unmet;
-    double moved = 0.0;
-    std::vector<std::pair<int, Candidate>> poses;  // in the order they are applied
-  };
-  std::vector<Layout> layouts;
+  std::vector<MultiMove> layouts;
   for (size_t w = 0; w < room.problem.walls.size(); ++w) {
     bool allowed = true;
     for (int k : run) allowed = allowed && (room.solution.objects[k].wall < 0 || room.solution.objects[k].wall == static_cast<int>(w));
@@ -699,25 +727,264 @@ std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Un
           moved += std::hypot(c.pose.x - room.solution.placements[k].pose.x, c.pose.y - room.solution.placements[k].pose.y);
         }
         const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
-        if (u < now) layouts.push_back({u, moved, std::move(order)});
+        if (u < now) layouts.push_back({u, moved, std::move(order), {}});
       }
     }
   }
-  std::stable_sort(layouts.begin(), layouts.end(), [](const Layout& a, const Layout& b) {
-    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
-    return a.moved < b.moved;
-  });
-  std::vector<std::vector<Step>> out;
-  for (const Layout& l : layouts) {
-    if (static_cast<int>(out.size()) >= options.alternatives) break;
-    std::vector<Step> steps;
-    for (const auto& [k, c] : l.poses) {
-      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the run laid out again)"));
-      steps.insert(steps.end(), more.begin(), more.end());
-    }
-    out.push_back(std::move(steps));
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "the run laid out again");
+}
+
+// The hub of an edge: of its two ends (what stands on nothing), the one with more relations to other objects
+// (the dining table of the chairs, the bed of the nightstands, the sofa of the TV stand).
+int HubOf(const Room& room, int s, int t) {
+  std::map<int, int> degree;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a >= 0 && b >= 0 && room.Root(a) != room.Root(b)) ++degree[room.Root(a)], ++degree[room.Root(b)];
   }
-  return out;
+  return degree[room.Root(t)] >= degree[room.Root(s)] ? room.Root(t) : room.Root(s);
+}
+
+// The cluster of a hub: the objects standing free on the floor joined to it by edges through such objects
+// (a sofa's coffee table, side tables and floor lamp, the rug and armchairs of its coffee table); for a hub
+// against a wall also what stands against the same wall joined to it (a bed's nightstands). `keep` (the
+// edge's other end) is not in it; neither is what hangs on walls or from the ceiling. `near_only`: only the
+// hub's own neighbours (and floor coverings), leaving the rest (the armchairs of the coffee table) in place.
+std::vector<int> ClusterOf(const Room& room, int hub, int keep, bool near_only) {
+  const auto free_standing = [&](int k) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    return room.parent[k] < 0 && o.parent == "floor" && o.relation == solver::Relation::kOnTop;
+  };
+  const auto same_wall = [&](int k) {
+    return room.solution.objects[hub].relation == solver::Relation::kAgainstWall && room.parent[k] < 0 &&
+           room.solution.objects[k].relation == solver::Relation::kAgainstWall &&
+           room.solution.placements[k].wall == room.solution.placements[hub].wall;
+  };
+  std::vector<int> cluster;
+  std::set<int> seen{hub, keep};
+  std::vector<int> stack{hub};
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    for (const scene::SemanticEdge& e : room.graph) {
+      const int a = room.Find(e.source), b = room.Find(e.target);
+      if (a < 0 || b < 0) continue;
+      const int ra = room.Root(a), rb = room.Root(b);
+      const int j = ra == k ? rb : rb == k ? ra : -1;
+      if (j < 0 || seen.count(j) || !(free_standing(j) || same_wall(j))) continue;
+      // Near only: the hub's own neighbours, and the floor coverings of any member (they move freely).
+      if (near_only && k != hub && !Covering(room.solution.objects[j], room.solution.placements[j].pose.scale)) continue;
+      seen.insert(j);
+      cluster.push_back(j);
+      if (free_standing(j)) stack.push_back(j);
+    }
+  }
+  return cluster;
+}
+
+// Where an object hung on a wall goes to be `behind` and `centred` on a target standing at `pose`: on the
+// nearest wall behind the target that faces the way it faces, at the foot of its centre; none when no such
+// wall is within 4 m or the spot is not free (an opening, the wall's end).
+std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose& pose) {
+  const Point facing{std::sin(pose.yaw), -std::cos(pose.yaw)};
+  std::optional<Candidate> best;
+  double nearest = 4.0;
+  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+    if (room.solution.objects[k].wall >= 0 && static_cast<int>(w) != room.solution.objects[k].wall) continue;
+    const solver::WallEdge& wall = room.problem.walls[w];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
+    if (geo::Dot(n, facing) < 0.995) continue;
+    const double behind = geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), n);  // m from the wall to the target's centre
+    if (behind <= 0.0 || behind >= nearest) continue;
+    if (auto c = OnWallAt(room, k, static_cast<int>(w), geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), d), room.solution.placements[k].pose.scale)) {
+      best = c;
+      nearest = behind;
+    }
+  }
+  return best;
+}
+
+// Cluster moves for an unmet edge: its hub and the hub's cluster moved as one rigid piece, so the relations
+// inside it keep holding (the sofa with its coffee table, side table and lamp slid until the painting above
+// it is centred, or carried 2-3 m before the TV stand; a bed with its nightstands along its wall). Motions:
+// slides along and across the hub's axes (along its wall for a hub against one) in 10 cm steps up to 3 m;
+// turns about the hub's centre (to face the other end, a quarter or half turn); and, when the hub faces the
+// other end standing against a wall at a gap (the TV stand 2-3 m before the sofa), the other end to every
+// 25 cm of every wall it may stand on with the hub carried to face it at that gap. What hangs `behind` the
+// hub (the painting) is hung again behind it where it lands. Every member must land free of everything
+// outside the cluster, on the free floor, out of the keep-outs (along its wall, clear of openings); the moves
+// are ordered so none enters the place of one still to move. Ranked like single moves.
+std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, const Unmet& now, const OfflineProposalOptions& options,
+                                            const std::string& why) {
+  if (room.Root(s) == room.Root(t)) return {};
+  const int hub = HubOf(room, s, t);
+  const int other = hub == room.Root(t) ? room.Root(s) : room.Root(t);
+  const solver::ProblemObject& ho = room.solution.objects[hub];
+  if (OnObject(ho) || ho.relation == solver::Relation::kOnWall || ho.relation == solver::Relation::kHanging) return {};
+  // The whole cluster moved, or only the hub's own neighbours with the rest of the cluster (the ring: the
+  // armchairs of the coffee table) re-placed by the solver afterwards; then the ring's relations are left out
+  // of the ranking (the solver mends them) and the real result decides in the loop.
+  struct Variant {
+    std::vector<int> members, ring;
+  };
+  std::vector<Variant> variants;
+  std::vector<int> all{hub};
+  for (int k : ClusterOf(room, hub, other, false)) all.push_back(k);
+  variants.push_back({all, {}});
+  std::vector<int> near{hub};
+  for (int k : ClusterOf(room, hub, other, true)) near.push_back(k);
+  if (near != all) {
+    Variant v{near, {}};
+    for (int k : all)
+      if (std::find(near.begin(), near.end(), k) == near.end()) v.ring.push_back(k);
+    variants.push_back(std::move(v));
+  }
+  if (all.size() > 1) variants.push_back({{hub}, std::vector<int>(all.begin() + 1, all.end())});  // the hub alone, all re-placed
+  // What hangs on a wall behind the hub, hung again behind it after the move.
+  std::vector<int> hung;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (e.relation == scene::SemanticRelation::kBehind && a >= 0 && b == hub && room.parent[a] < 0 &&
+        room.solution.objects[a].relation == solver::Relation::kOnWall && std::find(hung.begin(), hung.end(), a) == hung.end())
+      hung.push_back(a);
+  }
+  // What stands against a wall in front of the hub (the TV stand before the sofa), slid along its wall to
+  // stay before it after the move.
+  std::vector<int> before_hub;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (e.relation == scene::SemanticRelation::kFrontOf && a >= 0 && a != other && b == hub && room.parent[a] < 0 &&
+        room.solution.objects[a].relation == solver::Relation::kAgainstWall && room.solution.placements[a].wall >= 0 &&
+        std::find(before_hub.begin(), before_hub.end(), a) == before_hub.end())
+      before_hub.push_back(a);
+  }
+  const solver::Pose& at = room.solution.placements[hub].pose;
+  const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
+  struct Motion {
+    double dx = 0.0, dy = 0.0, turn = 0.0;
+    std::optional<Candidate> other_at;  // the other end moved too
+  };
+  std::vector<Motion> motions;
+  std::vector<Point> axes;
+  if (on_wall) {
+    const int w = room.solution.placements[hub].wall;
+    if (w < 0) return {};
+    axes.push_back(geo::Unit(geo::Sub(room.problem.walls[w].b, room.problem.walls[w].a)));
+  } else {
+    axes = {{std::cos(at.yaw), std::sin(at.yaw)}, {-std::sin(at.yaw), std::cos(at.yaw)}};
+    const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
+    const double face = std::atan2(ob.c.x - at.x, -(ob.c.y - at.y));
+    for (double turn : {solver::WrapAngle(face - at.yaw), kHalfPi, -kHalfPi, std::numbers::pi})
+      if (std::abs(turn) > 0.01) motions.push_back({0.0, 0.0, turn, std::nullopt});
+  }
+  for (const Point& axis : axes)
+    for (int k = -30; k <= 30; ++k)
+      if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt});
+  // The hub faces the other end, which stands against a wall in front of it at a gap: both placed anew.
+  std::optional<std::pair<double, double>> facing_gap;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a == other && b == hub && e.relation == scene::SemanticRelation::kFrontOf && e.params.min_gap && e.params.max_gap)
+      facing_gap = {*e.params.min_gap, *e.params.max_gap};
+  }
+  if (facing_gap && !on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
+    const solver::ProblemObject& oo = room.solution.objects[other];
+    const double scale = room.solution.placements[other].pose.scale;
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (oo.wall >= 0 && static_cast<int>(w) != oo.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const double length = geo::Dist(wall.a, wall.b);
+      const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
+      for (double tw = 0.0; tw < length; tw += 0.25) {
+        auto slot = OnWallAt(room, other, static_cast<int>(w), tw, scale);
+        if (!slot) continue;
+        const double yaw = std::atan2(-n.x, n.y);  // the hub faces the wall
+        for (double gap : {facing_gap->first + 0.05, 0.5 * (facing_gap->first + facing_gap->second), facing_gap->second - 0.05}) {
+          const double reach = 0.5 * oo.asset.size.y * scale + gap + 0.5 * ho.asset.size.y * at.scale;
+          const Point c = geo::Add({slot->pose.x, slot->pose.y}, geo::Scale(n, reach));
+          const double turn = solver::WrapAngle(yaw - at.yaw);
+          // The rigid motion taking the hub's centre to c, turned by `turn` about it.
+          motions.push_back({c.x - at.x, c.y - at.y, turn, slot});
+        }
+      }
+    }
+  }
+  std::vector<MultiMove> layouts;
+  for (const Variant& variant : variants) {
+    const std::vector<int>& members = variant.members;
+    std::vector<scene::SemanticEdge> graph;  // the edges the ranking counts: none of the ring's
+    for (const scene::SemanticEdge& e : room.graph) {
+      const int a = room.Find(e.source), b = room.Find(e.target);
+      const auto in_ring = [&](int k) {
+        return k >= 0 && std::find(variant.ring.begin(), variant.ring.end(), room.Root(k)) != variant.ring.end();
+      };
+      if (!in_ring(a) && !in_ring(b)) graph.push_back(e);
+    }
+    const Unmet before = variant.ring.empty() ? now : UnmetOf(MeasureRelations(room.solution.objects, room.solution.placements, graph));
+    std::set<int> cluster(members.begin(), members.end());
+    cluster.insert(variant.ring.begin(), variant.ring.end());  // the ring is re-placed: it does not block
+    cluster.insert(hung.begin(), hung.end());
+    cluster.insert(before_hub.begin(), before_hub.end());
+    for (const Motion& mo : motions) {
+      std::set<int> moving = cluster;
+      if (mo.other_at) moving.insert(other);
+      const double cs = std::cos(mo.turn), sn = std::sin(mo.turn);
+      std::vector<std::pair<int, Candidate>> poses;
+      if (mo.other_at) {
+        std::set<int> ignore = moving;
+        ignore.erase(other);
+        if (!Free(room, other, mo.other_at->pose, options.clearance, ignore)) continue;
+        poses.push_back({other, *mo.other_at});
+      }
+      bool ok = true;
+      for (int k : members) {
+        const solver::ObjectPlacement& pl = room.solution.placements[k];
+        const double rx = pl.pose.x - at.x, ry = pl.pose.y - at.y;
+        Candidate cand;
+        cand.pose = {at.x + cs * rx - sn * ry + mo.dx, at.y + sn * rx + cs * ry + mo.dy, pl.pose.z,
+                     solver::WrapAngle(pl.pose.yaw + mo.turn), pl.pose.scale};
+        if (room.solution.objects[k].relation == solver::Relation::kAgainstWall) {
+          const solver::WallEdge& wall = room.problem.walls[pl.wall];
+          const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+          auto on = OnWallAt(room, k, pl.wall, geo::Dot(geo::Sub({cand.pose.x, cand.pose.y}, wall.a), d), pl.pose.scale);
+          if (!on) {
+            ok = false;
+            break;
+          }
+          cand = *on;
+        }
+        std::set<int> ignore = moving;
+        ignore.erase(k);
+        if (!Free(room, k, cand.pose, options.clearance, ignore)) {
+          ok = false;
+          break;
+        }
+        poses.push_back({k, cand});
+      }
+      if (!ok) continue;
+      const solver::Pose hub_at = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == hub; })->second.pose;
+      for (int h : hung)
+        if (auto c = HungBehind(room, h, hub_at)) poses.push_back({h, *c});
+      for (int f : before_hub) {
+        if (mo.turn != 0.0) continue;  // a turned hub faces another wall: its own edges decide
+        const solver::WallEdge& wall = room.problem.walls[room.solution.placements[f].wall];
+        const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+        auto c = OnWallAt(room, f, room.solution.placements[f].wall, geo::Dot(geo::Sub({hub_at.x, hub_at.y}, wall.a), d),
+                          room.solution.placements[f].pose.scale);
+        std::set<int> ignore = moving;
+        ignore.insert(f);
+        if (c && Free(room, f, c->pose, options.clearance, ignore)) poses.push_back({f, *c});
+      }
+      std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+      for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
+      const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, graph));
+      if (!(u < before)) continue;
+      std::vector<std::pair<int, Candidate>> order;
+      if (!MoveOrder(room, poses, options.clearance, &order) || order.size() != poses.size()) continue;
+      layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), variant.ring});
+    }
+  }
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
 }
 
 // A bed and what belongs at its head: the things standing against the wall beside it (nightstands, by a
@@ -926,12 +1193,7 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
 std::optional<Attempt> GroupMove(solver::RoomSolver& session, const Room& room, int s, int t, const OfflineProposalOptions& options,
                                  const std::string& line) {
   if (room.Root(s) == room.Root(t)) return std::nullopt;
-  std::map<int, int> degree;
-  for (const scene::SemanticEdge& e : room.graph) {
-    const int a = room.Find(e.source), b = room.Find(e.target);
-    if (a >= 0 && b >= 0 && room.Root(a) != room.Root(b)) ++degree[room.Root(a)], ++degree[room.Root(b)];
-  }
-  const int hub = degree[room.Root(t)] >= degree[room.Root(s)] ? room.Root(t) : room.Root(s);
+  const int hub = HubOf(room, s, t);
   std::vector<int> members;
   std::set<int> group;
   for (const scene::SemanticEdge& e : room.graph) {
@@ -1004,6 +1266,8 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
       Attempt single = SingleMoves(session, room, c, s, t, now, options, line, suggestion);
       // A run of wall-standing objects chained next_to (a kitchen's) laid out again as a whole.
       for (std::vector<Step>& run : RunMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(run));
+      // The edge's hub with its cluster, moved as one piece.
+      for (std::vector<Step>& moved : ClusterMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(moved));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;

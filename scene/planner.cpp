@@ -706,6 +706,13 @@ class Planning {
             if (relation == SemanticRelation::kLeftOf && k % 2 == 1) relation = SemanticRelation::kRightOf;
             break;
         }
+        // What hangs on a wall "behind" and "centred" on something hangs above it: over a sofa (or bed) that
+        // stands free in the room there is no wall to hang it on, so the painting is the room's wall art
+        // without those edges (the solver hangs it at eye level where it fits).
+        if (t >= 0 && n.mount == Mount::kOnWall && nodes_[t].mount == Mount::kFloor && nodes_[t].item &&
+            nodes_[t].item->mount == Mount::kWall &&
+            (relation == SemanticRelation::kBehind || relation == SemanticRelation::kCentered))
+          continue;
         if (t >= 0) add_edge(ids[i], relation, ids[t], rule.params);
       }
     }
