@@ -268,6 +268,7 @@ void OfflineRounds(LoopState& st) {
       for (const std::vector<Step>& alternative : attempt.alternatives) {
         if (tries >= st.options.max_tries) break;
         std::vector<solver::ActionResult> results;
+        const std::shared_ptr<const solver::RoomSolver::Snapshot> undo = attempt.undo_by_snapshot ? st.session.Save() : nullptr;
         // Where each object moved stood, in the order they were first moved: undone in reverse, so that an
         // object goes back only after those that moved into its place have left it (a run's members).
         std::vector<std::pair<std::string, solver::ObjectPlacement>> was;
@@ -298,7 +299,9 @@ void OfflineRounds(LoopState& st) {
         const solver::RoomSolution after = st.session.Solution();
         const RoomRelations after_relations = Measure(st, after);
         helped = !HardTrouble(after) && !results.empty() && !refused && UnmetOf(after_relations) < unmet_before;
-        if (!helped) {
+        if (!helped && undo) {
+          st.session.Restore(*undo);
+        } else if (!helped) {
           for (auto it = was.rbegin(); it != was.rend(); ++it) {
             const auto& [id, placement] = *it;
             const int k = [&] {

@@ -1085,6 +1085,206 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
 }
 
+// A bed and what belongs at its head: the things standing against the wall beside it (nightstands, by a
+// left_of / right_of / next_to edge to it) and what hangs on the wall above it (the painting, behind it or
+// centred on it). Single moves cannot mend a bed put where its wall has no room for a nightstand on one
+// side, or where a window is above its middle: the bed must move, and the others with it.
+struct BedGroup {
+  int bed = -1;
+  std::vector<std::pair<int, int>> sides;  // (object, side): +1 the bed's left, -1 its right, 0 either
+  std::vector<int> above;                  // hung on the wall above the bed
+  std::vector<int> others;                 // free-standing things related to the bed (slippers, a rug)
+};
+
+bool IsBed(const solver::ProblemObject& o) { return o.category == "bed" || o.category == "child-bed"; }
+
+std::optional<BedGroup> BedGroupOf(const Room& room, int bed) {
+  const solver::ProblemObject& b = room.solution.objects[bed];
+  if (!IsBed(b) || room.parent[bed] >= 0 || b.relation != solver::Relation::kAgainstWall) return std::nullopt;
+  using R = scene::SemanticRelation;
+  BedGroup g;
+  g.bed = bed;
+  std::map<int, int> side;  // object -> side (as in BedGroup::sides)
+  std::set<int> hung, others;
+  for (const scene::SemanticEdge& e : room.graph) {
+    if (e.target != b.id) continue;
+    const int k = room.Find(e.source);
+    if (k < 0 || k == bed || room.parent[k] >= 0) continue;
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (o.relation == solver::Relation::kAgainstWall && (e.relation == R::kLeftOf || e.relation == R::kRightOf || e.relation == R::kNextTo)) {
+      int& s = side.emplace(k, 0).first->second;
+      if (e.relation != R::kNextTo) s = e.relation == R::kLeftOf ? 1 : -1;
+    } else if (o.relation == solver::Relation::kOnWall && (e.relation == R::kBehind || e.relation == R::kCentered)) {
+      hung.insert(k);
+    } else if (!WallBound(o) && room.children[k].empty()) {
+      others.insert(k);
+    }
+  }
+  if (side.empty() && hung.empty()) return std::nullopt;
+  for (const auto& [k, s] : side) g.sides.push_back({k, s});
+  g.above.assign(hung.begin(), hung.end());
+  for (int k : others)
+    if (!side.count(k) && !hung.count(k)) g.others.push_back(k);
+  return g;
+}
+
+// The bed laid out again with its group along every wall it may stand on (a 5 cm comb and the stops
+// where the group just clears a wall end or an opening), at the group's scales, with the bed at its
+// smallest, and with everything that carries nothing at its smallest: the nightstands 3 cm beside it on
+// their sides of it (one of either side on the side left free), what hangs above it centred over it at
+// its height (left where it is when a window or door is there), a rug related to the bed carried along
+// (its place relative to the bed kept where the floor is free for it). A layout is tried only where each
+// member is free of everything outside the group, in an order where none enters the place of one still to
+// move; the other free-standing things related to the bed are re-placed by the solver afterwards when the
+// layout leaves their edges unmet. Ranked like single moves (then the less shrunk first), the best `keep`.
+std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g, const Unmet& now, const OfflineProposalOptions& options,
+                                             const std::string& why) {
+  constexpr double kBeside = 0.03;  // m between the bed and a nightstand (next_to asks at most 0.1)
+  const solver::ProblemObject& bed = room.solution.objects[g.bed];
+  std::set<int> group{g.bed};
+  for (const auto& [k, s] : g.sides) group.insert(k);
+  group.insert(g.above.begin(), g.above.end());
+  // Which of the either-side members go left: each bit of `flip` for one of them.
+  std::vector<size_t> either;
+  for (size_t i = 0; i < g.sides.size(); ++i)
+    if (g.sides[i].second == 0) either.push_back(i);
+  struct Layout {
+    Unmet unmet;
+    int shrink = 0;  // the scales: 0 as they are, 1 the bed at its smallest, 2 everything that can be
+    double moved = 0.0;
+    std::vector<std::pair<int, Candidate>> poses;
+    std::vector<std::pair<int, Candidate>> carried;  // rugs moved with the bed, last
+    std::vector<int> replace;  // others to re-place afterwards
+  };
+  std::vector<Layout> layouts;
+  // What carries things (a nightstand with its lamp and books) keeps its scale: smaller, its load would
+  // no longer fit on it. The bed's pillows fit a smaller bed.
+  const auto scale_of = [&](int k, int shrink) {
+    const bool smallest = (shrink >= 1 && k == g.bed) || (shrink == 2 && room.children[k].empty());
+    return smallest ? room.solution.objects[k].scale_min : room.solution.placements[k].pose.scale;
+  };
+  for (int shrink = 0; shrink <= 2; ++shrink) {
+    bool smaller = shrink == 0;
+    for (int k : group) smaller = smaller || scale_of(k, shrink) < scale_of(k, shrink - 1) - 1e-9;
+    if (!smaller) continue;
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (bed.wall >= 0 && bed.wall != static_cast<int>(w)) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+      const double length = geo::Dist(wall.a, wall.b);
+      const double bed_scale = scale_of(g.bed, shrink), bed_half = 0.5 * bed.asset.size.x * bed_scale;
+      // A comb, and the stops where the group, the bed or what hangs above it just clears a wall end or an
+      // opening (a painting fits beside a window only in a few centimetres of the wall).
+      std::vector<double> reaches{bed_half, bed_half + kBeside};
+      for (const auto& [k, s] : g.sides) reaches.push_back(reaches.back() + room.solution.objects[k].asset.size.x * scale_of(k, shrink) + kBeside);
+      for (int k : g.above) reaches.push_back(0.5 * room.solution.objects[k].asset.size.x * scale_of(k, shrink));
+      std::vector<double> ts;
+      for (double t = bed_half + 0.02; t < length - bed_half; t += 0.05) ts.push_back(t);
+      for (double e : reaches) {
+        ts.push_back(e + 0.021);
+        ts.push_back(length - e - 0.021);
+        for (const solver::WallOpening& op : wall.openings) {
+          ts.push_back(op.t0 - e - 0.016);
+          ts.push_back(op.t1 + e + 0.016);
+        }
+      }
+      std::erase_if(ts, [&](double t) { return t < bed_half + 0.01 || t > length - bed_half - 0.01; });
+      for (double t : ts) {
+        auto c = OnWallAt(room, g.bed, static_cast<int>(w), t, bed_scale);
+        if (!c || !Free(room, g.bed, c->pose, options.clearance, group)) continue;
+        // The bed's left (its +x, seen from the bed) along the wall: +1 toward the wall's end, -1 its start.
+        const double left = std::cos(c->pose.yaw) * d.x + std::sin(c->pose.yaw) * d.y > 0.0 ? 1.0 : -1.0;
+        for (unsigned flip = 0; flip < (1u << std::min<size_t>(either.size(), 2)); ++flip) {
+          std::vector<std::pair<int, Candidate>> poses{{g.bed, *c}};
+          double reach[2] = {bed_half + kBeside, bed_half + kBeside};  // taken on the left [0] and right [1]
+          bool ok = true;
+          for (size_t i = 0; i < g.sides.size() && ok; ++i) {
+            const auto [k, fixed] = g.sides[i];
+            int s = fixed;
+            if (s == 0) {
+              const size_t bit = std::find(either.begin(), either.end(), i) - either.begin();
+              const bool taken_left = std::any_of(g.sides.begin(), g.sides.end(), [](const auto& p) { return p.second == 1; });
+              s = bit < 2 ? ((flip >> bit) & 1u ? 1 : -1) : (taken_left ? -1 : 1);
+            }
+            const double scale = scale_of(k, shrink), half = 0.5 * room.solution.objects[k].asset.size.x * scale;
+            double& r = reach[s > 0 ? 0 : 1];
+            auto m = OnWallAt(room, k, static_cast<int>(w), t + s * left * (r + half), scale);
+            r += 2.0 * half + kBeside;
+            ok = m && Free(room, k, m->pose, options.clearance, group);
+            if (ok) poses.push_back({k, *m});
+          }
+          if (!ok) continue;
+          for (int k : g.above) {
+            const double scale = scale_of(k, shrink);
+            auto m = OnWallAt(room, k, static_cast<int>(w), t, scale);
+            if (m && Free(room, k, m->pose, options.clearance, group))
+              poses.push_back({k, *m});
+          }
+          // A rug keeps its place relative to the bed (it lies under or beside it: nothing collides with
+          // it, so it moves last, in any order) where the floor is free for it.
+          std::vector<std::pair<int, Candidate>> carried;
+          const solver::Pose& from = room.solution.placements[g.bed].pose;
+          const double turn = c->pose.yaw - from.yaw, cos_t = std::cos(turn), sin_t = std::sin(turn);
+          for (int k : g.others) {
+            const solver::Pose& at = room.solution.placements[k].pose;
+            if (!Covering(room.solution.objects[k], at.scale)) continue;
+            const double dx = at.x - from.x, dy = at.y - from.y;
+            Candidate rug;
+            rug.pose = {c->pose.x + cos_t * dx - sin_t * dy, c->pose.y + sin_t * dx + cos_t * dy, at.z, solver::WrapAngle(at.yaw + turn),
+                        at.scale};
+            if (Free(room, k, rug.pose, options.clearance, group)) carried.push_back({k, rug});
+          }
+          std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+          double moved = 0.0;
+          for (const auto& [k, m] : poses) {
+            placements = room.Moved(placements, k, m.pose, m.wall);
+            moved += std::hypot(m.pose.x - room.solution.placements[k].pose.x, m.pose.y - room.solution.placements[k].pose.y);
+          }
+          for (const auto& [k, m] : carried) placements = room.Moved(placements, k, m.pose, m.wall);
+          const RoomRelations r = MeasureRelations(room.solution.objects, placements, room.graph);
+          const Unmet u = UnmetOf(r);
+          if (!(u < now)) continue;
+          Layout l{u, shrink, moved, std::move(poses), std::move(carried), {}};
+          for (int k : g.others) {
+            if (std::any_of(l.carried.begin(), l.carried.end(), [&](const auto& p) { return p.first == k; })) continue;
+            const std::string& id = room.solution.objects[k].id;
+            const bool unmet = std::any_of(r.edges.begin(), r.edges.end(),
+                                           [&](const EdgeCheck& e) { return !e.satisfied && (e.edge.source == id || e.edge.target == id); });
+            if (unmet) l.replace.push_back(k);
+          }
+          layouts.push_back(std::move(l));
+        }
+      }
+    }
+  }
+  std::stable_sort(layouts.begin(), layouts.end(), [](const Layout& a, const Layout& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    if (a.shrink != b.shrink) return a.shrink < b.shrink;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const Layout& l : layouts) {
+    if (static_cast<int>(out.size()) >= options.alternatives) break;
+    std::vector<std::pair<int, Candidate>> order;
+    if (!MoveOrder(room, l.poses, options.clearance, &order)) continue;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : order) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the bed and its group laid out again)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (const auto& [k, c] : l.carried) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the rug moves with the bed)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    // A smaller bed brings its pillows closer together: the solver lays them out again on it.
+    if (l.shrink > 0)
+      for (int k : room.Descendants(g.bed)) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    for (int k : l.replace) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    out.push_back(std::move(steps));
+  }
+  return out;
+}
+
 // The group move for an edge single moves could not mend: its hub (the end with more relations to other
 // objects) goes to a roomier place, then everything related to it is re-placed by the solver around it;
 // or, first, only the related objects are re-placed.
@@ -1132,6 +1332,28 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
   };
   const std::vector<std::string> problems = OfflineProblems(problem.room, relations);
   std::vector<Attempt> out;
+  // A bed whose group (BedGroupOf) has an unmet edge or an entered zone: first the bed laid out again
+  // with the group, which mends what moving one of them cannot.
+  for (size_t b = 0; b < solution.objects.size(); ++b) {
+    const std::optional<BedGroup> g = BedGroupOf(room, static_cast<int>(b));
+    if (!g) continue;
+    std::set<std::string> members{solution.objects[b].id};
+    for (const auto& [k, s] : g->sides) members.insert(solution.objects[k].id);
+    for (int k : g->above) members.insert(solution.objects[k].id);
+    for (int k : g->others) members.insert(solution.objects[k].id);
+    const auto member = [&](const std::string& id) {
+      const int k = room.Find(id);
+      return k >= 0 && members.count(solution.objects[room.Root(k)].id) > 0;
+    };
+    bool trouble = false;
+    for (const EdgeCheck& c : relations.edges) trouble = trouble || (c.present && !c.satisfied && (member(c.edge.source) || member(c.edge.target)));
+    for (const ZoneCheck& z : relations.zones)
+      trouble = trouble || (!z.clear() && (member(z.owner) || std::any_of(z.intruders.begin(), z.intruders.end(), member)));
+    const std::string key = ShortId(problem.room, solution.objects[b].id) + " laid out again with its nightstands and what hangs above it";
+    if (!trouble || given_up.count(key)) continue;
+    std::vector<std::vector<Step>> layouts = BedGroupMoves(room, *g, now, options, key);
+    if (!layouts.empty()) out.push_back({key, std::move(layouts), true});
+  }
   size_t p = 0;
   for (const EdgeCheck& c : relations.edges) {
     if (c.present && c.satisfied) continue;

@@ -135,7 +135,9 @@ double SideRoom(const RoomState& state, int object) {
         e.relation != SemanticRelation::kRightOf)
       continue;
     const int s = state.Find(e.source);
-    if (s >= 0 && state.parent[s] < 0) need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
+    // A rug next to the bed lies on the floor in front of it: it takes no wall.
+    if (s >= 0 && state.parent[s] < 0 && !state.IsFloorCovering(s))
+      need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
   }
   return need;
 }
