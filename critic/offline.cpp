@@ -880,6 +880,12 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       reseat = false;
   }
   reseat = reseat && !between.empty();
+  // Loose things (standing free on the floor, no relation, nothing on them: a plant) may step aside.
+  const auto loose = [&](int k) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (room.parent[k] >= 0 || o.parent != "floor" || o.relation != solver::Relation::kOnTop || !room.children[k].empty()) return false;
+    return std::none_of(room.graph.begin(), room.graph.end(), [&](const scene::SemanticEdge& e) { return e.source == o.id || e.target == o.id; });
+  };
   const solver::Pose& at = room.solution.placements[hub].pose;
   const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
   struct Motion {
@@ -942,7 +948,13 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       const solver::WallEdge& wall = room.problem.walls[w];
       const double length = geo::Dist(wall.a, wall.b);
       const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
-      for (double tw = 0.0; tw < length; tw += 0.25) {
+      // Every 10 cm, and tight against the wall's ends and its openings (a sofa fits between a door and the
+      // corner only there).
+      const double half = 0.5 * ho.asset.size.x * at.scale;
+      std::vector<double> stops{half + 0.02, length - half - 0.02};
+      for (const solver::WallOpening& op : wall.openings) stops.push_back(op.t0 - half - 0.02), stops.push_back(op.t1 + half + 0.02);
+      for (double tw = 0.0; tw < length; tw += 0.1) stops.push_back(tw);
+      for (double tw : stops) {
         auto slot = OnWallAt(room, hub, static_cast<int>(w), tw, at.scale);
         if (!slot) continue;
         const Point c{slot->pose.x, slot->pose.y};
@@ -1022,8 +1034,44 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         std::set<int> ignore = moving;
         ignore.erase(k);
         if (!Free(room, k, cand.pose, options.clearance, ignore)) {
-          ok = false;
-          break;
+          // A loose thing in the way (a plant: no relation, nothing on it) steps aside first.
+          auto blockers = Blockers(room, k, cand.pose, options.clearance, ignore);
+          bool cleared = blockers && !blockers->empty();
+          for (int b : blockers ? *blockers : std::vector<int>{}) {
+            if (!cleared || !loose(b)) {
+              cleared = false;
+              break;
+            }
+            solver::ObjectPlacement landed = room.solution.placements[k];
+            landed.pose = cand.pose;
+            const ObjectBox away = BoxOf(room.solution.objects[k], landed);
+            std::set<int> aside_ignore = moving;
+            aside_ignore.insert(b);
+            // Well clear of where the piece lands (its companions are re-placed around it after).
+            std::optional<Candidate> aside;
+            const solver::Pose& bp = room.solution.placements[b].pose;
+            for (double step : {0.5, 1.0, 1.5, 2.0, 2.5}) {
+              for (int dir = 0; dir < 8 && !aside; ++dir) {
+                const double a = dir * std::numbers::pi / 4.0;
+                const solver::Pose pose{bp.x + step * std::cos(a), bp.y + step * std::sin(a), bp.z, bp.yaw, bp.scale};
+                solver::ObjectPlacement pl = room.solution.placements[b];
+                pl.pose = pose;
+                if (PlanGap(BoxOf(room.solution.objects[b], pl), away) >= 1.0 && Free(room, b, pose, options.clearance, aside_ignore))
+                  aside = Candidate{pose, -1};
+              }
+              if (aside) break;
+            }
+            if (!aside) {
+              cleared = false;
+              break;
+            }
+            poses.push_back({b, *aside});
+            moving.insert(b);
+          }
+          if (!cleared) {
+            ok = false;
+            break;
+          }
         }
         poses.push_back({k, cand});
       }
