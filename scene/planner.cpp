@@ -652,6 +652,17 @@ class Planning {
     nodes_[i].removed = true;
   }
 
+  // The mirror over the basin no wider than the basin: centred over a basin that stands near a corner (as
+  // small bathrooms put it), a wider mirror would reach past the wall's end.
+  void FitMirror(int mirror, int basin) {
+    if (mirror < 0 || basin < 0) return;
+    Node& m = nodes_[mirror];
+    const double width = std::max(m.info->size_min.x, std::min(m.size.x, nodes_[basin].size.x));
+    onwall_left_ += m.size.x - width;
+    m.onwall_taken -= m.size.x - width;
+    m.size.x = width;
+  }
+
   // A small bathroom's fixture set, chosen so that every fixture stands against a wall with its use zone
   // (toilet 0.6 m, basin 0.7 m, bath, shower and cabinet in front) on open floor (scene/bathroom_fit.h):
   // as planned; else the fixtures at their smallest (a smaller basin and toilet, a short bath); else a
@@ -704,7 +715,10 @@ class Planning {
         pick = k;
         break;
       }
-    if (pick == 0) return false;
+    if (pick == 0) {
+      FitMirror(mirror, basin);
+      return false;
+    }
     const Choice& c = choices[pick];
     std::vector<std::string> what;
     if (c.no_bathing) {
@@ -729,6 +743,7 @@ class Planning {
       for (int i : {toilet, basin, cabinet, c.shower ? -1 : bathing})
         if (i >= 0 && !nodes_[i].removed) nodes_[i].size = size_of(i, c);
     }
+    FitMirror(mirror, basin);
     std::string words;
     for (const std::string& w : what) words += (words.empty() ? "" : ", ") + w;
     notes_.push_back("a small bathroom: " + words + (pick + 1 == choices.size() && !FitBathFixtures(room_, fixtures_of(c)).fits
