@@ -141,17 +141,24 @@ bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, c
 }
 
 // Poses along a wall for a wall-bound object: its back at its gap from the wall, facing the room, at
-// `t` m along the wall from its start; none where it would overhang the wall's ends or cover an opening.
-std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, double scale) {
+// `t` m along the wall from its start; none where it would overhang the wall's ends or cover an opening
+// (with `solver_margin`, for a hung object, none within the margin the solver keeps round openings).
+std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, double scale, bool solver_margin = false) {
   const solver::ProblemObject& o = room.solution.objects[i];
   const solver::WallEdge& wall = room.problem.walls[w];
   const double length = geo::Dist(wall.a, wall.b);
   const double half = 0.5 * o.asset.size.x * scale;
   if (t < half + 0.01 || t > length - half - 0.01) return std::nullopt;
   const solver::ObjectPlacement& now = room.solution.placements[i];
-  const double z = o.relation == solver::Relation::kOnWall ? now.pose.z : room.problem.floor_z;
+  const bool hung = o.relation == solver::Relation::kOnWall;
+  const double z = hung ? now.pose.z : room.problem.floor_z;
+  // A hung object keeps 0.1 m round an opening and the object gap besides (solver/layer.cpp's opening
+  // prisms): a pose closer would only be refused by the solver's Fits.
+  const double around = hung && solver_margin ? 0.13 : 0.0;
   for (const solver::WallOpening& op : wall.openings)
-    if (t + half > op.t0 - 0.01 && t - half < op.t1 + 0.01 && z < op.z1 && z + o.asset.size.z * scale > op.z0) return std::nullopt;
+    if (t + half > op.t0 - 0.01 - around && t - half < op.t1 + 0.01 + around && z < op.z1 + around &&
+        z + o.asset.size.z * scale > op.z0 - around)
+      return std::nullopt;
   const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
   const Point c = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, o.wall_gap + 0.5 * o.asset.size.y * scale));
   Candidate out;
@@ -442,7 +449,16 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
     const double t = geo::Dot(geo::Sub({now.pose.x, now.pose.y}, wall.a), d);
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (double sign : {-1.0, 1.0})
-        if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
+        if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale, true)) out.push_back(*c);
+    // Something hung (a towel rail in the place of a mirror) may go to another wall as well: it stands in
+    // no one's way there.
+    if (o.relation == solver::Relation::kOnWall)
+      for (size_t v = 0; v < room.problem.walls.size(); ++v) {
+        if (static_cast<int>(v) == w) continue;
+        const double length = geo::Dist(room.problem.walls[v].a, room.problem.walls[v].b);
+        for (double s = 0.0; s < length; s += 0.25)
+          if (auto c = OnWallAt(room, k, static_cast<int>(v), s, now.pose.scale, true)) out.push_back(*c);
+      }
   } else if (!OnObject(o)) {
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (int dir = 0; dir < 8; ++dir) {
