@@ -29,11 +29,7 @@ BuiltLayout SmallBathroom() {
                   "w2": {"shape": "shapely.LineString([(0, 2.5), (7, 2.5)])", "level": 0}}})json",
                                 "small-bath.json");
   REQUIRE(layout.ok());
-  BuiltLayout b{*layout, {}, {}};
-  auto building = BuildBuilding(b.layout, b.options);
-  REQUIRE(building.ok());
-  b.building = std::move(*building);
-  return b;
+  return Built(std::move(*layout));
 }
 
 BathFixture Fixture(const std::string& category, double w, double d, double h, double zone) {
