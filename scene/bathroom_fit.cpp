@@ -18,10 +18,10 @@ struct Frame {
   Point a, d, n;
 };
 
-Frame FrameOf(const WallEdge& w) {
+Frame FrameOf(const FitWall& w) {
   Frame f;
-  f.a = w.inner.a;
-  f.d = geo::Unit(geo::Sub(w.inner.b, w.inner.a));
+  f.a = w.a;
+  f.d = geo::Unit(geo::Sub(w.b, w.a));
   f.n = geo::Left(f.d);
   return f;
 }
@@ -49,9 +49,12 @@ struct Placed {
 
 class Search {
  public:
-  Search(const RoomContext& room, const std::vector<BathFixture>& fixtures, const BathFitOptions& options)
+  Search(const FitRoom& room, const std::vector<BathFixture>& fixtures, const BathFitOptions& options)
       : room_(room), fixtures_(fixtures), options_(options), placed_(fixtures.size()) {
-    for (const WallEdge& w : room_.walls) frames_.push_back(FrameOf(w));
+    for (const FitWall& w : room_.walls) {
+      frames_.push_back(FrameOf(w));
+      lengths_.push_back(geo::Dist(w.a, w.b));
+    }
     // The big ones first (they have the fewest places); companions after everything else, beside their
     // fixture.
     for (size_t i = 0; i < fixtures_.size(); ++i)
@@ -69,6 +72,8 @@ class Search {
     r.fits = Place(0);
     r.exhausted = !r.fits && tried_ >= options_.budget;
     r.tried = tried_;
+    if (r.fits)
+      for (const Placed& p : placed_) r.places.push_back({p.wall, p.t0});
     return r;
   }
 
@@ -83,18 +88,18 @@ class Search {
   bool Fits(int k, int w, double t0, Placed* out) {
     ++tried_;
     const BathFixture& f = fixtures_[k];
-    const WallEdge& wall = room_.walls[w];
+    const FitWall& wall = room_.walls[w];
     const Frame& fr = frames_[w];
     const double t1 = t0 + f.width;
-    if (t0 < kEndGap - 1e-9 || t1 > wall.length() - kEndGap + 1e-9) return false;
+    if (t0 < kEndGap - 1e-9 || t1 > lengths_[w] - kEndGap + 1e-9) return false;
     // On one free interval of the wall.
     if (std::none_of(wall.free.begin(), wall.free.end(),
                      [&](const Interval& i) { return t0 >= i.first - 1e-9 && t1 <= i.second + 1e-9; }))
       return false;
     if (f.mirror > 0.0) {
       const double c = 0.5 * (t0 + t1), h = 0.5 * std::max(f.mirror, f.width);
-      for (const WallWindow& win : wall.windows)
-        if (std::min(c + h, win.span.second) - std::max(c - h, win.span.first) > 0.01) return false;
+      for (const Interval& win : wall.windows)
+        if (std::min(c + h, win.second) - std::max(c - h, win.first) > 0.01) return false;
     }
     Placed p;
     p.wall = w;
@@ -106,7 +111,7 @@ class Search {
     p.z0 = room_.floor_z;
     p.z1 = room_.floor_z + f.height;
     if (!OnFloor(p.body) || (!p.zone.empty() && !OnFloor(p.zone))) return false;
-    for (const KeepOut& ko : room_.keep_outs)
+    for (const FitKeepOut& ko : room_.keep_outs)
       if (std::min(ko.z_max, p.z1) - std::max(ko.z_min, p.z0) > 0.0 && OverlapArea(ko.polygon, p.body) > kAreaSlack)
         return false;
     for (size_t j = 0; j < placed_.size(); ++j) {
@@ -126,7 +131,7 @@ class Search {
     const double width = fixtures_[k].width;
     std::vector<double> ts;
     for (const Interval& i : room_.walls[w].free) {
-      const double lo = std::max(i.first, kEndGap), hi = std::min(i.second, room_.walls[w].length() - kEndGap) - width;
+      const double lo = std::max(i.first, kEndGap), hi = std::min(i.second, lengths_[w] - kEndGap) - width;
       if (hi < lo - 1e-9) continue;
       for (double t = lo; t < hi; t += options_.step) ts.push_back(t);
       ts.push_back(hi);
@@ -166,23 +171,31 @@ class Search {
       }
       return false;
     }
-    for (int w = 0; w < static_cast<int>(room_.walls.size()); ++w) {
-      for (double t0 : Stops(k, w)) {
-        Placed p;
-        if (!Fits(k, w, t0, &p)) continue;
-        placed_[k] = std::move(p);
-        if (Place(depth + 1)) return true;
-        placed_[k] = Placed{};
-        if (tried_ >= options_.budget) return false;
-      }
+    std::vector<std::pair<int, double>> stops;
+    for (int w = 0; w < static_cast<int>(room_.walls.size()); ++w)
+      for (double t0 : Stops(k, w)) stops.push_back({w, t0});
+    if (f.prefer_wall >= 0)
+      std::stable_sort(stops.begin(), stops.end(), [&](const auto& a, const auto& b) {
+        const double da = (a.first == f.prefer_wall ? 0.0 : 10.0) + std::abs(a.second - f.prefer_t0);
+        const double db = (b.first == f.prefer_wall ? 0.0 : 10.0) + std::abs(b.second - f.prefer_t0);
+        return da < db;
+      });
+    for (const auto& [w, t0] : stops) {
+      Placed p;
+      if (!Fits(k, w, t0, &p)) continue;
+      placed_[k] = std::move(p);
+      if (Place(depth + 1)) return true;
+      placed_[k] = Placed{};
+      if (tried_ >= options_.budget) return false;
     }
     return false;
   }
 
-  const RoomContext& room_;
+  const FitRoom& room_;
   const std::vector<BathFixture>& fixtures_;
   const BathFitOptions& options_;
   std::vector<Frame> frames_;
+  std::vector<double> lengths_;
   std::vector<int> order_;
   std::vector<Placed> placed_;
   long tried_ = 0;
@@ -199,7 +212,25 @@ std::string BathFitOptions::Check() const {
   return "";
 }
 
+FitRoom FitRoomOf(const RoomContext& room) {
+  FitRoom out;
+  out.free_floor = room.free_floor;
+  out.floor_z = room.floor_z;
+  for (const WallEdge& w : room.walls) {
+    FitWall f{w.inner.a, w.inner.b, w.free, {}};
+    for (const WallWindow& win : w.windows) f.windows.push_back(win.span);
+    out.walls.push_back(std::move(f));
+  }
+  for (const KeepOut& k : room.keep_outs) out.keep_outs.push_back({k.polygon, k.z_min, k.z_max});
+  return out;
+}
+
 BathFitResult FitBathFixtures(const RoomContext& room, const std::vector<BathFixture>& fixtures,
+                              const BathFitOptions& options) {
+  return FitBathFixtures(FitRoomOf(room), fixtures, options);
+}
+
+BathFitResult FitBathFixtures(const FitRoom& room, const std::vector<BathFixture>& fixtures,
                               const BathFitOptions& options) {
   for (const BathFixture& f : fixtures)
     if (f.companion_of >= static_cast<int>(fixtures.size()) || f.companion_of == &f - fixtures.data()) return {};

@@ -19,9 +19,30 @@
 #include <string>
 #include <vector>
 
+#include "layout/geometry.h"
 #include "scene/room_context.h"
 
 namespace villa::scene {
+
+// The room as the search sees it, in plain geometry, so that the planner (from a room context) and the
+// critic (from a solver problem) ask the same question.
+struct FitWall {
+  Point a, b;                     // the wall's inner face, the room on its left (CCW like the free floor)
+  std::vector<Interval> free;     // m along a -> b where something may stand against it
+  std::vector<Interval> windows;  // m along a -> b: windows (nothing hangs over them)
+};
+struct FitKeepOut {
+  Ring polygon;                   // CCW or not, plan m
+  double z_min = 0.0, z_max = 0.0;  // world m
+};
+struct FitRoom {
+  std::vector<Ring> free_floor;
+  std::vector<FitWall> walls;
+  std::vector<FitKeepOut> keep_outs;  // doors' sweeps, windows for what is taller than the sill, stairs,
+                                      // and for the critic what stays where it is
+  double floor_z = 0.0;               // world m
+};
+FitRoom FitRoomOf(const RoomContext& room);
 
 struct BathFixture {
   std::string category;   // for the caller's messages; "washbasin" is the one the mirror hangs over
@@ -31,6 +52,14 @@ struct BathFixture {
   double zone = 0.0;      // m of free floor in front, 0 for none
   double mirror = 0.0;    // m of window-free wall centred above it (the mirror's width), 0 for none
   int companion_of = -1;  // index of the fixture it stands beside on the same wall (the bin by the toilet)
+  int prefer_wall = -1;   // where it stands now (the critic's question): the search tries the nearest
+  double prefer_t0 = 0.0;  // places to it first, so a found layout moves little; -1: no preference
+};
+
+// Where a fixture stands in a found layout: its wall and the interval [t0, t0 + width] along it.
+struct BathPlace {
+  int wall = -1;
+  double t0 = 0.0;
 };
 
 struct BathFitOptions {
@@ -45,9 +74,12 @@ struct BathFitResult {
   bool fits = false;
   bool exhausted = false;  // the budget ran out before an answer: treated as not fitting
   long tried = 0;          // positions evaluated
+  std::vector<BathPlace> places;  // when it fits: one per fixture, in the fixtures' order
 };
 
 // Whether the fixtures fit the room as described above. Deterministic (fixed search order).
+BathFitResult FitBathFixtures(const FitRoom& room, const std::vector<BathFixture>& fixtures,
+                              const BathFitOptions& options = {});
 BathFitResult FitBathFixtures(const RoomContext& room, const std::vector<BathFixture>& fixtures,
                               const BathFitOptions& options = {});
 
