@@ -674,12 +674,14 @@ class Planning {
     nodes_[i].removed = true;
   }
 
-  // The mirror over the basin no wider than the basin: centred over a basin that stands near a corner (as
-  // small bathrooms put it), a wider mirror would reach past the wall's end.
+  // The mirror over the basin narrower than the basin by the 10 cm wall decor keeps from a wall's end on
+  // each side (solver/place.cpp), down to the category's smallest: centred over a basin that stands in a
+  // corner (as small bathrooms put it), a wider mirror could not hang.
   void FitMirror(int mirror, int basin) {
     if (mirror < 0 || basin < 0) return;
+    constexpr double kDecorEnd = 0.1;  // m wall decor keeps from a wall's end
     Node& m = nodes_[mirror];
-    const double width = std::max(m.info->size_min.x, std::min(m.size.x, nodes_[basin].size.x));
+    const double width = std::max(m.info->size_min.x, std::min(m.size.x, nodes_[basin].size.x - 2.0 * kDecorEnd));
     onwall_left_ += m.size.x - width;
     m.onwall_taken -= m.size.x - width;
     m.size.x = width;
