@@ -917,11 +917,11 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
     const double face = std::atan2(ob.c.x - at.x, -(ob.c.y - at.y));
     for (double turn : {solver::WrapAngle(face - at.yaw), kHalfPi, -kHalfPi, std::numbers::pi})
-      if (std::abs(turn) > 0.01) motions.push_back({0.0, 0.0, turn, std::nullopt});
+      if (std::abs(turn) > 0.01) motions.push_back({0.0, 0.0, turn, std::nullopt, std::nullopt});
   }
   for (const Point& axis : axes)
     for (int k = -30; k <= 30; ++k)
-      if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt});
+      if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt, std::nullopt});
   // The hub faces the other end, which stands against a wall in front of it at a gap: both placed anew.
   std::optional<std::pair<double, double>> facing_gap;
   for (const scene::SemanticEdge& e : room.graph) {
@@ -946,7 +946,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           const Point c = geo::Add({slot->pose.x, slot->pose.y}, geo::Scale(n, reach));
           const double turn = solver::WrapAngle(yaw - at.yaw);
           // The rigid motion taking the hub's centre to c, turned by `turn` about it.
-          motions.push_back({c.x - at.x, c.y - at.y, turn, slot});
+          motions.push_back({c.x - at.x, c.y - at.y, turn, slot, std::nullopt});
         }
       }
     }
