@@ -449,6 +449,15 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (double sign : {-1.0, 1.0})
         if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
+    // Something hung (a towel rail in the place of a mirror) may go to another wall as well: it stands in
+    // no one's way there.
+    if (o.relation == solver::Relation::kOnWall)
+      for (size_t v = 0; v < room.problem.walls.size(); ++v) {
+        if (static_cast<int>(v) == w) continue;
+        const double length = geo::Dist(room.problem.walls[v].a, room.problem.walls[v].b);
+        for (double s = 0.0; s < length; s += 0.25)
+          if (auto c = OnWallAt(room, k, static_cast<int>(v), s, now.pose.scale)) out.push_back(*c);
+      }
   } else if (!OnObject(o)) {
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (int dir = 0; dir < 8; ++dir) {
@@ -468,8 +477,9 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
 // Moves that make room: a pose of object m where the edge would hold but one free-standing object k stands
 // in the way; k steps aside first (to a free pose clear of m's new box), then m moves. Kept when the two
 // together leave fewer unmet relations.
+// With `loose_hung_only`, only a hung object without relations is asked to step aside (a towel rail).
 void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>& candidates, const Unmet& now, double clearance,
-                const std::string& why, std::vector<Ranked>& out) {
+                const std::string& why, std::vector<Ranked>& out, bool loose_hung_only = false) {
   int tried = 0;
   for (const Candidate& c : candidates) {
     if (tried >= 40) break;
@@ -477,6 +487,11 @@ void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>
     if (!blockers || blockers->size() != 1) continue;
     const int k = (*blockers)[0];
     if (k == other || !room.children[k].empty() || Covering(room.solution.objects[k], room.solution.placements[k].pose.scale)) continue;
+    if (loose_hung_only && (room.solution.objects[k].relation != solver::Relation::kOnWall ||
+                            std::any_of(room.graph.begin(), room.graph.end(), [&](const scene::SemanticEdge& e) {
+                              return e.source == room.solution.objects[k].id || e.target == room.solution.objects[k].id;
+                            })))
+      continue;
     ++tried;
     solver::ObjectPlacement moved = room.solution.placements[m];
     moved.pose = c.pose;
@@ -518,6 +533,10 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
     if ((ranked.empty() || o.relation == solver::Relation::kOnWall) && o.scale_min < scale - 1e-9)
       RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
     if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
+    // Where the free poses only bring the edge nearer, a loose hung object stepping aside may let it hold
+    // (the mirror's place over the basin taken by a towel rail); ranked with the rest, a mend goes first.
+    else if (std::none_of(ranked.begin(), ranked.end(), [&](const Ranked& r) { return r.unmet.count < now.count; }))
+      PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked, true);
   }
   return Attempt{line, Best(session, std::move(ranked), options.alternatives)};
 }
