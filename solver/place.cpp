@@ -110,6 +110,9 @@ void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_in
     pref += 0.3 * (std::max(0.0, side_room - (t - hx)) + std::max(0.0, side_room - (wf.length - t - hx)));
     for (const WallOpening& o : wall.openings) {
       if (hang_above && o.z1 > top) pref += std::max(0.0, std::min(t + hx, o.t1) - std::max(t - hx, o.t0));
+      // What hangs above it is centred on it: an opening within 0.6 m of its middle (half a picture and the
+      // 0.1 m decor keeps from openings) leaves it no place at all.
+      if (hang_above && o.z1 > top && o.t0 < t + 0.6 && o.t1 > t - 0.6) pref += 1.0;
     }
     out.push_back({c.x, c.y, b.p[2], wf.yaw_in, wall_index, pref});
   }
@@ -535,6 +538,13 @@ double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOpti
   Put(layer, self, state, best[0].c);
   if (best[0].hard > 1e-10 && stats) ++stats->infeasible;
   return best[0].hard;
+}
+
+bool PlaceBodyNth(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, size_t nth, PlaceStats* stats) {
+  const std::vector<Scored> ranked = RankCandidates(layer, self, state, o, rng, 0.0, nth + 1, stats);
+  if (ranked.size() <= nth) return false;
+  Put(layer, self, state, ranked[nth].c);
+  return true;
 }
 
 void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter, PlaceStats* stats) {

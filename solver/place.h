@@ -22,6 +22,11 @@ struct PlaceStats {
 // Returns the hard cost at the chosen pose (0: no proxy violation).
 double PlaceBody(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
                  PlaceStats* stats);
+// Puts body `b` at its `nth` best candidate (0: the best, as PlaceBody with no jitter) and marks it active;
+// false (the body left as it was) when it has fewer candidates. For a slot search that polishes what it
+// finds and moves on to the next candidate when the polish does not end clean.
+bool PlaceBodyNth(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, size_t nth,
+                  PlaceStats* stats);
 
 // Places every movable body of the layer in PlacementOrder. A body that others relate to (a hub: the
 // bed, the sofa, the table) is tried at its few best poses with its dependents placed around each, and the
