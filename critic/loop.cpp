@@ -215,6 +215,7 @@ void OfflineRounds(LoopState& st) {
   double best_score = -1.0;
   int tries = 0;
   bool escalating = false;  // the last round gave single moves up: group moves come next
+  int last_kept = 0;        // alternatives the last round kept
   OfflineProposalOptions proposal;
   proposal.clearance = st.options.clearance;
   for (int round = 1; round <= st.options.rounds; ++round) {
@@ -244,8 +245,11 @@ void OfflineRounds(LoopState& st) {
       st.log_errors.insert(st.log_errors.end(), log.errors().begin(), log.errors().end());
     };
     if (problems.empty()) return finish_round("every relation of the graph holds and every zone is clear");
-    // A round that only gave problems up still has their group moves to try in the next one.
-    if (now.summary.energy.total <= st.options.energy_threshold && score <= best_score + 1e-9 && !escalating)
+    // The score counts relations; a round may bring one nearer to holding without mending it (the painting
+    // made smaller, nearer the sofa's axis), and the next round builds on it. So the loop stops at a low E
+    // only when the last round kept nothing at all; a round that only gave problems up still has their group
+    // moves to try in the next one.
+    if (now.summary.energy.total <= st.options.energy_threshold && score <= best_score + 1e-9 && last_kept == 0 && !escalating)
       return finish_round("E <= " + std::to_string(st.options.energy_threshold).substr(0, 4) + " and the score stopped improving");
     best_score = std::max(best_score, score);
     if (tries >= st.options.max_tries) return finish_round("the critic's tries are spent");
@@ -264,6 +268,7 @@ void OfflineRounds(LoopState& st) {
       for (const std::vector<Step>& alternative : attempt.alternatives) {
         if (tries >= st.options.max_tries) break;
         std::vector<solver::ActionResult> results;
+        const std::shared_ptr<const solver::RoomSolver::Snapshot> undo = attempt.undo_by_snapshot ? st.session.Save() : nullptr;
         // Where each object moved stood, in the order they were first moved: undone in reverse, so that an
         // object goes back only after those that moved into its place have left it (a run's members).
         std::vector<std::pair<std::string, solver::ObjectPlacement>> was;
@@ -294,7 +299,9 @@ void OfflineRounds(LoopState& st) {
         const solver::RoomSolution after = st.session.Solution();
         const RoomRelations after_relations = Measure(st, after);
         helped = !HardTrouble(after) && !results.empty() && !refused && UnmetOf(after_relations) < unmet_before;
-        if (!helped) {
+        if (!helped && undo) {
+          st.session.Restore(*undo);
+        } else if (!helped) {
           for (auto it = was.rbegin(); it != was.rend(); ++it) {
             const auto& [id, placement] = *it;
             const int k = [&] {
@@ -319,6 +326,7 @@ void OfflineRounds(LoopState& st) {
     }
     record["attempts"] = std::move(tried);
     record["kept"] = kept;
+    last_kept = kept;
     // The critic owns the semantics: what it kept stays (the agent's best state is the proxy E's choice);
     // anything physically wrong goes back to the rule agent.
     st.session.KeepCurrent();

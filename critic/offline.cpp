@@ -150,11 +150,15 @@ std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, doub
   const solver::WallEdge& wall = room.problem.walls[w];
   const double length = geo::Dist(wall.a, wall.b);
   const double half = 0.5 * o.asset.size.x * scale;
-  if (t < half + 0.01 || t > length - half - 0.01) return std::nullopt;
+  const double end = o.relation == solver::Relation::kOnWall ? 0.1 : 0.01;  // wall decor keeps 10 cm from the ends (solver/place.cpp)
+  if (t < half + end || t > length - half - end) return std::nullopt;
   const solver::ObjectPlacement& now = room.solution.placements[i];
   const double z = o.relation == solver::Relation::kOnWall ? now.pose.z : room.problem.floor_z;
+  // Hung things keep 0.1 m from openings all round, as the solver's opening prisms demand (solver/layer.cpp).
+  const double around = o.relation == solver::Relation::kOnWall ? 0.1 : 0.01, rise = o.relation == solver::Relation::kOnWall ? 0.1 : 0.0;
   for (const solver::WallOpening& op : wall.openings)
-    if (t + half > op.t0 - 0.01 && t - half < op.t1 + 0.01 && z < op.z1 && z + o.asset.size.z * scale > op.z0) return std::nullopt;
+    if (t + half > op.t0 - around && t - half < op.t1 + around && z < op.z1 + rise && z + o.asset.size.z * scale > op.z0 - rise)
+      return std::nullopt;
   const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
   const Point c = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, o.wall_gap + 0.5 * o.asset.size.y * scale));
   Candidate out;
@@ -188,10 +192,12 @@ std::vector<double> GapsFor(const scene::SemanticEdge& e) {
 
 // Candidate poses for object m so that an edge with `other` may hold: in place (turned), around the other
 // object, or along the walls.
-std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const scene::SemanticEdge& edge, double scale) {
+// `other_box`: the other object's box where it is about to stand (default: where it stands).
+std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const scene::SemanticEdge& edge, double scale,
+                                     const ObjectBox* other_box = nullptr) {
   const solver::ProblemObject& o = room.solution.objects[m];
   const solver::ObjectPlacement& now = room.solution.placements[m];
-  const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
+  const ObjectBox ob = other_box ? *other_box : BoxOf(room.solution.objects[other], room.solution.placements[other]);
   std::vector<Candidate> out;
   if (WallBound(o)) {
     for (size_t w = 0; w < room.problem.walls.size(); ++w) {
@@ -510,7 +516,9 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
     const double scale = room.solution.placements[mover].pose.scale;
     const std::vector<Candidate> candidates = CandidatesFor(room, mover, room.Root(other), c.edge, scale);
     RankInto(room, mover, candidates, now, options.clearance, line, ranked);
-    if (ranked.empty() && o.scale_min < scale - 1e-9)
+    // At the smallest scale too when nothing fits at this one, and always for wall decor (a smaller picture
+    // fits between the window and the corner, centred over the sofa).
+    if ((ranked.empty() || o.relation == solver::Relation::kOnWall) && o.scale_min < scale - 1e-9)
       RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
     if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
   }
@@ -561,13 +569,44 @@ std::vector<int> RunThrough(const Room& room, int m) {
   return order;
 }
 
+// Several objects moved together (a run laid out again, a cluster carried): the relations left unmet, how
+// far they move, the moves in the order they are applied, and what the solver re-places after them.
+struct MultiMove {
+  Unmet unmet;
+  double moved = 0.0;
+  std::vector<std::pair<int, Candidate>> poses;
+  std::vector<int> ring;
+};
+
+// The best `keep` of them (fewest unmet, then least moved) as step sequences.
+std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<MultiMove> moves, int keep, const std::string& why,
+                                              const std::string& how) {
+  std::stable_sort(moves.begin(), moves.end(), [](const MultiMove& a, const MultiMove& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const MultiMove& l : moves) {
+    if (static_cast<int>(out.size()) >= keep) break;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : l.poses) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (" + how + ")"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (int k : l.ring) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    out.push_back(std::move(steps));
+  }
+  return out;
+}
+
 // An order of moves taking each object of `poses` to its pose, where none enters the place of one still to
 // move (height ranges counted: an upper cabinet hangs over a counter). Where every remaining one waits for
-// another (a cycle: the cooker must pass the fridge), one of them is parked first on another wall (all of
-// them stand against or hang on walls), clear of
-// everything and of every pose to come, and moved on when its pose is free. False when no order is found.
+// another (a cycle: the cooker must pass the fridge; a counter and the cabinet over it), one of them is
+// parked first (all of them stand against or hang on walls), what hangs before what stands, clear of
+// everything, of where the others stand and of every pose to come, and moved on when its pose is free.
+// False when no order is found.
 bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& poses, double clearance,
-               std::vector<std::pair<int, Candidate>>* order) {
+               std::vector<std::pair<int, Candidate>>* order, bool hung_first = false) {
   const size_t n = poses.size();
   std::vector<solver::ObjectPlacement> at(n);
   std::vector<ObjectBox> target(n);
@@ -581,6 +620,8 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
   const auto meets = [&](const ObjectBox& box, double top, const ObjectBox& other, double other_top) {
     return PlanGap(box, other) < 0.02 && std::min(top, other_top) > std::max(box.z0, other.z0) - 0.05;  // with margins
   };
+  // A rug lies under the others: it neither blocks nor is blocked.
+  const auto covering = [&](size_t a) { return Covering(room.solution.objects[poses[a].first], at[a].pose.scale); };
   std::vector<bool> done(n, false), parked(n, false);
   for (size_t step = 0; step < 2 * n + 1; ++step) {
     int pick = -1;
@@ -588,7 +629,7 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
       if (done[a]) continue;
       bool clear = true;
       for (size_t b = 0; b < n && clear; ++b) {
-        if (b == a || done[b]) continue;
+        if (b == a || done[b] || covering(a) || covering(b)) continue;
         const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
         clear = !meets(target[a], target[a].z0 + height(a), there, there.z0 + height(b));
       }
@@ -601,35 +642,42 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
       if (order->size() >= n + std::count(parked.begin(), parked.end(), true)) return true;
       continue;
     }
-    // Park a waiting object not parked yet, what hangs first (a wall has room for it more often), anywhere
-    // along a wall where it meets neither another's place now nor any place to come.
+    // Park a waiting object not parked yet: the first one, on another wall than its pose's; or with
+    // `hung_first`, what hangs before what stands (a wall has room for it more often), anywhere along a wall
+    // where it meets neither another's place now nor any place to come.
     std::vector<size_t> waiting;
     for (size_t a = 0; a < n; ++a)
       if (!done[a] && !parked[a]) waiting.push_back(a);
-    std::stable_sort(waiting.begin(), waiting.end(), [&](size_t a, size_t b) {
-      return (room.solution.objects[poses[a].first].relation == solver::Relation::kOnWall) >
-             (room.solution.objects[poses[b].first].relation == solver::Relation::kOnWall);
-    });
+    if (waiting.empty()) return false;
+    if (hung_first) {
+      std::stable_sort(waiting.begin(), waiting.end(), [&](size_t a, size_t b) {
+        return (room.solution.objects[poses[a].first].relation == solver::Relation::kOnWall) >
+               (room.solution.objects[poses[b].first].relation == solver::Relation::kOnWall);
+      });
+    }
     std::set<int> moving;
-    for (const auto& [k, c] : poses) moving.insert(k);
+    for (const auto& p : poses) moving.insert(p.first);
     int park = -1;
     std::optional<Candidate> spot;
     for (size_t a : waiting) {
-      const int k = poses[a].first;
+      const int obj = poses[a].first;
       for (size_t w = 0; w < room.problem.walls.size() && !spot; ++w) {
+        if (!hung_first && static_cast<int>(w) == poses[a].second.wall) continue;
         const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
-        for (double t = 0.0; t < length && !spot; t += 0.1) {
-          auto c = OnWallAt(room, k, static_cast<int>(w), t, at[a].pose.scale);
-          if (!c || !Free(room, k, c->pose, clearance, moving)) continue;
+        for (double t = 0.0; t < length && !spot; t += hung_first ? 0.1 : 0.25) {
+          auto c = OnWallAt(room, obj, static_cast<int>(w), t, at[a].pose.scale);
+          if (!c || !(hung_first ? Free(room, obj, c->pose, clearance, moving) : Free(room, obj, c->pose, clearance))) continue;
           solver::ObjectPlacement pl = at[a];
           pl.pose = c->pose;
-          const ObjectBox box = BoxOf(room.solution.objects[k], pl);
+          const ObjectBox box = BoxOf(room.solution.objects[obj], pl);
           bool clear = true;
           for (size_t b = 0; b < n && clear; ++b) {
-            if (b == a) continue;
-            const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
-            clear = !meets(box, box.z0 + height(a), target[b], target[b].z0 + height(b)) &&
-                    !meets(box, box.z0 + height(a), there, there.z0 + height(b));
+            if (hung_first && b == a) continue;
+            clear = !meets(box, box.z0 + height(a), target[b], target[b].z0 + height(b));
+            if (clear && hung_first) {
+              const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
+              clear = !meets(box, box.z0 + height(a), there, there.z0 + height(b));
+            }
           }
           if (clear) spot = c;
         }
@@ -638,15 +686,21 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
         park = static_cast<int>(a);
         break;
       }
+      if (!hung_first) break;  // only the first waiting one
     }
-    const int k = park >= 0 ? poses[park].first : -1;
     if (!spot) return false;
+    const int k = poses[park].first;
     parked[park] = true;
     at[park].pose = spot->pose;
     at[park].wall = spot->wall;
     order->push_back({k, *spot});
   }
   return false;
+}
+
+// A unit of a kitchen's run: a counter, the fridge, the cooker, the dishwasher.
+bool KitchenUnit(const solver::ProblemObject& o) {
+  return o.category == "counter" || o.category == "fridge" || o.category == "cooker" || o.category == "dishwasher";
 }
 
 // A layout of a run: where each member (and what hangs behind it) goes, in the order the moves are applied.
@@ -661,7 +715,7 @@ using MemberPoses = std::vector<std::pair<int, Candidate>>;
 
 // What hangs on the wall behind a run's member (a counter's upper cabinet, the cooker's hood): (hung object,
 // member). It moves with its member, keeping its place along the wall relative to it.
-std::vector<std::pair<int, int>> HungBehind(const Room& room, const std::set<int>& members) {
+std::vector<std::pair<int, int>> HungOverRun(const Room& room, const std::set<int>& members) {
   std::vector<std::pair<int, int>> hung;
   for (const scene::SemanticEdge& e : room.graph) {
     if (e.relation != scene::SemanticRelation::kBehind) continue;
@@ -898,7 +952,7 @@ void AddRunLayout(const Room& room, MemberPoses poses, const std::vector<std::pa
     before->insert(before->begin(), room_made->begin(), room_made->end());
   }
   std::vector<std::pair<int, Candidate>> order;
-  if (!MoveOrder(room, poses, clearance, &order)) return;
+  if (!MoveOrder(room, poses, clearance, &order, true)) return;
   for (const auto& [k, c] : *before)
     if (!std::count(movers.begin(), movers.end(), k)) placements[k].pose = c.pose;
   double moved = 0.0;
@@ -1033,16 +1087,13 @@ std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Un
   const std::vector<int> run = RunThrough(room, s);
   if (run.empty() || std::find(run.begin(), run.end(), t) == run.end()) return {};
   std::set<int> group(run.begin(), run.end());
-  const std::vector<std::pair<int, int>> hung = HungBehind(room, group);
+  const std::vector<std::pair<int, int>> hung = HungOverRun(room, group);
   for (const auto& [h, member] : hung) group.insert(h);
   constexpr double kJoint = 0.02;  // m between neighbours of the run
   constexpr size_t kMaxMadeRoom = 40;  // layouts tried with a set moved aside, per set (each a search)
   // Kitchen units turn corners (an L of counters) and a kitchen's table may make room for them; a bed with
   // its nightstands does neither.
-  const bool kitchen = std::all_of(run.begin(), run.end(), [&](int k) {
-    const std::string& c = room.solution.objects[k].category;
-    return c == "counter" || c == "fridge" || c == "cooker" || c == "dishwasher";
-  });
+  const bool kitchen = std::all_of(run.begin(), run.end(), [&](int k) { return KitchenUnit(room.solution.objects[k]); });
   std::vector<RunLayout> layouts;
   const auto lay = [&](const std::set<int>& ignore, const std::vector<int>& movers) {
     std::vector<MemberPoses> raw = StraightRunLayouts(room, run, ignore, options.clearance, kJoint);
@@ -1085,18 +1136,557 @@ std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Un
   return out;
 }
 
+// The hub of an edge: of its two ends (what stands on nothing), the one with more relations to other objects
+// (the dining table of the chairs, the bed of the nightstands, the sofa of the TV stand).
+int HubOf(const Room& room, int s, int t) {
+  std::map<int, int> degree;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a >= 0 && b >= 0 && room.Root(a) != room.Root(b)) ++degree[room.Root(a)], ++degree[room.Root(b)];
+  }
+  return degree[room.Root(t)] >= degree[room.Root(s)] ? room.Root(t) : room.Root(s);
+}
+
+// The cluster of a hub: the objects standing free on the floor joined to it by edges through such objects
+// (a sofa's coffee table, side tables and floor lamp, the rug and armchairs of its coffee table); for a hub
+// against a wall also what stands against the same wall joined to it (a bed's nightstands). `keep` (the
+// edge's other end) is not in it; neither is what hangs on walls or from the ceiling. `near_only`: only the
+// hub's own neighbours (and floor coverings), leaving the rest (the armchairs of the coffee table) in place.
+std::vector<int> ClusterOf(const Room& room, int hub, int keep, bool near_only) {
+  const auto free_standing = [&](int k) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    return room.parent[k] < 0 && o.parent == "floor" && o.relation == solver::Relation::kOnTop;
+  };
+  const auto same_wall = [&](int k) {
+    return room.solution.objects[hub].relation == solver::Relation::kAgainstWall && room.parent[k] < 0 &&
+           room.solution.objects[k].relation == solver::Relation::kAgainstWall &&
+           room.solution.placements[k].wall == room.solution.placements[hub].wall;
+  };
+  std::vector<int> cluster;
+  std::set<int> seen{hub, keep};
+  std::vector<int> stack{hub};
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    for (const scene::SemanticEdge& e : room.graph) {
+      const int a = room.Find(e.source), b = room.Find(e.target);
+      if (a < 0 || b < 0) continue;
+      const int ra = room.Root(a), rb = room.Root(b);
+      const int j = ra == k ? rb : rb == k ? ra : -1;
+      if (j < 0 || seen.count(j) || !(free_standing(j) || same_wall(j))) continue;
+      // Near only: the hub's own neighbours, and the floor coverings of any member (they move freely).
+      if (near_only && k != hub && !Covering(room.solution.objects[j], room.solution.placements[j].pose.scale)) continue;
+      seen.insert(j);
+      cluster.push_back(j);
+      if (free_standing(j)) stack.push_back(j);
+    }
+  }
+  return cluster;
+}
+
+// Where an object hung on a wall goes to be `behind` and `centred` on a target standing at `pose`: on the
+// nearest wall behind the target that faces the way it faces, at the foot of its centre; none when no such
+// wall is within 4 m or the spot is not free (an opening, the wall's end).
+std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose& pose) {
+  const Point facing{std::sin(pose.yaw), -std::cos(pose.yaw)};
+  std::optional<Candidate> best;
+  double nearest = 4.0;
+  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+    if (room.solution.objects[k].wall >= 0 && static_cast<int>(w) != room.solution.objects[k].wall) continue;
+    const solver::WallEdge& wall = room.problem.walls[w];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
+    if (geo::Dot(n, facing) < 0.995) continue;
+    const double behind = geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), n);  // m from the wall to the target's centre
+    if (behind <= 0.0 || behind >= nearest) continue;
+    if (auto c = OnWallAt(room, k, static_cast<int>(w), geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), d), room.solution.placements[k].pose.scale)) {
+      best = c;
+      nearest = behind;
+    }
+  }
+  return best;
+}
+
+// Cluster moves for an unmet edge: its hub and the hub's cluster moved as one rigid piece, so the relations
+// inside it keep holding (the sofa with its coffee table, side table and lamp slid until the painting above
+// it is centred, or carried 2-3 m before the TV stand; a bed with its nightstands along its wall). Motions:
+// slides along and across the hub's axes (along its wall for a hub against one) in 10 cm steps up to 3 m;
+// turns about the hub's centre (to face the other end, a quarter or half turn); and, when the hub faces the
+// other end standing against a wall at a gap (the TV stand 2-3 m before the sofa), the other end to every
+// 25 cm of every wall it may stand on with the hub carried to face it at that gap. What hangs `behind` the
+// hub (the painting) is hung again behind it where it lands. Every member must land free of everything
+// outside the cluster, on the free floor, out of the keep-outs (along its wall, clear of openings); the moves
+// are ordered so none enters the place of one still to move. Ranked like single moves.
+std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, const scene::SemanticEdge& edge, const Unmet& now,
+                                            const OfflineProposalOptions& options, const std::string& why) {
+  if (room.Root(s) == room.Root(t)) return {};
+  const int hub = HubOf(room, s, t);
+  const int other = hub == room.Root(t) ? room.Root(s) : room.Root(t);
+  const solver::ProblemObject& ho = room.solution.objects[hub];
+  if (OnObject(ho) || ho.relation == solver::Relation::kOnWall || ho.relation == solver::Relation::kHanging) return {};
+  // The whole cluster moved, or only the hub's own neighbours with the rest of the cluster (the ring: the
+  // armchairs of the coffee table) re-placed by the solver afterwards; then the ring's relations are left out
+  // of the ranking (the solver mends them) and the real result decides in the loop.
+  struct Variant {
+    std::vector<int> members, ring;
+  };
+  std::vector<Variant> variants;
+  std::vector<int> all{hub};
+  for (int k : ClusterOf(room, hub, other, false)) all.push_back(k);
+  variants.push_back({all, {}});
+  std::vector<int> near{hub};
+  for (int k : ClusterOf(room, hub, other, true)) near.push_back(k);
+  if (near != all) {
+    Variant v{near, {}};
+    for (int k : all)
+      if (std::find(near.begin(), near.end(), k) == near.end()) v.ring.push_back(k);
+    variants.push_back(std::move(v));
+  }
+  if (all.size() > 1) variants.push_back({{hub}, std::vector<int>(all.begin() + 1, all.end())});  // the hub alone, all re-placed
+  // What hangs on a wall behind the hub, hung again behind it after the move.
+  std::vector<int> hung;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (e.relation == scene::SemanticRelation::kBehind && a >= 0 && b == hub && room.parent[a] < 0 &&
+        room.solution.objects[a].relation == solver::Relation::kOnWall && std::find(hung.begin(), hung.end(), a) == hung.end())
+      hung.push_back(a);
+  }
+  // What stands against a wall in front of the hub (the TV stand before the sofa), slid along its wall to
+  // stay before it after the move.
+  std::vector<int> before_hub;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (e.relation == scene::SemanticRelation::kFrontOf && a >= 0 && a != other && b == hub && room.parent[a] < 0 &&
+        room.solution.objects[a].relation == solver::Relation::kAgainstWall && room.solution.placements[a].wall >= 0 &&
+        std::find(before_hub.begin(), before_hub.end(), a) == before_hub.end())
+      before_hub.push_back(a);
+  }
+  // The other end, when it stands free on the floor with edges only to the hub's own object (not to what
+  // stands on it), may be re-seated against the hub after the move.
+  std::vector<scene::SemanticEdge> between;
+  bool reseat = room.parent[other] < 0 && room.solution.objects[other].parent == "floor" &&
+                room.solution.objects[other].relation == solver::Relation::kOnTop &&
+                !Covering(room.solution.objects[other], room.solution.placements[other].pose.scale);
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a < 0 || b < 0) continue;
+    if ((a == other && b == hub) || (a == hub && b == other)) between.push_back(e);
+    else if ((room.Root(a) == other && b == hub) || (a == hub && room.Root(b) == other) || (room.Root(a) == hub && b == other) ||
+             (a == other && room.Root(b) == hub))
+      reseat = false;
+  }
+  reseat = reseat && !between.empty();
+  const solver::Pose& at = room.solution.placements[hub].pose;
+  const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
+  struct Motion {
+    double dx = 0.0, dy = 0.0, turn = 0.0;
+    std::optional<Candidate> other_at;  // the other end moved too
+    std::optional<Candidate> hub_at;    // the hub to another wall's slot
+  };
+  std::vector<Motion> motions;
+  std::vector<Point> axes;
+  if (on_wall) {
+    const int w = room.solution.placements[hub].wall;
+    if (w < 0) return {};
+    axes.push_back(geo::Unit(geo::Sub(room.problem.walls[w].b, room.problem.walls[w].a)));
+  } else {
+    axes = {{std::cos(at.yaw), std::sin(at.yaw)}, {-std::sin(at.yaw), std::cos(at.yaw)}};
+    const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
+    const double face = std::atan2(ob.c.x - at.x, -(ob.c.y - at.y));
+    for (double turn : {solver::WrapAngle(face - at.yaw), kHalfPi, -kHalfPi, std::numbers::pi})
+      if (std::abs(turn) > 0.01) motions.push_back({0.0, 0.0, turn, std::nullopt, std::nullopt});
+  }
+  for (const Point& axis : axes)
+    for (int k = -30; k <= 30; ++k)
+      if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt, std::nullopt});
+  // The hub faces the other end, which stands against a wall in front of it at a gap: both placed anew.
+  std::optional<std::pair<double, double>> facing_gap;
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a == other && b == hub && e.relation == scene::SemanticRelation::kFrontOf && e.params.min_gap && e.params.max_gap)
+      facing_gap = {*e.params.min_gap, *e.params.max_gap};
+  }
+  if (facing_gap && !on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
+    const solver::ProblemObject& oo = room.solution.objects[other];
+    const double scale = room.solution.placements[other].pose.scale;
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (oo.wall >= 0 && static_cast<int>(w) != oo.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const double length = geo::Dist(wall.a, wall.b);
+      const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
+      for (double tw = 0.0; tw < length; tw += 0.25) {
+        auto slot = OnWallAt(room, other, static_cast<int>(w), tw, scale);
+        if (!slot) continue;
+        const double yaw = std::atan2(-n.x, n.y);  // the hub faces the wall
+        for (double gap : {facing_gap->first + 0.05, 0.5 * (facing_gap->first + facing_gap->second), facing_gap->second - 0.05}) {
+          const double reach = 0.5 * oo.asset.size.y * scale + gap + 0.5 * ho.asset.size.y * at.scale;
+          const Point c = geo::Add({slot->pose.x, slot->pose.y}, geo::Scale(n, reach));
+          const double turn = solver::WrapAngle(yaw - at.yaw);
+          // The rigid motion taking the hub's centre to c, turned by `turn` about it.
+          motions.push_back({c.x - at.x, c.y - at.y, turn, slot, std::nullopt});
+        }
+      }
+    }
+  }
+  // A hub against a wall facing the other end on the wall across (the sofa and the TV stand on opposite
+  // walls): the hub to every 25 cm of every wall it may stand on, the other end to the foot of its axis on
+  // the first wall it faces across the room, when the gap between them is in range.
+  if (facing_gap && on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
+    const solver::ProblemObject& oo = room.solution.objects[other];
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (ho.wall >= 0 && static_cast<int>(w) != ho.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const double length = geo::Dist(wall.a, wall.b);
+      const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
+      for (double tw = 0.0; tw < length; tw += 0.25) {
+        auto slot = OnWallAt(room, hub, static_cast<int>(w), tw, at.scale);
+        if (!slot) continue;
+        const Point c{slot->pose.x, slot->pose.y};
+        // The nearest wall across, facing back, whose span the hub's axis meets.
+        std::optional<Candidate> across;
+        double nearest = 1e9;
+        for (size_t v = 0; v < room.problem.walls.size(); ++v) {
+          if (v == w || (oo.wall >= 0 && static_cast<int>(v) != oo.wall)) continue;
+          const solver::WallEdge& facing_wall = room.problem.walls[v];
+          const Point dv = geo::Unit(geo::Sub(facing_wall.b, facing_wall.a)), nv = geo::Left(dv);
+          if (geo::Dot(nv, n) > -0.995) continue;
+          const double dist = geo::Dot(geo::Sub(c, facing_wall.a), nv);  // from that wall to the hub's centre
+          if (dist <= 0.0 || dist >= nearest) continue;
+          const double t_foot = geo::Dot(geo::Sub(c, facing_wall.a), dv);
+          auto stand = OnWallAt(room, other, static_cast<int>(v), t_foot, room.solution.placements[other].pose.scale);
+          if (!stand) continue;
+          const double gap = dist - 0.5 * ho.asset.size.y * at.scale - (oo.wall_gap + oo.asset.size.y * room.solution.placements[other].pose.scale);
+          if (gap < facing_gap->first || gap > facing_gap->second) continue;
+          nearest = dist;
+          across = stand;
+        }
+        if (!across) continue;
+        motions.push_back({c.x - at.x, c.y - at.y, solver::WrapAngle(slot->pose.yaw - at.yaw), across, slot});
+      }
+    }
+  }
+  std::vector<MultiMove> layouts;
+  for (const Variant& variant : variants) {
+    const std::vector<int>& members = variant.members;
+    std::vector<scene::SemanticEdge> graph;  // the edges the ranking counts: none of the ring's
+    for (const scene::SemanticEdge& e : room.graph) {
+      const int a = room.Find(e.source), b = room.Find(e.target);
+      const auto in_ring = [&](int k) {
+        return k >= 0 && std::find(variant.ring.begin(), variant.ring.end(), room.Root(k)) != variant.ring.end();
+      };
+      if (!in_ring(a) && !in_ring(b)) graph.push_back(e);
+    }
+    const Unmet before = variant.ring.empty() ? now : UnmetOf(MeasureRelations(room.solution.objects, room.solution.placements, graph));
+    std::set<int> cluster(members.begin(), members.end());
+    cluster.insert(variant.ring.begin(), variant.ring.end());  // the ring is re-placed: it does not block
+    cluster.insert(hung.begin(), hung.end());
+    cluster.insert(before_hub.begin(), before_hub.end());
+    for (const Motion& mo : motions) {
+      std::set<int> moving = cluster;
+      if (mo.other_at) moving.insert(other);
+      const double cs = std::cos(mo.turn), sn = std::sin(mo.turn);
+      std::vector<std::pair<int, Candidate>> poses;
+      if (mo.other_at) {
+        std::set<int> ignore = moving;
+        ignore.erase(other);
+        if (!Free(room, other, mo.other_at->pose, options.clearance, ignore)) continue;
+        poses.push_back({other, *mo.other_at});
+      }
+      bool ok = true;
+      for (int k : members) {
+        const solver::ObjectPlacement& pl = room.solution.placements[k];
+        const double rx = pl.pose.x - at.x, ry = pl.pose.y - at.y;
+        Candidate cand;
+        cand.pose = {at.x + cs * rx - sn * ry + mo.dx, at.y + sn * rx + cs * ry + mo.dy, pl.pose.z,
+                     solver::WrapAngle(pl.pose.yaw + mo.turn), pl.pose.scale};
+        if (k == hub && mo.hub_at) {
+          cand = *mo.hub_at;
+        } else if (room.solution.objects[k].relation == solver::Relation::kAgainstWall) {
+          if (mo.turn != 0.0) {  // a turned piece leaves its wall: what stands against it cannot come along
+            ok = false;
+            break;
+          }
+          const solver::WallEdge& wall = room.problem.walls[pl.wall];
+          const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+          auto on = OnWallAt(room, k, pl.wall, geo::Dot(geo::Sub({cand.pose.x, cand.pose.y}, wall.a), d), pl.pose.scale);
+          if (!on) {
+            ok = false;
+            break;
+          }
+          cand = *on;
+        }
+        std::set<int> ignore = moving;
+        ignore.erase(k);
+        if (!Free(room, k, cand.pose, options.clearance, ignore)) {
+          ok = false;
+          break;
+        }
+        poses.push_back({k, cand});
+      }
+      if (!ok) continue;
+      const solver::Pose hub_at = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == hub; })->second.pose;
+      for (int h : hung)
+        if (auto c = HungBehind(room, h, hub_at)) poses.push_back({h, *c});
+      if (reseat && !mo.other_at) {
+        // The other end re-seated against the hub where it lands (the side table at the sofa's end the slide
+        // made room for): the first pose where every edge between the two holds, clear of everything.
+        solver::ObjectPlacement hub_pl = room.solution.placements[hub];
+        hub_pl.pose = hub_at;
+        const ObjectBox hub_box = BoxOf(ho, hub_pl);
+        std::vector<ObjectBox> landed;
+        for (const auto& [k, cand] : poses) {
+          if (Covering(room.solution.objects[k], cand.pose.scale)) continue;
+          solver::ObjectPlacement pl = room.solution.placements[k];
+          pl.pose = cand.pose;
+          landed.push_back(BoxOf(room.solution.objects[k], pl));
+        }
+        const solver::ObjectPlacement& op = room.solution.placements[other];
+        for (const Candidate& c : CandidatesFor(room, other, hub, edge, op.pose.scale, &hub_box)) {
+          solver::ObjectPlacement pl = op;
+          pl.pose = c.pose;
+          const ObjectBox ob = BoxOf(room.solution.objects[other], pl);
+          bool holds = true;
+          for (const scene::SemanticEdge& e : between) {
+            const bool forward = room.Find(e.source) == other;
+            holds = holds && CheckEdge(e, forward ? ob : hub_box, forward ? hub_box : ob).satisfied;
+          }
+          if (!holds) continue;
+          if (std::any_of(landed.begin(), landed.end(), [&](const ObjectBox& b) { return PlanGap(ob, b) < options.clearance; })) continue;
+          std::set<int> ignore = moving;
+          ignore.insert(other);
+          if (!Free(room, other, c.pose, options.clearance, ignore)) continue;
+          poses.push_back({other, c});
+          break;
+        }
+      }
+      for (int f : before_hub) {
+        if (mo.turn != 0.0) continue;  // a turned hub faces another wall: its own edges decide
+        const solver::WallEdge& wall = room.problem.walls[room.solution.placements[f].wall];
+        const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+        auto c = OnWallAt(room, f, room.solution.placements[f].wall, geo::Dot(geo::Sub({hub_at.x, hub_at.y}, wall.a), d),
+                          room.solution.placements[f].pose.scale);
+        std::set<int> ignore = moving;
+        ignore.insert(f);
+        if (c && Free(room, f, c->pose, options.clearance, ignore)) poses.push_back({f, *c});
+      }
+      std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+      for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
+      const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, graph));
+      if (!(u < before)) continue;
+      std::vector<std::pair<int, Candidate>> order;
+      if (!MoveOrder(room, poses, options.clearance, &order) || order.size() != poses.size()) continue;
+      layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), variant.ring});
+    }
+  }
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
+}
+
+// A bed and what belongs at its head: the things standing against the wall beside it (nightstands, by a
+// left_of / right_of / next_to edge to it) and what hangs on the wall above it (the painting, behind it or
+// centred on it). Single moves cannot mend a bed put where its wall has no room for a nightstand on one
+// side, or where a window is above its middle: the bed must move, and the others with it.
+struct BedGroup {
+  int bed = -1;
+  std::vector<std::pair<int, int>> sides;  // (object, side): +1 the bed's left, -1 its right, 0 either
+  std::vector<int> above;                  // hung on the wall above the bed
+  std::vector<int> others;                 // free-standing things related to the bed (slippers, a rug)
+};
+
+bool IsBed(const solver::ProblemObject& o) { return o.category == "bed" || o.category == "child-bed"; }
+
+std::optional<BedGroup> BedGroupOf(const Room& room, int bed) {
+  const solver::ProblemObject& b = room.solution.objects[bed];
+  if (!IsBed(b) || room.parent[bed] >= 0 || b.relation != solver::Relation::kAgainstWall) return std::nullopt;
+  using R = scene::SemanticRelation;
+  BedGroup g;
+  g.bed = bed;
+  std::map<int, int> side;  // object -> side (as in BedGroup::sides)
+  std::set<int> hung, others;
+  for (const scene::SemanticEdge& e : room.graph) {
+    if (e.target != b.id) continue;
+    const int k = room.Find(e.source);
+    if (k < 0 || k == bed || room.parent[k] >= 0) continue;
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (o.relation == solver::Relation::kAgainstWall && (e.relation == R::kLeftOf || e.relation == R::kRightOf || e.relation == R::kNextTo)) {
+      int& s = side.emplace(k, 0).first->second;
+      if (e.relation != R::kNextTo) s = e.relation == R::kLeftOf ? 1 : -1;
+    } else if (o.relation == solver::Relation::kOnWall && (e.relation == R::kBehind || e.relation == R::kCentered)) {
+      hung.insert(k);
+    } else if (!WallBound(o) && room.children[k].empty()) {
+      others.insert(k);
+    }
+  }
+  if (side.empty() && hung.empty()) return std::nullopt;
+  for (const auto& [k, s] : side) g.sides.push_back({k, s});
+  g.above.assign(hung.begin(), hung.end());
+  for (int k : others)
+    if (!side.count(k) && !hung.count(k)) g.others.push_back(k);
+  return g;
+}
+
+// The bed laid out again with its group along every wall it may stand on (a 5 cm comb and the stops
+// where the group just clears a wall end or an opening), at the group's scales, with the bed at its
+// smallest, and with everything that carries nothing at its smallest: the nightstands 3 cm beside it on
+// their sides of it (one of either side on the side left free), what hangs above it centred over it at
+// its height (left where it is when a window or door is there), a rug related to the bed carried along
+// (its place relative to the bed kept where the floor is free for it). A layout is tried only where each
+// member is free of everything outside the group, in an order where none enters the place of one still to
+// move; the other free-standing things related to the bed are re-placed by the solver afterwards when the
+// layout leaves their edges unmet. Ranked like single moves (then the less shrunk first), the best `keep`.
+std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g, const Unmet& now, const OfflineProposalOptions& options,
+                                             const std::string& why) {
+  constexpr double kBeside = 0.03;  // m between the bed and a nightstand (next_to asks at most 0.1)
+  const solver::ProblemObject& bed = room.solution.objects[g.bed];
+  std::set<int> group{g.bed};
+  for (const auto& [k, s] : g.sides) group.insert(k);
+  group.insert(g.above.begin(), g.above.end());
+  // Which of the either-side members go left: each bit of `flip` for one of them.
+  std::vector<size_t> either;
+  for (size_t i = 0; i < g.sides.size(); ++i)
+    if (g.sides[i].second == 0) either.push_back(i);
+  struct Layout {
+    Unmet unmet;
+    int shrink = 0;  // the scales: 0 as they are, 1 the bed at its smallest, 2 everything that can be
+    double moved = 0.0;
+    std::vector<std::pair<int, Candidate>> poses;
+    std::vector<std::pair<int, Candidate>> carried;  // rugs moved with the bed, last
+    std::vector<int> replace;  // others to re-place afterwards
+  };
+  std::vector<Layout> layouts;
+  // What carries things (a nightstand with its lamp and books) keeps its scale: smaller, its load would
+  // no longer fit on it. The bed's pillows fit a smaller bed.
+  const auto scale_of = [&](int k, int shrink) {
+    const bool smallest = (shrink >= 1 && k == g.bed) || (shrink == 2 && room.children[k].empty());
+    return smallest ? room.solution.objects[k].scale_min : room.solution.placements[k].pose.scale;
+  };
+  for (int shrink = 0; shrink <= 2; ++shrink) {
+    bool smaller = shrink == 0;
+    for (int k : group) smaller = smaller || scale_of(k, shrink) < scale_of(k, shrink - 1) - 1e-9;
+    if (!smaller) continue;
+    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+      if (bed.wall >= 0 && bed.wall != static_cast<int>(w)) continue;
+      const solver::WallEdge& wall = room.problem.walls[w];
+      const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+      const double length = geo::Dist(wall.a, wall.b);
+      const double bed_scale = scale_of(g.bed, shrink), bed_half = 0.5 * bed.asset.size.x * bed_scale;
+      // A comb, and the stops where the group, the bed or what hangs above it just clears a wall end or an
+      // opening (a painting fits beside a window only in a few centimetres of the wall).
+      std::vector<double> reaches{bed_half, bed_half + kBeside};
+      for (const auto& [k, s] : g.sides) reaches.push_back(reaches.back() + room.solution.objects[k].asset.size.x * scale_of(k, shrink) + kBeside);
+      for (int k : g.above) reaches.push_back(0.5 * room.solution.objects[k].asset.size.x * scale_of(k, shrink));
+      std::vector<double> ts;
+      for (double t = bed_half + 0.02; t < length - bed_half; t += 0.05) ts.push_back(t);
+      for (double e : reaches) {
+        ts.push_back(e + 0.021);
+        ts.push_back(length - e - 0.021);
+        for (const solver::WallOpening& op : wall.openings) {
+          ts.push_back(op.t0 - e - 0.016);
+          ts.push_back(op.t1 + e + 0.016);
+        }
+      }
+      std::erase_if(ts, [&](double t) { return t < bed_half + 0.01 || t > length - bed_half - 0.01; });
+      for (double t : ts) {
+        auto c = OnWallAt(room, g.bed, static_cast<int>(w), t, bed_scale);
+        if (!c || !Free(room, g.bed, c->pose, options.clearance, group)) continue;
+        // The bed's left (its +x, seen from the bed) along the wall: +1 toward the wall's end, -1 its start.
+        const double left = std::cos(c->pose.yaw) * d.x + std::sin(c->pose.yaw) * d.y > 0.0 ? 1.0 : -1.0;
+        for (unsigned flip = 0; flip < (1u << std::min<size_t>(either.size(), 2)); ++flip) {
+          std::vector<std::pair<int, Candidate>> poses{{g.bed, *c}};
+          double reach[2] = {bed_half + kBeside, bed_half + kBeside};  // taken on the left [0] and right [1]
+          bool ok = true;
+          for (size_t i = 0; i < g.sides.size() && ok; ++i) {
+            const auto [k, fixed] = g.sides[i];
+            int s = fixed;
+            if (s == 0) {
+              const size_t bit = std::find(either.begin(), either.end(), i) - either.begin();
+              const bool taken_left = std::any_of(g.sides.begin(), g.sides.end(), [](const auto& p) { return p.second == 1; });
+              s = bit < 2 ? ((flip >> bit) & 1u ? 1 : -1) : (taken_left ? -1 : 1);
+            }
+            const double scale = scale_of(k, shrink), half = 0.5 * room.solution.objects[k].asset.size.x * scale;
+            double& r = reach[s > 0 ? 0 : 1];
+            auto m = OnWallAt(room, k, static_cast<int>(w), t + s * left * (r + half), scale);
+            r += 2.0 * half + kBeside;
+            ok = m && Free(room, k, m->pose, options.clearance, group);
+            if (ok) poses.push_back({k, *m});
+          }
+          if (!ok) continue;
+          for (int k : g.above) {
+            const double scale = scale_of(k, shrink);
+            auto m = OnWallAt(room, k, static_cast<int>(w), t, scale);
+            if (m && Free(room, k, m->pose, options.clearance, group))
+              poses.push_back({k, *m});
+          }
+          // A rug keeps its place relative to the bed (it lies under or beside it: nothing collides with
+          // it, so it moves last, in any order) where the floor is free for it.
+          std::vector<std::pair<int, Candidate>> carried;
+          const solver::Pose& from = room.solution.placements[g.bed].pose;
+          const double turn = c->pose.yaw - from.yaw, cos_t = std::cos(turn), sin_t = std::sin(turn);
+          for (int k : g.others) {
+            const solver::Pose& at = room.solution.placements[k].pose;
+            if (!Covering(room.solution.objects[k], at.scale)) continue;
+            const double dx = at.x - from.x, dy = at.y - from.y;
+            Candidate rug;
+            rug.pose = {c->pose.x + cos_t * dx - sin_t * dy, c->pose.y + sin_t * dx + cos_t * dy, at.z, solver::WrapAngle(at.yaw + turn),
+                        at.scale};
+            if (Free(room, k, rug.pose, options.clearance, group)) carried.push_back({k, rug});
+          }
+          std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+          double moved = 0.0;
+          for (const auto& [k, m] : poses) {
+            placements = room.Moved(placements, k, m.pose, m.wall);
+            moved += std::hypot(m.pose.x - room.solution.placements[k].pose.x, m.pose.y - room.solution.placements[k].pose.y);
+          }
+          for (const auto& [k, m] : carried) placements = room.Moved(placements, k, m.pose, m.wall);
+          const RoomRelations r = MeasureRelations(room.solution.objects, placements, room.graph);
+          const Unmet u = UnmetOf(r);
+          if (!(u < now)) continue;
+          Layout l{u, shrink, moved, std::move(poses), std::move(carried), {}};
+          for (int k : g.others) {
+            if (std::any_of(l.carried.begin(), l.carried.end(), [&](const auto& p) { return p.first == k; })) continue;
+            const std::string& id = room.solution.objects[k].id;
+            const bool unmet = std::any_of(r.edges.begin(), r.edges.end(),
+                                           [&](const EdgeCheck& e) { return !e.satisfied && (e.edge.source == id || e.edge.target == id); });
+            if (unmet) l.replace.push_back(k);
+          }
+          layouts.push_back(std::move(l));
+        }
+      }
+    }
+  }
+  std::stable_sort(layouts.begin(), layouts.end(), [](const Layout& a, const Layout& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    if (a.shrink != b.shrink) return a.shrink < b.shrink;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const Layout& l : layouts) {
+    if (static_cast<int>(out.size()) >= options.alternatives) break;
+    std::vector<std::pair<int, Candidate>> order;
+    if (!MoveOrder(room, l.poses, options.clearance, &order)) continue;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : order) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the bed and its group laid out again)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (const auto& [k, c] : l.carried) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the rug moves with the bed)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    // A smaller bed brings its pillows closer together: the solver lays them out again on it.
+    if (l.shrink > 0)
+      for (int k : room.Descendants(g.bed)) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    for (int k : l.replace) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    out.push_back(std::move(steps));
+  }
+  return out;
+}
+
 // The group move for an edge single moves could not mend: its hub (the end with more relations to other
 // objects) goes to a roomier place, then everything related to it is re-placed by the solver around it;
 // or, first, only the related objects are re-placed.
 std::optional<Attempt> GroupMove(solver::RoomSolver& session, const Room& room, int s, int t, const OfflineProposalOptions& options,
                                  const std::string& line) {
   if (room.Root(s) == room.Root(t)) return std::nullopt;
-  std::map<int, int> degree;
-  for (const scene::SemanticEdge& e : room.graph) {
-    const int a = room.Find(e.source), b = room.Find(e.target);
-    if (a >= 0 && b >= 0 && room.Root(a) != room.Root(b)) ++degree[room.Root(a)], ++degree[room.Root(b)];
-  }
-  const int hub = degree[room.Root(t)] >= degree[room.Root(s)] ? room.Root(t) : room.Root(s);
+  const int hub = HubOf(room, s, t);
   std::vector<int> members;
   std::set<int> group;
   for (const scene::SemanticEdge& e : room.graph) {
@@ -1137,6 +1727,28 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
   };
   const std::vector<std::string> problems = OfflineProblems(problem.room, relations);
   std::vector<Attempt> out;
+  // A bed whose group (BedGroupOf) has an unmet edge or an entered zone: first the bed laid out again
+  // with the group, which mends what moving one of them cannot.
+  for (size_t b = 0; b < solution.objects.size(); ++b) {
+    const std::optional<BedGroup> g = BedGroupOf(room, static_cast<int>(b));
+    if (!g) continue;
+    std::set<std::string> members{solution.objects[b].id};
+    for (const auto& [k, s] : g->sides) members.insert(solution.objects[k].id);
+    for (int k : g->above) members.insert(solution.objects[k].id);
+    for (int k : g->others) members.insert(solution.objects[k].id);
+    const auto member = [&](const std::string& id) {
+      const int k = room.Find(id);
+      return k >= 0 && members.count(solution.objects[room.Root(k)].id) > 0;
+    };
+    bool trouble = false;
+    for (const EdgeCheck& c : relations.edges) trouble = trouble || (c.present && !c.satisfied && (member(c.edge.source) || member(c.edge.target)));
+    for (const ZoneCheck& z : relations.zones)
+      trouble = trouble || (!z.clear() && (member(z.owner) || std::any_of(z.intruders.begin(), z.intruders.end(), member)));
+    const std::string key = ShortId(problem.room, solution.objects[b].id) + " laid out again with its nightstands and what hangs above it";
+    if (!trouble || given_up.count(key)) continue;
+    std::vector<std::vector<Step>> layouts = BedGroupMoves(room, *g, now, options, key);
+    if (!layouts.empty()) out.push_back({key, std::move(layouts), true});
+  }
   size_t p = 0;
   for (const EdgeCheck& c : relations.edges) {
     if (c.present && c.satisfied) continue;
@@ -1147,6 +1759,8 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
       Attempt single = SingleMoves(session, room, c, s, t, now, options, line, suggestion);
       // A run of wall-standing objects chained next_to (a kitchen's) laid out again as a whole.
       for (std::vector<Step>& run : RunMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(run));
+      // The edge's hub with its cluster, moved as one piece.
+      for (std::vector<Step>& moved : ClusterMoves(room, s, t, c.edge, now, options, line)) single.alternatives.push_back(std::move(moved));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;
@@ -1188,6 +1802,11 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
         bool has_edges = false;
         for (const scene::SemanticEdge& e : graph) has_edges = has_edges || e.source == id || e.target == id;
         if (has_edges || !room.children[k].empty()) continue;
+        // What stands on a kitchen unit that is itself in the zone (the pan on a cooker) leaves the zone
+        // entered: taking it out would lose it for nothing. (Kitchen units only so far: other room types'
+        // figures were measured with such removals, see docs/BENCHMARKS.md.)
+        const solver::ProblemObject& carrier = solution.objects[room.Root(k)];
+        if (room.Root(k) != k && KitchenUnit(carrier) && std::count(z.intruders.begin(), z.intruders.end(), carrier.id)) continue;
         solver::Action remove;
         remove.kind = solver::ActionKind::kRemoveEntity;
         remove.id = id;

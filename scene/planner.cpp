@@ -7,6 +7,7 @@
 #include <set>
 
 #include "assets/category.h"
+#include "mesh/geometry2d.h"
 #include "scene/priors.h"
 #include "scene/random.h"
 #include "scene/request.h"
@@ -514,16 +515,37 @@ class Planning {
   }
 
   // Whether a living room's sofa stands free (its back to the room, facing the TV on its wall): the TV
-  // stand is 2-3 m in front of the sofa (priors.cpp), so with both against opposite walls the room must be
-  // 3.4-4.4 m across (sofa and stand depths and their wall gaps included). A room deeper than that both
-  // ways (or too narrow one way and too deep the other) lets the sofa float, as a designer would.
+  // stand is 2-3 m in front of the sofa (priors.cpp), so with both against opposite walls these must be
+  // 3.4-4.4 m apart (sofa and stand depths and their wall gaps included) and hold free stretches facing each
+  // other, room for the sofa on one and the stand across from it on the other (doors, passages and stair
+  // keep-outs take wall; a sofa and a stand stand under windows). Where no two walls do and the room is
+  // longer than that one way, the sofa floats, as a designer would.
   bool SofaFloats() const {
     constexpr double kAcrossMin = 3.4, kAcrossMax = 4.4;  // m wall to wall
+    constexpr double kSofa = 1.9, kStand = 1.2;           // m of free wall each needs (their smallest widths, about)
     if (room_.free_floor.empty()) return false;
     const Box2 box = BoundingBox(room_.free_floor.front());
-    const double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
-    const auto fits = [&](double d) { return d >= kAcrossMin && d <= kAcrossMax; };
-    return !fits(w) && !fits(h) && std::max(w, h) > kAcrossMax;
+    if (std::max(box.max_x - box.min_x, box.max_y - box.min_y) <= kAcrossMax) return false;
+    for (const WallEdge& a : room_.walls) {
+      const Point da = geo::Unit(geo::Sub(a.inner.b, a.inner.a));
+      for (const WallEdge& b : room_.walls) {
+        const Point db = geo::Unit(geo::Sub(b.inner.b, b.inner.a));
+        if (&a == &b || geo::Dot(da, db) > -0.99) continue;
+        const double across = geo::Dot(geo::Sub(b.inner.a, a.inner.a), geo::Left(da));
+        if (across < kAcrossMin || across > kAcrossMax) continue;
+        for (const Interval& fa : a.free) {
+          if (fa.second - fa.first < kSofa) continue;
+          for (const Interval& fb : b.free) {
+            if (fb.second - fb.first < kStand) continue;
+            // b's stretch seen along a (b runs the other way).
+            const double b0 = geo::Dot(geo::Sub(geo::Add(b.inner.a, geo::Scale(db, fb.second)), a.inner.a), da);
+            const double b1 = geo::Dot(geo::Sub(geo::Add(b.inner.a, geo::Scale(db, fb.first)), a.inner.a), da);
+            if (std::min(fa.second, b1) - std::max(fa.first, b0) >= kStand) return false;
+          }
+        }
+      }
+    }
+    return true;
   }
 
   // ---- the steps
@@ -741,6 +763,13 @@ class Planning {
             if (relation == SemanticRelation::kLeftOf && k % 2 == 1) relation = SemanticRelation::kRightOf;
             break;
         }
+        // What hangs on a wall "behind" and "centred" on something hangs above it: over a sofa (or bed) that
+        // stands free in the room there is no wall to hang it on, so the painting is the room's wall art
+        // without those edges (the solver hangs it at eye level where it fits).
+        if (t >= 0 && n.mount == Mount::kOnWall && nodes_[t].mount == Mount::kFloor && nodes_[t].item &&
+            nodes_[t].item->mount == Mount::kWall &&
+            (relation == SemanticRelation::kBehind || relation == SemanticRelation::kCentered))
+          continue;
         if (t >= 0) add_edge(ids[i], relation, ids[t], rule.params);
       }
     }

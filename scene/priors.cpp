@@ -95,7 +95,9 @@ std::vector<RoomPriors> MakeTable() {
   t.push_back({C::kLivingRoom, 26, 22.0, {
       Wall("sofa", 1, 1).Key().Edge(R::kFaceTo, "tv-stand").Exempt({"coffee-table", "rug"}),
       Free("coffee-table", 1, 1).Edge(R::kFrontOf, "sofa", Gap(0.45, 0.6)).Edge(R::kCentered, "sofa"),
-      Wall("tv-stand", 1, 1).Edge(R::kFrontOf, "sofa", Gap(2.0, 3.0)).Exempt({"rug"}),
+      // (ours) the stand faces the sofa too: the TV on it cannot turn on its own, so its face_to is the
+      // stand's, and the floor layer (where the stand is placed) must know it.
+      Wall("tv-stand", 1, 1).Edge(R::kFrontOf, "sofa", Gap(2.0, 3.0)).Edge(R::kFaceTo, "sofa").Exempt({"rug"}),
       Free("armchair", 1, 2).Edge(R::kFaceTo, "coffee-table").Edge(R::kNear, "coffee-table").Exempt({"coffee-table", "rug"}),
       Free("side-table", 1, 2).Edge(R::kLeftOf, "sofa", {}, Pick::kAlternate).Edge(R::kNextTo, "sofa", MaxGap(0.1)),
       Wall("bookcase", 1, 2).Exempt({"rug"}),

@@ -135,7 +135,9 @@ double SideRoom(const RoomState& state, int object) {
         e.relation != SemanticRelation::kRightOf)
       continue;
     const int s = state.Find(e.source);
-    if (s >= 0 && state.parent[s] < 0) need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
+    // A rug next to the bed lies on the floor in front of it: it takes no wall.
+    if (s >= 0 && state.parent[s] < 0 && !state.IsFloorCovering(s))
+      need = std::max(need, std::max(state.objects[s].asset.size.x, state.objects[s].asset.size.y) + 0.1);
   }
   return need;
 }
@@ -177,11 +179,16 @@ void OnWallSlots(const Layer& layer, int self, const RoomState& state, const std
     const WallEdge& wall = problem.walls[w];
     if (!wall.hang_allowed) continue;
     const WallFrame wf = FrameOfWall(wall);
+    // Wall decor keeps 10 cm from the wall's ends (PRIORS.md: from doors and windows; a corner likewise):
+    // a picture touching the corner reads as hung off the wall, and past an inner corner the floor outline
+    // of the built glTF ends a little sooner than the layout's wall.
+    constexpr double kEnd = 0.1;
     std::vector<double> ts = AlongWallStops(layer, self, wf, wall, hx, hy, o.wall_gap, 0.05);
+    std::erase_if(ts, [&](double t) { return t < hx + kEnd || t > wf.length - hx - kEnd; });
     for (int t : targets) {
-      if (wf.length < 2.0 * (hx + 0.02)) break;
+      if (wf.length < 2.0 * (hx + kEnd)) break;
       const double along = geo::Dot(geo::Sub(Point{layer.bodies[t].p[0], layer.bodies[t].p[1]}, wf.a), wf.d);
-      ts.push_back(std::clamp(along, hx + 0.02, wf.length - hx - 0.02));
+      ts.push_back(std::clamp(along, hx + kEnd, wf.length - hx - kEnd));
     }
     for (double t : ts) {
       const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, o.wall_gap + hy));
@@ -531,7 +538,7 @@ double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOpti
 }
 
 void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng& rng, double jitter, PlaceStats* stats) {
-  constexpr size_t kLookahead = 4;
+  constexpr size_t kLookahead = 12;
   const std::vector<int> order = PlacementOrder(layer, state);
   std::vector<char> placed(layer.bodies.size(), 0);
   for (int b : order) {

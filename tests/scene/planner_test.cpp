@@ -383,3 +383,29 @@ TEST_CASE("an unlabelled room with no request is planned empty and says why", "[
   CHECK(CountCategory(asked, "sofa") == 1);
   CHECK(CountCategory(asked, "table-lamp") == 1);
 }
+
+TEST_CASE("a living room's sofa stands free where no two facing walls hold it and the TV stand 3.4-4.4 m apart",
+          "[scene][planner]") {
+  // Both rooms are 7.2 x 3.5 m inside; the bounding box alone would put the sofa against a long wall. In the
+  // first the wall across from the south wall is taken by a 3.1 m opening to the kitchen and a door, so no
+  // stretch across holds the TV stand: the sofa stands free, and a painting has no wall above it. In the
+  // second that wall has one 1 m door: sofa and stand go on the two long walls, the painting above the sofa.
+  for (const char* which : {"open", "door"}) {
+    BuiltLayout b = LoadBuilt(std::string("tests/fixtures/layouts/living_long_") + which + ".json");
+    RoomContext c = ContextOf(b, "living-room_0/0");
+    RoomPlan plan = PlanOf(c);
+    INFO(which << "\n" << PlanTable(plan, c.name));
+    const bool floats = std::string(which) == "open";
+    const SceneObject* sofa = nullptr;
+    for (const SceneObject& o : plan.objects)
+      if (o.category == "sofa") sofa = &o;
+    REQUIRE(sofa);
+    CHECK(sofa->relation == (floats ? Relation::kOnTop : Relation::kAgainstWall));
+    int over_sofa = 0;
+    for (const SemanticEdge& e : plan.edges)
+      over_sofa += e.target == sofa->id && e.source.find("/painting-") != std::string::npos &&
+                   (e.relation == SemanticRelation::kBehind || e.relation == SemanticRelation::kCentered);
+    CHECK(over_sofa == (floats ? 0 : 2));
+    CHECK(Check(b, c, plan).empty());
+  }
+}
