@@ -452,6 +452,15 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (double sign : {-1.0, 1.0})
         if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
+    // Something hung (a towel rail in the place of a mirror) may go to another wall as well: it stands in
+    // no one's way there.
+    if (o.relation == solver::Relation::kOnWall)
+      for (size_t v = 0; v < room.problem.walls.size(); ++v) {
+        if (static_cast<int>(v) == w) continue;
+        const double length = geo::Dist(room.problem.walls[v].a, room.problem.walls[v].b);
+        for (double s = 0.0; s < length; s += 0.25)
+          if (auto c = OnWallAt(room, k, static_cast<int>(v), s, now.pose.scale)) out.push_back(*c);
+      }
   } else if (!OnObject(o)) {
     for (double step : {0.25, 0.5, 0.8, 1.2})
       for (int dir = 0; dir < 8; ++dir) {
@@ -471,8 +480,9 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
 // Moves that make room: a pose of object m where the edge would hold but one free-standing object k stands
 // in the way; k steps aside first (to a free pose clear of m's new box), then m moves. Kept when the two
 // together leave fewer unmet relations.
+// With `loose_hung_only`, only a hung object without relations is asked to step aside (a towel rail).
 void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>& candidates, const Unmet& now, double clearance,
-                const std::string& why, std::vector<Ranked>& out) {
+                const std::string& why, std::vector<Ranked>& out, bool loose_hung_only = false) {
   int tried = 0;
   for (const Candidate& c : candidates) {
     if (tried >= 40) break;
@@ -480,6 +490,11 @@ void PushesInto(const Room& room, int m, int other, const std::vector<Candidate>
     if (!blockers || blockers->size() != 1) continue;
     const int k = (*blockers)[0];
     if (k == other || !room.children[k].empty() || Covering(room.solution.objects[k], room.solution.placements[k].pose.scale)) continue;
+    if (loose_hung_only && (room.solution.objects[k].relation != solver::Relation::kOnWall ||
+                            std::any_of(room.graph.begin(), room.graph.end(), [&](const scene::SemanticEdge& e) {
+                              return e.source == room.solution.objects[k].id || e.target == room.solution.objects[k].id;
+                            })))
+      continue;
     ++tried;
     solver::ObjectPlacement moved = room.solution.placements[m];
     moved.pose = c.pose;
@@ -521,6 +536,10 @@ Attempt SingleMoves(solver::RoomSolver& session, const Room& room, const EdgeChe
     if ((ranked.empty() || o.relation == solver::Relation::kOnWall) && o.scale_min < scale - 1e-9)
       RankInto(room, mover, CandidatesFor(room, mover, room.Root(other), c.edge, o.scale_min), now, options.clearance, line, ranked);
     if (ranked.empty()) PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked);
+    // Where the free poses only bring the edge nearer, a loose hung object stepping aside may let it hold
+    // (the mirror's place over the basin taken by a towel rail); ranked with the rest, a mend goes first.
+    else if (std::none_of(ranked.begin(), ranked.end(), [&](const Ranked& r) { return r.unmet.count < now.count; }))
+      PushesInto(room, mover, room.Root(other), candidates, now, options.clearance, line, ranked, true);
   }
   return Attempt{line, Best(session, std::move(ranked), options.alternatives)};
 }
@@ -1275,6 +1294,12 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       reseat = false;
   }
   reseat = reseat && !between.empty();
+  // Loose things (standing free on the floor, no relation, nothing on them: a plant) may step aside.
+  const auto loose = [&](int k) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (room.parent[k] >= 0 || o.parent != "floor" || o.relation != solver::Relation::kOnTop || !room.children[k].empty()) return false;
+    return std::none_of(room.graph.begin(), room.graph.end(), [&](const scene::SemanticEdge& e) { return e.source == o.id || e.target == o.id; });
+  };
   const solver::Pose& at = room.solution.placements[hub].pose;
   const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
   struct Motion {
@@ -1337,7 +1362,13 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       const solver::WallEdge& wall = room.problem.walls[w];
       const double length = geo::Dist(wall.a, wall.b);
       const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
-      for (double tw = 0.0; tw < length; tw += 0.25) {
+      // Every 10 cm, and tight against the wall's ends and its openings (a sofa fits between a door and the
+      // corner only there).
+      const double half = 0.5 * ho.asset.size.x * at.scale;
+      std::vector<double> stops{half + 0.02, length - half - 0.02};
+      for (const solver::WallOpening& op : wall.openings) stops.push_back(op.t0 - half - 0.02), stops.push_back(op.t1 + half + 0.02);
+      for (double tw = 0.0; tw < length; tw += 0.1) stops.push_back(tw);
+      for (double tw : stops) {
         auto slot = OnWallAt(room, hub, static_cast<int>(w), tw, at.scale);
         if (!slot) continue;
         const Point c{slot->pose.x, slot->pose.y};
@@ -1417,8 +1448,44 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         std::set<int> ignore = moving;
         ignore.erase(k);
         if (!Free(room, k, cand.pose, options.clearance, ignore)) {
-          ok = false;
-          break;
+          // A loose thing in the way (a plant: no relation, nothing on it) steps aside first.
+          auto blockers = Blockers(room, k, cand.pose, options.clearance, ignore);
+          bool cleared = blockers && !blockers->empty();
+          for (int b : blockers ? *blockers : std::vector<int>{}) {
+            if (!cleared || !loose(b)) {
+              cleared = false;
+              break;
+            }
+            solver::ObjectPlacement landed = room.solution.placements[k];
+            landed.pose = cand.pose;
+            const ObjectBox away = BoxOf(room.solution.objects[k], landed);
+            std::set<int> aside_ignore = moving;
+            aside_ignore.insert(b);
+            // Well clear of where the piece lands (its companions are re-placed around it after).
+            std::optional<Candidate> aside;
+            const solver::Pose& bp = room.solution.placements[b].pose;
+            for (double step : {0.5, 1.0, 1.5, 2.0, 2.5}) {
+              for (int dir = 0; dir < 8 && !aside; ++dir) {
+                const double a = dir * std::numbers::pi / 4.0;
+                const solver::Pose pose{bp.x + step * std::cos(a), bp.y + step * std::sin(a), bp.z, bp.yaw, bp.scale};
+                solver::ObjectPlacement pl = room.solution.placements[b];
+                pl.pose = pose;
+                if (PlanGap(BoxOf(room.solution.objects[b], pl), away) >= 1.0 && Free(room, b, pose, options.clearance, aside_ignore))
+                  aside = Candidate{pose, -1};
+              }
+              if (aside) break;
+            }
+            if (!aside) {
+              cleared = false;
+              break;
+            }
+            poses.push_back({b, *aside});
+            moving.insert(b);
+          }
+          if (!cleared) {
+            ok = false;
+            break;
+          }
         }
         poses.push_back({k, cand});
       }

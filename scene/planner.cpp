@@ -8,6 +8,7 @@
 
 #include "assets/category.h"
 #include "mesh/geometry2d.h"
+#include "scene/bathroom_fit.h"
 #include "scene/priors.h"
 #include "scene/random.h"
 #include "scene/request.h"
@@ -222,6 +223,10 @@ class Planning {
     Settings();
     Grow();
     Trim();
+    if (room_.category == Category::kBathroom && BathroomFixtures()) {
+      Grow();  // what the fixtures left: towel racks, bottles on the basin instead of the cabinet's things
+      Trim();
+    }
     return Finish(request);
   }
 
@@ -687,6 +692,123 @@ class Planning {
     for (const Node& n : nodes_)
       if (!n.removed && n.parent == i) return true;
     return false;
+  }
+
+  // ---- bathrooms
+  // The live floor-standing node of a category, -1 when none.
+  int RootOf(std::string_view category) const {
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i)
+      if (!nodes_[i].removed && nodes_[i].parent < 0 && nodes_[i].info->name == category) return i;
+    return -1;
+  }
+
+  void RemoveWithChildren(int i) {
+    for (int j = 0; j < static_cast<int>(nodes_.size()); ++j)
+      if (!nodes_[j].removed && nodes_[j].parent == i) RemoveWithChildren(j);
+    GiveBack(nodes_[i]);
+    nodes_[i].removed = true;
+  }
+
+  // The mirror over the basin narrower than the basin by the 10 cm wall decor keeps from a wall's end on
+  // each side (solver/place.cpp), down to the category's smallest: centred over a basin that stands in a
+  // corner (as small bathrooms put it), a wider mirror could not hang.
+  void FitMirror(int mirror, int basin) {
+    if (mirror < 0 || basin < 0) return;
+    constexpr double kDecorEnd = 0.1;  // m wall decor keeps from a wall's end
+    Node& m = nodes_[mirror];
+    const double width = std::max(m.info->size_min.x, std::min(m.size.x, nodes_[basin].size.x - 2.0 * kDecorEnd));
+    onwall_left_ += m.size.x - width;
+    m.onwall_taken -= m.size.x - width;
+    m.size.x = width;
+  }
+
+  // A small bathroom's fixture set, chosen so that every fixture stands against a wall with its use zone
+  // (toilet 0.6 m, basin 0.7 m, bath, shower and cabinet in front) on open floor (scene/bathroom_fit.h):
+  // as planned; else the fixtures at their smallest (a smaller basin and toilet, a short bath); else a
+  // shower instead of the bath; else no separate cabinet; else no bath or shower. What the request named
+  // stays. True when the plan changed (the caller fills the room up again).
+  bool BathroomFixtures() {
+    const int toilet = RootOf("toilet"), basin = RootOf("washbasin"), cabinet = RootOf("cabinet"), bin = RootOf("bin");
+    int bathing = RootOf("bathtub");
+    if (bathing < 0) bathing = RootOf("shower");
+    const int mirror = RootOf("mirror");
+    auto named = [&](int i) { return i >= 0 && nodes_[i].origin == Origin::kPrompt; };
+    struct Choice {
+      bool smallest = false, shower = false, no_cabinet = false, no_bathing = false;
+    };
+    std::vector<Choice> choices = {{}, {true}};
+    const bool tub = bathing >= 0 && nodes_[bathing].info->name == "bathtub" && !named(bathing);
+    if (tub) choices.push_back({true, true});
+    if (cabinet >= 0 && !named(cabinet)) choices.push_back({true, tub, true});
+    if (bathing >= 0 && !named(bathing)) choices.push_back({true, tub, cabinet >= 0 && !named(cabinet), true});
+    const CategoryInfo* shower = FindCategory("shower");
+    auto size_of = [&](int i, const Choice& c) {
+      const CategoryInfo& info = i == bathing && c.shower ? *shower : *nodes_[i].info;
+      if (i == bathing && c.shower) return Vec3{info.size_min.x, info.size_min.y, info.size_max.z};
+      if (!c.smallest || i == bin) return nodes_[i].size;
+      return Vec3{info.size_min.x, info.size_min.y, nodes_[i].size.z};
+    };
+    auto fixtures_of = [&](const Choice& c) {
+      std::vector<BathFixture> out;
+      auto add = [&](int i) {
+        if (i < 0) return;
+        const CategoryInfo& info = i == bathing && c.shower ? *shower : *nodes_[i].info;
+        const Vec3 size = size_of(i, c);
+        BathFixture f{std::string(info.name), size.x, size.y, size.z, info.zone ? info.zone->depth : 0.0};
+        if (i == basin && mirror >= 0) f.mirror = nodes_[mirror].size.x;
+        out.push_back(f);
+      };
+      add(toilet);
+      add(basin);
+      if (!c.no_bathing) add(bathing);
+      if (!c.no_cabinet) add(cabinet);
+      if (bin >= 0 && toilet >= 0) {
+        add(bin);
+        out.back().companion_of = 0;
+      }
+      return out;
+    };
+    size_t pick = choices.size() - 1;
+    for (size_t k = 0; k < choices.size(); ++k)
+      if (FitBathFixtures(room_, fixtures_of(choices[k])).fits) {
+        pick = k;
+        break;
+      }
+    if (pick == 0) {
+      FitMirror(mirror, basin);
+      return false;
+    }
+    const Choice& c = choices[pick];
+    std::vector<std::string> what;
+    if (c.no_bathing) {
+      what.push_back("no " + std::string(c.shower ? "bath or shower" : nodes_[bathing].info->name));
+      RemoveWithChildren(bathing);
+      excluded_.insert("bathtub");
+      excluded_.insert("shower");
+    } else if (c.shower) {
+      what.push_back("a shower instead of the bath");
+      nodes_[bathing].size = size_of(bathing, c);
+      nodes_[bathing].info = shower;
+      nodes_[bathing].item = ItemFor("shower");
+      excluded_.insert("bathtub");
+    }
+    if (c.no_cabinet) {
+      what.push_back("no separate cabinet");
+      RemoveWithChildren(cabinet);
+      excluded_.insert("cabinet");
+    }
+    if (c.smallest) {
+      what.push_back("the fixtures at their smallest");
+      for (int i : {toilet, basin, cabinet, c.shower ? -1 : bathing})
+        if (i >= 0 && !nodes_[i].removed) nodes_[i].size = size_of(i, c);
+    }
+    FitMirror(mirror, basin);
+    std::string words;
+    for (const std::string& w : what) words += (words.empty() ? "" : ", ") + w;
+    notes_.push_back("a small bathroom: " + words + (pick + 1 == choices.size() && !FitBathFixtures(room_, fixtures_of(c)).fits
+                                                         ? " (even so the use zones do not all fit)"
+                                                         : " (so that every fixture's use zone stays open floor)"));
+    return true;
   }
 
   // ---- output

@@ -16,15 +16,20 @@ struct BuiltLayout {
   BuildOptions options;
 };
 
-// A fixture by path relative to the source tree ("tests/fixtures/layouts/house_one_floor.json").
-inline BuiltLayout LoadBuilt(const std::string& relative) {
-  auto layout = LoadLayout(std::string(VILLA_SOURCE_DIR) + "/" + relative);
-  REQUIRE(layout.ok());
-  BuiltLayout out{*layout, {}, {}};
+// A layout built with the default options.
+inline BuiltLayout Built(Layout layout) {
+  BuiltLayout out{std::move(layout), {}, {}};
   auto building = BuildBuilding(out.layout, out.options);
   REQUIRE(building.ok());
   out.building = std::move(*building);
   return out;
+}
+
+// A fixture by path relative to the source tree ("tests/fixtures/layouts/house_one_floor.json").
+inline BuiltLayout LoadBuilt(const std::string& relative) {
+  auto layout = LoadLayout(std::string(VILLA_SOURCE_DIR) + "/" + relative);
+  REQUIRE(layout.ok());
+  return Built(std::move(*layout));
 }
 
 inline RoomContext ContextOf(const BuiltLayout& b, const std::string& room) {
