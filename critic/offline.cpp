@@ -103,12 +103,14 @@ struct Candidate {
 // The free-standing objects closer than `clearance` to object i at `pose` (none: it is free of them), or
 // nothing at all when the floor's edge or a keep-out is in the way (no object can be moved out of that).
 std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::Pose& pose, double clearance,
-                                         const std::set<int>& ignore = {}) {
+                                         const std::set<int>& ignore = {}, bool own_box = false) {
   const solver::ProblemObject& o = room.solution.objects[i];
   solver::ObjectPlacement pl = room.solution.placements[i];
   pl.pose = pose;
   ObjectBox box = BoxOf(o, pl);
-  const double top = pose.z + (room.stack_top[i] - room.solution.placements[i].pose.z) * pose.scale / room.solution.placements[i].pose.scale;
+  const double top = own_box ? box.z1
+                             : pose.z + (room.stack_top[i] - room.solution.placements[i].pose.z) * pose.scale /
+                                            room.solution.placements[i].pose.scale;
   const bool covering = Covering(o, pose.scale);
   std::vector<int> blockers;
   for (size_t j = 0; j < room.solution.objects.size(); ++j) {
@@ -135,8 +137,9 @@ std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::
 // Whether object i at `pose` keeps `clearance` from the other free-standing objects, stays on the free
 // floor and out of the keep-outs. Only the object's own box is tested (what stands on it moves with it and
 // stays within it).
-bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, const std::set<int>& ignore = {}) {
-  auto blockers = Blockers(room, i, pose, clearance, ignore);
+bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, const std::set<int>& ignore = {},
+          bool own_box = false) {
+  auto blockers = Blockers(room, i, pose, clearance, ignore, own_box);
   return blockers && blockers->empty();
 }
 
@@ -617,11 +620,12 @@ std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<Mult
 
 // An order of moves taking each object of `poses` to its pose, where none enters the place of one still to
 // move (height ranges counted: an upper cabinet hangs over a counter). Where every remaining one waits for
-// another (a cycle: the cooker must pass the fridge), one of them is parked first on another wall (all of
-// them stand against or hang on walls), clear of
-// everything and of every pose to come, and moved on when its pose is free. False when no order is found.
+// another (a cycle: the cooker must pass the fridge; a counter and the cabinet over it), one of them is
+// parked first (all of them stand against or hang on walls), what hangs before what stands, clear of
+// everything, of where the others stand and of every pose to come, and moved on when its pose is free.
+// False when no order is found.
 bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& poses, double clearance,
-               std::vector<std::pair<int, Candidate>>* order) {
+               std::vector<std::pair<int, Candidate>>* order, bool hung_first = false) {
   const size_t n = poses.size();
   std::vector<solver::ObjectPlacement> at(n);
   std::vector<ObjectBox> target(n);
@@ -657,28 +661,54 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
       if (order->size() >= n + std::count(parked.begin(), parked.end(), true)) return true;
       continue;
     }
-    // Park the first waiting object not parked yet.
+    // Park a waiting object not parked yet: the first one, on another wall than its pose's; or with
+    // `hung_first`, what hangs before what stands (a wall has room for it more often), anywhere along a wall
+    // where it meets neither another's place now nor any place to come.
+    std::vector<size_t> waiting;
+    for (size_t a = 0; a < n; ++a)
+      if (!done[a] && !parked[a]) waiting.push_back(a);
+    if (waiting.empty()) return false;
+    if (hung_first) {
+      std::stable_sort(waiting.begin(), waiting.end(), [&](size_t a, size_t b) {
+        return (room.solution.objects[poses[a].first].relation == solver::Relation::kOnWall) >
+               (room.solution.objects[poses[b].first].relation == solver::Relation::kOnWall);
+      });
+    }
+    std::set<int> moving;
+    for (const auto& p : poses) moving.insert(p.first);
     int park = -1;
-    for (size_t a = 0; a < n && park < 0; ++a)
-      if (!done[a] && !parked[a]) park = static_cast<int>(a);
-    if (park < 0) return false;
-    const int k = poses[park].first;
     std::optional<Candidate> spot;
-    for (size_t w = 0; w < room.problem.walls.size() && !spot; ++w) {
-      if (static_cast<int>(w) == poses[park].second.wall) continue;
-      const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
-      for (double t = 0.0; t < length && !spot; t += 0.25) {
-        auto c = OnWallAt(room, k, static_cast<int>(w), t, at[park].pose.scale);
-        if (!c || !Free(room, k, c->pose, clearance)) continue;
-        solver::ObjectPlacement pl = at[park];
-        pl.pose = c->pose;
-        const ObjectBox box = BoxOf(room.solution.objects[k], pl);
-        bool clear = true;
-        for (size_t b = 0; b < n && clear; ++b) clear = !meets(box, box.z0 + height(park), target[b], target[b].z0 + height(b));
-        if (clear) spot = c;
+    for (size_t a : waiting) {
+      const int obj = poses[a].first;
+      for (size_t w = 0; w < room.problem.walls.size() && !spot; ++w) {
+        if (!hung_first && static_cast<int>(w) == poses[a].second.wall) continue;
+        const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+        for (double t = 0.0; t < length && !spot; t += hung_first ? 0.1 : 0.25) {
+          auto c = OnWallAt(room, obj, static_cast<int>(w), t, at[a].pose.scale);
+          if (!c || !(hung_first ? Free(room, obj, c->pose, clearance, moving) : Free(room, obj, c->pose, clearance))) continue;
+          solver::ObjectPlacement pl = at[a];
+          pl.pose = c->pose;
+          const ObjectBox box = BoxOf(room.solution.objects[obj], pl);
+          bool clear = true;
+          for (size_t b = 0; b < n && clear; ++b) {
+            if (hung_first && b == a) continue;
+            clear = !meets(box, box.z0 + height(a), target[b], target[b].z0 + height(b));
+            if (clear && hung_first) {
+              const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
+              clear = !meets(box, box.z0 + height(a), there, there.z0 + height(b));
+            }
+          }
+          if (clear) spot = c;
+        }
       }
+      if (spot) {
+        park = static_cast<int>(a);
+        break;
+      }
+      if (!hung_first) break;  // only the first waiting one
     }
     if (!spot) return false;
+    const int k = poses[park].first;
     parked[park] = true;
     at[park].pose = spot->pose;
     at[park].wall = spot->wall;
@@ -687,77 +717,442 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
   return false;
 }
 
+// A unit of a kitchen's run: a counter, the fridge, the cooker, the dishwasher.
+bool KitchenUnit(const solver::ProblemObject& o) {
+  return o.category == "counter" || o.category == "fridge" || o.category == "cooker" || o.category == "dishwasher";
+}
+
+// A layout of a run: where each member (and what hangs behind it) goes, in the order the moves are applied.
+struct RunLayout {
+  Unmet unmet;
+  double moved = 0.0;
+  std::vector<std::pair<int, Candidate>> poses;
+  std::vector<std::pair<int, Candidate>> before;  // moved first: things on members slid (ShiftsOffKeepOuts),
+                                                  // a table and its chairs out of the way (MakeRoomForRun)
+};
+using MemberPoses = std::vector<std::pair<int, Candidate>>;
+
+// What hangs on the wall behind a run's member (a counter's upper cabinet, the cooker's hood): (hung object,
+// member). It moves with its member, keeping its place along the wall relative to it.
+std::vector<std::pair<int, int>> HungOverRun(const Room& room, const std::set<int>& members) {
+  std::vector<std::pair<int, int>> hung;
+  for (const scene::SemanticEdge& e : room.graph) {
+    if (e.relation != scene::SemanticRelation::kBehind) continue;
+    const int h = room.Find(e.source), member = room.Find(e.target);
+    if (h < 0 || member < 0 || !members.count(member) || members.count(h) || room.parent[h] >= 0 ||
+        room.solution.objects[h].relation != solver::Relation::kOnWall)
+      continue;
+    hung.push_back({h, member});
+  }
+  return hung;
+}
+
+// Whether a box meets one of the room's keep-outs (plan overlap and height ranges meeting).
+bool InKeepOut(const Room& room, const ObjectBox& box) {
+  const Ring footprint = box.Footprint();
+  for (const solver::KeepOut& k : room.problem.keep_outs) {
+    if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
+    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return true;
+  }
+  return false;
+}
+
+// A place for child `ch` of member k on another surface of k (a shelf inside a counter): the surface index and
+// the place in the member's frame (m along its width and depth). `top` is the member's box where it goes,
+// `boxes` its children's boxes there (the one at `self` is the child's); none clears a keep-out and every
+// other child by 5 mm, within the surface's extent and under the room above it.
+struct ShelfPlace {
+  int surface = -1;
+  double x = 0.0, y = 0.0;
+};
+std::optional<ShelfPlace> OnLowerShelf(const Room& room, int k, int ch, const ObjectBox& top, std::vector<ObjectBox>& boxes, int self) {
+  const solver::ProblemObject& child = room.solution.objects[ch];
+  const solver::ProblemObject& member = room.solution.objects[k];
+  if (child.surface >= 0 || child.category == "sink") return std::nullopt;
+  const double scale = room.solution.placements[k].pose.scale;
+  const ObjectBox at = boxes[self];
+  const double height = at.z1 - at.z0;
+  const double hx = HalfAlong(at.hx, at.hy, at.yaw - top.yaw, {1.0, 0.0}), hy = HalfAlong(at.hx, at.hy, at.yaw - top.yaw, {0.0, 1.0});
+  for (size_t j = 0; j < member.asset.support_surfaces.size(); ++j) {
+    const SupportSurface& surface = member.asset.support_surfaces[j];
+    if (static_cast<int>(j) == room.solution.placements[ch].surface || surface.clear_height * scale < height + 0.01) continue;
+    const Box2 extent = BoundingBox(surface.polygon);
+    const double x0 = extent.min_x * scale + hx + 0.01, x1 = extent.max_x * scale - hx - 0.01;
+    const double y = 0.5 * (extent.min_y + extent.max_y) * scale;
+    if (x1 < x0 || (extent.max_y - extent.min_y) * scale < 2.0 * hy + 0.02) continue;
+    const double mid = 0.5 * (x0 + x1);
+    for (int step = 0; step <= 100; ++step) {
+      for (double sign : {-1.0, 1.0}) {
+        const double x = mid + sign * 0.02 * step;
+        if (x < x0 || x > x1 || (step == 0 && sign > 0)) continue;
+        ObjectBox there = at;
+        there.c = geo::Add(geo::Add(top.c, geo::Scale(top.U(), x)), geo::Scale(top.V(), y));
+        there.z0 = top.z0 + surface.z * scale;
+        there.z1 = there.z0 + height;
+        if (InKeepOut(room, there)) continue;
+        bool clear = true;
+        for (size_t o = 0; o < boxes.size() && clear; ++o)
+          clear = static_cast<int>(o) == self || HeightOverlap(there, boxes[o]) <= 0.0 || PlanGap(there, boxes[o]) >= 0.005;
+        if (!clear) continue;
+        boxes[self] = there;
+        return ShelfPlace{static_cast<int>(j), x, y};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// What stands on the run's members and would enter a keep-out where they go (a window's zone starts at the
+// sill: a counter under it is low enough, the kettle on it is not): each such thing slid along its member's
+// top, the nearest first, to where it stays clear of the keep-outs and of the things beside it; the shifts,
+// as poses in the member's present frame (made before the member moves, which carries them). Nullopt when
+// one finds no such place: the layout would lose it, so it is not tried.
+std::optional<std::vector<std::pair<int, Candidate>>> ShiftsOffKeepOuts(const Room& room,
+                                                                        const std::vector<std::pair<int, Candidate>>& members) {
+  std::vector<std::pair<int, Candidate>> shifts;
+  for (const auto& [k, c] : members) {
+    const std::vector<solver::ObjectPlacement> moved = room.Moved(k, c.pose, c.wall);
+    std::vector<ObjectBox> boxes;  // the children where they will stand, shifts included
+    std::vector<int> stuck;
+    for (int ch : room.children[k]) {
+      boxes.push_back(BoxOf(room.solution.objects[ch], moved[ch]));
+      if (InKeepOut(room, boxes.back())) stuck.push_back(static_cast<int>(boxes.size()) - 1);
+    }
+    if (stuck.empty()) continue;
+    solver::ObjectPlacement member = room.solution.placements[k];
+    member.pose = c.pose;
+    const ObjectBox top = BoxOf(room.solution.objects[k], member);
+    const Point u = top.U();
+    for (int s : stuck) {
+      const int ch = room.children[k][s];
+      if (!room.children[ch].empty() || room.solution.objects[ch].relation != solver::Relation::kOnTop) return std::nullopt;
+      const ObjectBox at = boxes[s];
+      const double half = HalfAlong(at.hx, at.hy, at.yaw - top.yaw, {1.0, 0.0});
+      const double local = geo::Dot(geo::Sub(at.c, top.c), u);
+      std::optional<double> best;
+      for (int step = 1; step <= 200 && !best; ++step) {
+        for (double sign : {-1.0, 1.0}) {
+          const double dx = sign * 0.02 * step;
+          if (std::abs(local + dx) + half > top.hx - 0.01) continue;
+          ObjectBox there = at;
+          there.c = geo::Add(at.c, geo::Scale(u, dx));
+          if (InKeepOut(room, there)) continue;
+          bool clear = true;
+          for (size_t o = 0; o < boxes.size() && clear; ++o)
+            clear = static_cast<int>(o) == s || HeightOverlap(there, boxes[o]) <= 0.0 || PlanGap(there, boxes[o]) >= 0.005;
+          if (clear) {
+            best = dx;
+            boxes[s] = there;
+            break;
+          }
+        }
+      }
+      const ObjectBox member_now = BoxOf(room.solution.objects[k], room.solution.placements[k]);
+      const solver::ObjectPlacement& now = room.solution.placements[ch];
+      Candidate shift;
+      shift.pose = now.pose;
+      if (best) {
+        shift.pose.x += member_now.U().x * *best;
+        shift.pose.y += member_now.U().y * *best;
+      } else {
+        // Down onto a shelf of the member (below the sill), where the solver may put it (not pinned to
+        // its surface, not a sink: a sink belongs on the worktop).
+        const auto shelf = OnLowerShelf(room, k, ch, top, boxes, s);
+        if (!shelf) return std::nullopt;
+        shift.pose.x = member_now.c.x + member_now.U().x * shelf->x + member_now.V().x * shelf->y;
+        shift.pose.y = member_now.c.y + member_now.U().y * shelf->x + member_now.V().y * shelf->y;
+        shift.surface = shelf->surface;
+      }
+      shifts.push_back({ch, shift});
+    }
+  }
+  return shifts;
+}
+
+// The width and the depth of object k as it stands (its scale), m.
+double WidthOf(const Room& room, int k) { return room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale; }
+double DepthOf(const Room& room, int k) { return room.solution.objects[k].asset.size.y * room.solution.placements[k].pose.scale; }
+
+// The box of object k at `pose`.
+ObjectBox BoxAt(const Room& room, int k, const solver::Pose& pose) {
+  solver::ObjectPlacement pl = room.solution.placements[k];
+  pl.pose = pose;
+  return BoxOf(room.solution.objects[k], pl);
+}
+
+// Moves that make room for a run's layout: the free-standing objects `movers` (a dining table and its chairs)
+// shifted together by one translation, the shortest on a 10 cm grid up to 3 m, to where each keeps
+// `clearance` from everything else as it stands now (the run's members still at their places) and from
+// `targets` (where the run goes), on the free floor and out of the keep-outs; in an order where none enters
+// the place of another still to move. Nullopt when no translation or order is found.
+std::optional<MemberPoses> MakeRoomForRun(const Room& room, const std::vector<int>& movers, const std::vector<ObjectBox>& targets,
+                                          double clearance) {
+  const std::set<int> ignore(movers.begin(), movers.end());
+  std::vector<Point> deltas;
+  for (int i = -30; i <= 30; ++i)
+    for (int j = -30; j <= 30; ++j)
+      if (i != 0 || j != 0) deltas.push_back({0.1 * i, 0.1 * j});
+  std::stable_sort(deltas.begin(), deltas.end(), [](Point a, Point b) { return std::hypot(a.x, a.y) < std::hypot(b.x, b.y) - 1e-9; });
+  for (const Point& d : deltas) {
+    if (std::hypot(d.x, d.y) > 3.0) break;
+    MemberPoses poses;
+    for (int m : movers) {
+      Candidate c;
+      c.pose = room.solution.placements[m].pose;
+      c.pose.x += d.x;
+      c.pose.y += d.y;
+      const ObjectBox box = BoxAt(room, m, c.pose);
+      bool clear = std::all_of(targets.begin(), targets.end(), [&](const ObjectBox& t) {
+        return PlanGap(box, t) >= clearance || std::min(room.stack_top[m] - room.solution.placements[m].pose.z + box.z0, t.z1) <= std::max(box.z0, t.z0);
+      });
+      if (!clear || !Free(room, m, c.pose, clearance, ignore)) break;
+      poses.push_back({m, c});
+    }
+    if (poses.size() != movers.size()) continue;
+    // The one furthest along the shift goes first: none then enters the place of one still to move.
+    std::stable_sort(poses.begin(), poses.end(), [&](const auto& a, const auto& b) {
+      const solver::Pose& pa = room.solution.placements[a.first].pose;
+      const solver::Pose& pb = room.solution.placements[b.first].pose;
+      return pa.x * d.x + pa.y * d.y > pb.x * d.x + pb.y * d.y + 1e-9;
+    });
+    bool ordered = true;
+    for (size_t a = 0; a < poses.size() && ordered; ++a) {
+      const ObjectBox there = BoxAt(room, poses[a].first, poses[a].second.pose);
+      for (size_t b = a + 1; b < poses.size() && ordered; ++b)
+        ordered = PlanGap(there, BoxOf(room.solution.objects[poses[b].first], room.solution.placements[poses[b].first])) >= 0.01;
+    }
+    if (ordered) return poses;
+  }
+  return std::nullopt;
+}
+
+// Completes a layout of the run's members (`poses`, each on its wall) with what hangs behind them, finds an
+// order of moves (MoveOrder) and measures it; kept in `layouts` when it leaves fewer unmet relations than
+// `now`. Hung objects of members on different walls must not meet (round a corner they could). `movers`
+// (free-standing objects the members may have been placed over) are moved out of the way first.
+void AddRunLayout(const Room& room, MemberPoses poses, const std::vector<std::pair<int, int>>& hung, const std::set<int>& group,
+                  const std::vector<int>& movers, const Unmet& now, double clearance, std::vector<RunLayout>* layouts) {
+  const size_t members = poses.size();
+  auto before = ShiftsOffKeepOuts(room, poses);
+  if (!before) return;
+  std::set<int> ignore = group;
+  ignore.insert(movers.begin(), movers.end());
+  for (const auto& [h, member] : hung) {
+    const auto at_member = std::find_if(poses.begin(), poses.begin() + members, [&](const auto& p) { return p.first == member; });
+    const int w = at_member->second.wall;
+    const solver::WallEdge& wall = room.problem.walls[w];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+    const solver::ObjectPlacement& mp = room.solution.placements[member];
+    const solver::ObjectPlacement& hp = room.solution.placements[h];
+    // Its offset along the member's width now, kept (0 when it hangs on another wall): it stays clear of what
+    // stands on the member as it is now.
+    const double offset = hp.wall == mp.wall ? geo::Dot(geo::Sub({hp.pose.x, hp.pose.y}, {mp.pose.x, mp.pose.y}), d) : 0.0;
+    const double t = geo::Dot(geo::Sub({at_member->second.pose.x, at_member->second.pose.y}, wall.a), d) + offset;
+    auto c = OnWallAt(room, h, w, t, hp.pose.scale);
+    if (!c || !Free(room, h, c->pose, clearance, ignore)) return;
+    const ObjectBox box = BoxAt(room, h, c->pose);
+    for (size_t k = members; k < poses.size(); ++k) {
+      const ObjectBox b = BoxAt(room, poses[k].first, poses[k].second.pose);
+      if (PlanGap(box, b) < clearance && std::min(box.z1, b.z1) > std::max(box.z0, b.z0)) return;
+    }
+    poses.push_back({h, *c});
+  }
+  std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+  if (!movers.empty()) {
+    std::vector<ObjectBox> targets;
+    for (const auto& [k, c] : poses) {
+      ObjectBox box = BoxAt(room, k, c.pose);
+      box.z1 = c.pose.z + room.stack_top[k] - room.solution.placements[k].pose.z;
+      targets.push_back(box);
+    }
+    auto room_made = MakeRoomForRun(room, movers, targets, clearance);
+    if (!room_made) return;
+    for (const auto& [k, c] : *room_made) placements = room.Moved(placements, k, c.pose, -1);
+    before->insert(before->begin(), room_made->begin(), room_made->end());
+  }
+  std::vector<std::pair<int, Candidate>> order;
+  if (!MoveOrder(room, poses, clearance, &order, true)) return;
+  for (const auto& [k, c] : *before)
+    if (!std::count(movers.begin(), movers.end(), k)) placements[k].pose = c.pose;
+  double moved = 0.0;
+  for (const auto& [k, c] : poses) {
+    placements = room.Moved(placements, k, c.pose, c.wall);
+    moved += std::hypot(c.pose.x - room.solution.placements[k].pose.x, c.pose.y - room.solution.placements[k].pose.y);
+  }
+  for (int m : movers) moved += std::hypot(placements[m].pose.x - room.solution.placements[m].pose.x, placements[m].pose.y - room.solution.placements[m].pose.y);
+  const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
+  if (u < now) layouts->push_back({u, moved, std::move(order), std::move(*before)});
+}
+
+// Whether object k may stand against wall w (some objects are held to one wall).
+bool MayStandOn(const Room& room, int k, int w) { return room.solution.objects[k].wall < 0 || room.solution.objects[k].wall == w; }
+
+// Member k of a run against wall w, centred `t` m along it, free of everything but `ignore` (what stands on
+// it is not counted: ShiftsOffKeepOuts keeps it out of the keep-outs).
+std::optional<Candidate> RunMemberAt(const Room& room, int k, int w, double t, const std::set<int>& ignore, double clearance) {
+  if (!MayStandOn(room, k, w)) return std::nullopt;
+  auto c = OnWallAt(room, k, w, t, room.solution.placements[k].pose.scale);
+  if (!c || !Free(room, k, c->pose, clearance, ignore, true)) return std::nullopt;
+  return c;
+}
+
+// Members `chain` side by side along wall w, `joint` apart, from `start` m along it onwards (`direction` 1)
+// or backwards (-1); false when one does not fit there.
+bool LayAlong(const Room& room, const std::vector<int>& chain, int w, double start, double direction, const std::set<int>& ignore,
+              double clearance, double joint, MemberPoses* poses) {
+  double at = start;
+  for (int k : chain) {
+    auto c = RunMemberAt(room, k, w, at + direction * 0.5 * WidthOf(room, k), ignore, clearance);
+    if (!c) return false;
+    poses->push_back({k, *c});
+    at += direction * (WidthOf(room, k) + joint);
+  }
+  return true;
+}
+
+// Layouts of the run along one wall: its members in the chain's order, `joint` apart, slid along the wall
+// in 5 cm steps, either way round; free of everything but `ignore`.
+std::vector<MemberPoses> StraightRunLayouts(const Room& room, const std::vector<int>& run, const std::set<int>& ignore, double clearance,
+                                            double joint) {
+  std::vector<MemberPoses> out;
+  double total = 0.0;
+  for (int k : run) total += WidthOf(room, k) + joint;
+  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+    const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+    if (length < total) continue;
+    for (bool reversed : {false, true}) {
+      for (double start = 0.0; start + total <= length + joint; start += 0.05) {
+        std::vector<int> chain = run;
+        if (reversed) std::reverse(chain.begin(), chain.end());
+        MemberPoses poses;
+        if (LayAlong(room, chain, static_cast<int>(w), start, 1.0, ignore, clearance, joint, &poses)) out.push_back(std::move(poses));
+      }
+    }
+  }
+  return out;
+}
+
+// Layouts of the run as an L: along two walls meeting in a room's corner at a right angle (wall a ends where
+// wall b starts, the room on the left of both), the first members on wall a up to the corner, the rest on
+// wall b from it, split after every member, either way round. The corner square stays empty (a blind
+// corner): the last member of wall a stops `joint` short of the front of wall b's first member and that one
+// starts `joint` past the last one's front, so the two boxes touch across the corner (next_to holds: the gap
+// is the widest separation along a face normal) and neither stands in the other's front zone.
+std::vector<MemberPoses> CornerRunLayouts(const Room& room, const std::vector<int>& run, const std::set<int>& ignore, double clearance,
+                                          double joint) {
+  std::vector<MemberPoses> out;
+  const auto& walls = room.problem.walls;
+  for (size_t a = 0; a < walls.size(); ++a) {
+    for (size_t b = 0; b < walls.size(); ++b) {
+      if (a == b || geo::Dist(walls[a].b, walls[b].a) > 0.02) continue;
+      const Point da = geo::Unit(geo::Sub(walls[a].b, walls[a].a)), db = geo::Unit(geo::Sub(walls[b].b, walls[b].a));
+      if (geo::Cross(da, db) < 0.995) continue;  // a right-angled corner seen from inside the room
+      const double length_a = geo::Dist(walls[a].a, walls[a].b);
+      for (bool reversed : {false, true}) {
+        std::vector<int> chain = run;
+        if (reversed) std::reverse(chain.begin(), chain.end());
+        for (size_t split = 1; split < chain.size(); ++split) {
+          const int last_a = chain[split - 1], first_b = chain[split];
+          // Wall a from the corner back (the last member first), wall b from the corner on.
+          std::vector<int> leg_a(chain.begin(), chain.begin() + split), leg_b(chain.begin() + split, chain.end());
+          std::reverse(leg_a.begin(), leg_a.end());
+          MemberPoses poses, on_b;
+          if (!LayAlong(room, leg_a, static_cast<int>(a),
+                        length_a - room.solution.objects[first_b].wall_gap - DepthOf(room, first_b) - joint, -1.0, ignore, clearance,
+                        joint, &poses) ||
+              !LayAlong(room, leg_b, static_cast<int>(b), room.solution.objects[last_a].wall_gap + DepthOf(room, last_a) + joint, 1.0,
+                        ignore, clearance, joint, &on_b))
+            continue;
+          std::reverse(poses.begin(), poses.end());
+          poses.insert(poses.end(), on_b.begin(), on_b.end());
+          out.push_back(std::move(poses));
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// The free-standing objects a run's layout may find in its way (a kitchen's dining table, an island), each
+// with the free-standing objects related to it (the chairs round the table): moved together as one.
+std::vector<std::vector<int>> MovableSets(const Room& room, const std::set<int>& group) {
+  std::vector<std::vector<int>> out;
+  const auto free_standing = [&](int k) {
+    return k >= 0 && room.parent[k] < 0 && !group.count(k) && !WallBound(room.solution.objects[k]) &&
+           room.solution.objects[k].parent == "floor" && !Covering(room.solution.objects[k], room.solution.placements[k].pose.scale);
+  };
+  for (size_t x = 0; x < room.solution.objects.size(); ++x) {
+    const int hub = static_cast<int>(x);
+    if (!free_standing(hub) || room.children[hub].empty()) continue;  // a table or an island: it carries things
+    std::vector<int> set{hub};
+    for (const scene::SemanticEdge& e : room.graph) {
+      const int a = room.Find(e.source), b = room.Find(e.target);
+      for (auto [mine, other] : {std::pair{a, b}, std::pair{b, a}})
+        if (mine == hub && free_standing(other) && !std::count(set.begin(), set.end(), other)) set.push_back(other);
+    }
+    out.push_back(std::move(set));
+  }
+  return out;
+}
+
 // Run moves for an unmet next_to inside a run: the whole run laid out again in its chain's order, each
-// member touching the next (2 cm apart), slid along every wall it may stand on, either way round. The
-// members move one after the other in an order where none enters another's present place; a layout
-// without such an order is not tried. Ranked like single moves, the best `keep` kept.
+// member touching the next (2 cm apart), along one wall (StraightRunLayouts) or round a corner
+// (CornerRunLayouts). The members move one after the other in an order where none enters another's present
+// place; a layout without such an order is not tried. When no layout is free, the layouts a table or an
+// island with its seats stands in the way of are tried with that set moved aside first (MakeRoomForRun).
+// Ranked like single moves, the best `keep` kept.
 std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Unmet& now, const OfflineProposalOptions& options,
                                         const std::string& why) {
   const std::vector<int> run = RunThrough(room, s);
   if (run.empty() || std::find(run.begin(), run.end(), t) == run.end()) return {};
   std::set<int> group(run.begin(), run.end());
-  // What hangs on the wall behind a member (a counter's upper cabinet, the cooker's hood) moves with it,
-  // keeping its place along the wall relative to the member.
-  std::vector<std::pair<int, int>> hung;  // (hung object, member)
-  for (const scene::SemanticEdge& e : room.graph) {
-    if (e.relation != scene::SemanticRelation::kBehind) continue;
-    const int h = room.Find(e.source), member = room.Find(e.target);
-    if (h < 0 || member < 0 || !group.count(member) || group.count(h) || room.parent[h] >= 0 ||
-        room.solution.objects[h].relation != solver::Relation::kOnWall)
-      continue;
-    hung.push_back({h, member});
-  }
+  const std::vector<std::pair<int, int>> hung = HungOverRun(room, group);
   for (const auto& [h, member] : hung) group.insert(h);
   constexpr double kJoint = 0.02;  // m between neighbours of the run
-  double total = 0.0;
-  for (int k : run) total += room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale + kJoint;
-  std::vector<MultiMove> layouts;
-  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
-    bool allowed = true;
-    for (int k : run) allowed = allowed && (room.solution.objects[k].wall < 0 || room.solution.objects[k].wall == static_cast<int>(w));
-    const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
-    if (!allowed || length < total) continue;
-    for (bool reversed : {false, true}) {
-      for (double start = 0.0; start + total <= length + kJoint; start += 0.05) {
-        std::vector<std::pair<int, Candidate>> poses;
-        double at = start;
-        for (size_t n = 0; n < run.size(); ++n) {
-          const int k = run[reversed ? run.size() - 1 - n : n];
-          const double width = room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale;
-          auto c = OnWallAt(room, k, static_cast<int>(w), at + 0.5 * width, room.solution.placements[k].pose.scale);
-          if (!c || !Free(room, k, c->pose, options.clearance, group)) break;
-          poses.push_back({k, *c});
-          at += width + kJoint;
-        }
-        if (poses.size() != run.size()) continue;
-        for (const auto& [h, member] : hung) {
-          const solver::WallEdge& wall = room.problem.walls[w];
-          const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
-          const solver::ObjectPlacement& mp = room.solution.placements[member];
-          const solver::ObjectPlacement& hp = room.solution.placements[h];
-          // Its offset along the member's width now, kept (0 when it hangs on another wall).
-          const double offset = hp.wall == mp.wall ? geo::Dot(geo::Sub({hp.pose.x, hp.pose.y}, {mp.pose.x, mp.pose.y}), d) : 0.0;
-          const auto at_member = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == member; });
-          const double t = geo::Dot(geo::Sub({at_member->second.pose.x, at_member->second.pose.y}, wall.a), d) + offset;
-          auto c = OnWallAt(room, h, static_cast<int>(w), t, hp.pose.scale);
-          if (!c || !Free(room, h, c->pose, options.clearance, group)) break;
-          poses.push_back({h, *c});
-        }
-        if (poses.size() != run.size() + hung.size()) continue;
-        std::vector<std::pair<int, Candidate>> order;
-        if (!MoveOrder(room, poses, options.clearance, &order)) continue;
-        std::vector<solver::ObjectPlacement> placements = room.solution.placements;
-        double moved = 0.0;
-        for (const auto& [k, c] : poses) {
-          placements = room.Moved(placements, k, c.pose, c.wall);
-          moved += std::hypot(c.pose.x - room.solution.placements[k].pose.x, c.pose.y - room.solution.placements[k].pose.y);
-        }
-        const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, room.graph));
-        if (u < now) layouts.push_back({u, moved, std::move(order), {}});
-      }
+  constexpr size_t kMaxMadeRoom = 40;  // layouts tried with a set moved aside, per set (each a search)
+  // Kitchen units turn corners (an L of counters) and a kitchen's table may make room for them; a bed with
+  // its nightstands does neither.
+  const bool kitchen = std::all_of(run.begin(), run.end(), [&](int k) { return KitchenUnit(room.solution.objects[k]); });
+  std::vector<RunLayout> layouts;
+  const auto lay = [&](const std::set<int>& ignore, const std::vector<int>& movers) {
+    std::vector<MemberPoses> raw = StraightRunLayouts(room, run, ignore, options.clearance, kJoint);
+    if (kitchen) {
+      std::vector<MemberPoses> corner = CornerRunLayouts(room, run, ignore, options.clearance, kJoint);
+      raw.insert(raw.end(), corner.begin(), corner.end());
+    }
+    size_t tried = 0;
+    for (MemberPoses& poses : raw) {
+      if (!movers.empty() && tried++ >= kMaxMadeRoom) break;
+      AddRunLayout(room, std::move(poses), hung, group, movers, now, options.clearance, &layouts);
+    }
+  };
+  lay(group, {});
+  if (layouts.empty() && kitchen) {
+    for (const std::vector<int>& movers : MovableSets(room, group)) {
+      std::set<int> ignore = group;
+      ignore.insert(movers.begin(), movers.end());
+      lay(ignore, movers);
     }
   }
-  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "the run laid out again");
+  std::stable_sort(layouts.begin(), layouts.end(), [](const RunLayout& a, const RunLayout& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (const RunLayout& l : layouts) {
+    if (static_cast<int>(out.size()) >= options.alternatives) break;
+    std::vector<Step> steps;
+    for (const auto& [k, c] : l.before) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (making room for the run)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (const auto& [k, c] : l.poses) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the run laid out again)"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    out.push_back(std::move(steps));
+  }
+  return out;
 }
 
 // The hub of an edge: of its two ends (what stands on nothing), the one with more relations to other objects
@@ -1474,6 +1869,11 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
         bool has_edges = false;
         for (const scene::SemanticEdge& e : graph) has_edges = has_edges || e.source == id || e.target == id;
         if (has_edges || !room.children[k].empty()) continue;
+        // What stands on a kitchen unit that is itself in the zone (the pan on a cooker) leaves the zone
+        // entered: taking it out would lose it for nothing. (Kitchen units only so far: other room types'
+        // figures were measured with such removals, see docs/BENCHMARKS.md.)
+        const solver::ProblemObject& carrier = solution.objects[room.Root(k)];
+        if (room.Root(k) != k && KitchenUnit(carrier) && std::count(z.intruders.begin(), z.intruders.end(), carrier.id)) continue;
         solver::Action remove;
         remove.kind = solver::ActionKind::kRemoveEntity;
         remove.id = id;

@@ -145,8 +145,13 @@ class Planning {
       double smallest = 0.0;
       for (std::string_view c : {"counter", "counter", "fridge", "cooker"})
         if (const CategoryInfo* info = FindCategory(c)) smallest += info->size_min.x + kWallGap;
-      run_left_ = LongestRun(false);
-      if (run_left_ < smallest) run_left_ = LongestRun(true);
+      // Walls without their windows first (RunStretches: what a run carries rises above a sill); where
+      // even the L does not fit so, with the windows, as before (the critic keeps what it can below them).
+      for (bool windows : {false, true}) {
+        run_left_ = LongestRun(false, windows);
+        if (run_left_ < smallest) run_left_ = LongestRun(true, windows);
+        if (run_left_ >= smallest) break;
+      }
       run_limited_ = run_left_ >= smallest;
     }
     // Sizes lean small in small rooms and large in large ones.
@@ -154,23 +159,53 @@ class Planning {
     size_factor_ = std::clamp(0.2 + 0.3 * s, 0.1, 0.65);
   }
 
-  // The longest run of wall a kitchen's chain may stand along: one free interval of a wall (the low
-  // members stand under its windows), or with `corner` an L of two intervals meeting in a corner, less the
-  // corner a counter's depth takes. 0 when the room has no free wall.
-  double LongestRun(bool corner) const {
+  // The longest run of wall a kitchen's chain may stand along: one free interval of a wall, or with
+  // `corner` an L of two intervals meeting in a corner, less the corner a counter's depth takes; with
+  // `windows` the stretches under windows count (the low members stand there), else they end the intervals.
+  // 0 when the room has no free wall.
+  double LongestRun(bool corner, bool windows) const {
     constexpr double kCornerTaken = 0.65;  // m: a counter's depth, the corner's share of the second wall
     double best = 0.0;
-    for (const WallEdge& w : room_.walls)
-      for (const Interval& f : w.free) best = std::max(best, f.second - f.first);
-    for (const WallEdge& a : room_.walls) {
-      if (!corner || a.free.empty() || a.free.back().second < a.length() - 0.01) continue;
-      for (const WallEdge& b : room_.walls) {
-        if (&a == &b || b.free.empty() || b.free.front().first > 0.01 || Distance(a.inner.b, b.inner.a) > 0.05) continue;
-        const double l = (a.free.back().second - a.free.back().first) + (b.free.front().second - b.free.front().first) - kCornerTaken;
+    std::vector<std::vector<Interval>> free;
+    for (const WallEdge& w : room_.walls) free.push_back(windows ? w.free : RunStretches(w));
+    for (const std::vector<Interval>& f : free)
+      for (const Interval& i : f) best = std::max(best, i.second - i.first);
+    for (size_t a = 0; a < room_.walls.size(); ++a) {
+      const WallEdge& wa = room_.walls[a];
+      if (!corner || free[a].empty() || free[a].back().second < wa.length() - 0.01) continue;
+      for (size_t b = 0; b < room_.walls.size(); ++b) {
+        const WallEdge& wb = room_.walls[b];
+        if (a == b || free[b].empty() || free[b].front().first > 0.01 || Distance(wa.inner.b, wb.inner.a) > 0.05) continue;
+        const double l = (free[a].back().second - free[a].back().first) + (free[b].front().second - free[b].front().first) - kCornerTaken;
         best = std::max(best, l);
       }
     }
     return best;
+  }
+
+  // Where a kitchen's run may stand along wall w: its free stretches less its windows. Under a window only
+  // what is lower than the sill may stand, and a run is not: the fridge is tall, and the kettle on a
+  // counter, the pan on the cooker and the sink rise above a counter-height sill.
+  static std::vector<Interval> RunStretches(const WallEdge& w) {
+    std::vector<Interval> out;
+    for (const Interval& f : w.free) {
+      std::vector<Interval> pieces{f};
+      for (const WallWindow& win : w.windows) {
+        std::vector<Interval> cut;
+        for (const Interval& p : pieces) {
+          if (win.span.second <= p.first || win.span.first >= p.second) {
+            cut.push_back(p);
+            continue;
+          }
+          if (win.span.first > p.first) cut.push_back({p.first, win.span.first});
+          if (win.span.second < p.second) cut.push_back({win.span.second, p.second});
+        }
+        pieces = std::move(cut);
+      }
+      for (const Interval& p : pieces)
+        if (p.second - p.first > 0.01) out.push_back(p);
+    }
+    return out;
   }
 
   RoomPlan Run() {
