@@ -224,12 +224,13 @@ int main(int argc, char** argv) {
       const int d = n.measured + (with_lost ? n.lost : 0);
       return d ? FormatFixed(100.0 * n.satisfied / d, 1) : std::string("-");
     };
-    TextTable relations({"relation", "edges", "before %", "after %", "after, lost counted %", "lost before", "lost after"});
+    TextTable relations({"relation", "edges", "before %", "after %", "held after", "after, lost counted %", "lost before", "lost after"});
     for (bool by_type : {false, true})
       for (const auto& [name, n] : after) {
         if ((name.find(' ') != std::string::npos) != by_type) continue;
         const critic::RelationCount& b = before[name];
-        relations.AddRow({name, std::to_string(n.measured + n.lost), share(b, false), share(n, false), share(n, true),
+        relations.AddRow({name, std::to_string(n.measured + n.lost), share(b, false), share(n, false),
+                          std::to_string(n.satisfied) + "/" + std::to_string(n.measured), share(n, true),
                           std::to_string(b.lost), std::to_string(n.lost)});
       }
     double sum = 0.0, worst = 0.0;

@@ -96,7 +96,8 @@ std::vector<double> AlongWallStops(const Layer& layer, int self, const WallFrame
 // `hang_above`: something is to hang on the wall above it (the painting over the bed), so a window there
 // is in the way.
 void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_index, double gap, double object_gap,
-               double side_room, bool hang_above, std::vector<Candidate>& out) {
+               double side_room, double hang_half, std::vector<Candidate>& out) {
+  const bool hang_above = hang_half > 0.0;
   const Body& b = layer.bodies[self];
   const WallEdge& wall = state.problem->walls[wall_index];
   const WallFrame wf = FrameOfWall(wall);
@@ -108,6 +109,9 @@ void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_in
     // them for what belongs there.
     double pref = hx > 0.5 ? 0.02 * std::abs(t - 0.5 * wf.length) : 0.0;
     pref += 0.3 * (std::max(0.0, side_room - (t - hx)) + std::max(0.0, side_room - (wf.length - t - hx)));
+    // What hangs above it is centred on it and keeps 0.1 m from the wall's ends: a basin in the corner
+    // leaves its mirror no place.
+    if (hang_above && (t - hang_half - 0.1 < 0.0 || t + hang_half + 0.1 > wf.length)) pref += 1.0;
     for (const WallOpening& o : wall.openings) {
       if (hang_above && o.z1 > top) pref += std::max(0.0, std::min(t + hx, o.t1) - std::max(t - hx, o.t0));
       // What hangs above it is centred on it: an opening within 0.6 m of its middle (half a picture and the
@@ -118,15 +122,18 @@ void WallSlots(const Layer& layer, int self, const RoomState& state, int wall_in
   }
 }
 
-// Whether a hung object relates to this one (it will hang on the wall above or beside it).
-bool HangsAbove(const RoomState& state, int object) {
+// Half the width of the widest hung object related to this one (it will hang on the wall above or beside
+// it), 0 when none does.
+double HangsAbove(const RoomState& state, int object) {
+  double half = 0.0;
   for (const SemanticEdge& e : state.edges) {
     const bool source = e.source == state.objects[object].id, target = e.target == state.objects[object].id;
     if (!source && !target) continue;
     const int other = state.Find(source ? e.target : e.source);
-    if (other >= 0 && state.objects[other].relation == Relation::kOnWall) return true;
+    if (other >= 0 && state.objects[other].relation == Relation::kOnWall)
+      half = std::max(half, 0.5 * state.objects[other].asset.size.x * state.objects[other].scale_min);
   }
-  return false;
+  return half;
 }
 
 // Wall length the objects that stand next to (or left or right of) this one need on each side.
@@ -377,7 +384,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   GridSlots(layer, self, FourTurns(classes), step, grid);
   if (!hub) {
     for (size_t w = 0; w < problem.walls.size(); ++w) {
-      WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, false, grid);
+      WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, 0.0, grid);
     }
   }
   for (Candidate& c : grid) {
