@@ -439,7 +439,8 @@ using Suggestions = std::function<const std::vector<Candidate>&(int object)>;
 
 // Poses near where object k stands (a step of 0.25 to 1.2 m in eight directions, or along its wall), for
 // making room: `away` is the box it must keep clear of.
-std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away, double clearance) {
+std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away, double clearance,
+                                  const std::vector<double>& steps = {0.25, 0.5, 0.8, 1.2}) {
   const solver::ProblemObject& o = room.solution.objects[k];
   const solver::ObjectPlacement& now = room.solution.placements[k];
   std::vector<Candidate> out;
@@ -449,7 +450,7 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
     const solver::WallEdge& wall = room.problem.walls[w];
     const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
     const double t = geo::Dot(geo::Sub({now.pose.x, now.pose.y}, wall.a), d);
-    for (double step : {0.25, 0.5, 0.8, 1.2})
+    for (double step : steps)
       for (double sign : {-1.0, 1.0})
         if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
     // Something hung (a towel rail in the place of a mirror) may go to another wall as well: it stands in
@@ -462,7 +463,7 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
           if (auto c = OnWallAt(room, k, static_cast<int>(v), s, now.pose.scale)) out.push_back(*c);
       }
   } else if (!OnObject(o)) {
-    for (double step : {0.25, 0.5, 0.8, 1.2})
+    for (double step : steps)
       for (int dir = 0; dir < 8; ++dir) {
         const double a = dir * std::numbers::pi / 4.0;
         out.push_back({{now.pose.x + step * std::cos(a), now.pose.y + step * std::sin(a), now.pose.z, now.pose.yaw, now.pose.scale}, -1});
@@ -1261,33 +1262,32 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     variants.push_back(std::move(v));
   }
   if (all.size() > 1) variants.push_back({{hub}, std::vector<int>(all.begin() + 1, all.end())});  // the hub alone, all re-placed
-  // What hangs on a wall behind the hub, hung again behind it after the move.
-  std::vector<int> hung;
-  for (const scene::SemanticEdge& e : room.graph) {
-    const int a = room.Find(e.source), b = room.Find(e.target);
-    if (e.relation == scene::SemanticRelation::kBehind && a >= 0 && b == hub && room.parent[a] < 0 &&
-        room.solution.objects[a].relation == solver::Relation::kOnWall && std::find(hung.begin(), hung.end(), a) == hung.end())
-      hung.push_back(a);
-  }
-  // What stands against a wall in front of the hub (the TV stand before the sofa), slid along its wall to
-  // stay before it after the move.
-  std::vector<int> before_hub;
-  for (const scene::SemanticEdge& e : room.graph) {
-    const int a = room.Find(e.source), b = room.Find(e.target);
-    if (e.relation == scene::SemanticRelation::kFrontOf && a >= 0 && a != other && b == hub && room.parent[a] < 0 &&
-        room.solution.objects[a].relation == solver::Relation::kAgainstWall && room.solution.placements[a].wall >= 0 &&
-        std::find(before_hub.begin(), before_hub.end(), a) == before_hub.end())
-      before_hub.push_back(a);
-  }
-  // The other end, when it stands free on the floor with edges only to the hub's own object (not to what
-  // stands on it), may be re-seated against the hub after the move.
+  // From the graph, in one pass: what hangs on a wall behind the hub (hung again behind it after the move);
+  // what stands against a wall in front of it (the TV stand before the sofa: slid along its wall to stay
+  // before it); the edges between hub and other end, and whether the other end, standing free with edges
+  // only to the hub itself, may be re-seated against it after the move; the gap range at which the other
+  // end stands before the hub, if it does.
+  std::vector<int> hung, before_hub;
   std::vector<scene::SemanticEdge> between;
+  std::optional<std::pair<double, double>> facing_gap;
   bool reseat = room.parent[other] < 0 && room.solution.objects[other].parent == "floor" &&
                 room.solution.objects[other].relation == solver::Relation::kOnTop &&
                 !Covering(room.solution.objects[other], room.solution.placements[other].pose.scale);
+  const auto add_once = [](std::vector<int>& list, int k) {
+    if (std::find(list.begin(), list.end(), k) == list.end()) list.push_back(k);
+  };
   for (const scene::SemanticEdge& e : room.graph) {
     const int a = room.Find(e.source), b = room.Find(e.target);
     if (a < 0 || b < 0) continue;
+    const bool loose_root = room.parent[a] < 0;
+    if (b == hub && loose_root && e.relation == scene::SemanticRelation::kBehind &&
+        room.solution.objects[a].relation == solver::Relation::kOnWall)
+      add_once(hung, a);
+    if (b == hub && loose_root && a != other && e.relation == scene::SemanticRelation::kFrontOf &&
+        room.solution.objects[a].relation == solver::Relation::kAgainstWall && room.solution.placements[a].wall >= 0)
+      add_once(before_hub, a);
+    if (a == other && b == hub && e.relation == scene::SemanticRelation::kFrontOf && e.params.min_gap && e.params.max_gap)
+      facing_gap = {*e.params.min_gap, *e.params.max_gap};
     if ((a == other && b == hub) || (a == hub && b == other)) between.push_back(e);
     else if ((room.Root(a) == other && b == hub) || (a == hub && room.Root(b) == other) || (room.Root(a) == hub && b == other) ||
              (a == other && room.Root(b) == hub))
@@ -1324,12 +1324,6 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     for (int k = -30; k <= 30; ++k)
       if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt, std::nullopt});
   // The hub faces the other end, which stands against a wall in front of it at a gap: both placed anew.
-  std::optional<std::pair<double, double>> facing_gap;
-  for (const scene::SemanticEdge& e : room.graph) {
-    const int a = room.Find(e.source), b = room.Find(e.target);
-    if (a == other && b == hub && e.relation == scene::SemanticRelation::kFrontOf && e.params.min_gap && e.params.max_gap)
-      facing_gap = {*e.params.min_gap, *e.params.max_gap};
-  }
   if (facing_gap && !on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
     const solver::ProblemObject& oo = room.solution.objects[other];
     const double scale = room.solution.placements[other].pose.scale;
@@ -1353,7 +1347,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     }
   }
   // A hub against a wall facing the other end on the wall across (the sofa and the TV stand on opposite
-  // walls): the hub to every 25 cm of every wall it may stand on, the other end to the foot of its axis on
+  // walls): the hub along every wall it may stand on (every 10 cm, and tight against its ends and openings), the other end to the foot of its axis on
   // the first wall it faces across the room, when the gap between them is in range.
   if (facing_gap && on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
     const solver::ProblemObject& oo = room.solution.objects[other];
@@ -1416,10 +1410,9 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       if (mo.other_at) moving.insert(other);
       const double cs = std::cos(mo.turn), sn = std::sin(mo.turn);
       std::vector<std::pair<int, Candidate>> poses;
+      // (Free and Blockers never count the object itself: `moving` serves every member.)
       if (mo.other_at) {
-        std::set<int> ignore = moving;
-        ignore.erase(other);
-        if (!Free(room, other, mo.other_at->pose, options.clearance, ignore)) continue;
+        if (!Free(room, other, mo.other_at->pose, options.clearance, moving)) continue;
         poses.push_back({other, *mo.other_at});
       }
       bool ok = true;
@@ -1445,47 +1438,30 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           }
           cand = *on;
         }
-        std::set<int> ignore = moving;
-        ignore.erase(k);
-        if (!Free(room, k, cand.pose, options.clearance, ignore)) {
-          // A loose thing in the way (a plant: no relation, nothing on it) steps aside first.
-          auto blockers = Blockers(room, k, cand.pose, options.clearance, ignore);
-          bool cleared = blockers && !blockers->empty();
-          for (int b : blockers ? *blockers : std::vector<int>{}) {
-            if (!cleared || !loose(b)) {
-              cleared = false;
-              break;
-            }
-            solver::ObjectPlacement landed = room.solution.placements[k];
-            landed.pose = cand.pose;
-            const ObjectBox away = BoxOf(room.solution.objects[k], landed);
-            std::set<int> aside_ignore = moving;
-            aside_ignore.insert(b);
-            // Well clear of where the piece lands (its companions are re-placed around it after).
+        if (!Free(room, k, cand.pose, options.clearance, moving)) {
+          // A loose thing in the way (a plant: no relation, nothing on it) steps aside first, well clear of
+          // where the piece lands (its companions are re-placed around it after).
+          solver::ObjectPlacement landed = room.solution.placements[k];
+          landed.pose = cand.pose;
+          const ObjectBox away = BoxOf(room.solution.objects[k], landed);
+          auto blockers = Blockers(room, k, cand.pose, options.clearance, moving);
+          ok = blockers && !blockers->empty();
+          for (int b : ok ? *blockers : std::vector<int>{}) {
             std::optional<Candidate> aside;
-            const solver::Pose& bp = room.solution.placements[b].pose;
-            for (double step : {0.5, 1.0, 1.5, 2.0, 2.5}) {
-              for (int dir = 0; dir < 8 && !aside; ++dir) {
-                const double a = dir * std::numbers::pi / 4.0;
-                const solver::Pose pose{bp.x + step * std::cos(a), bp.y + step * std::sin(a), bp.z, bp.yaw, bp.scale};
-                solver::ObjectPlacement pl = room.solution.placements[b];
-                pl.pose = pose;
-                if (PlanGap(BoxOf(room.solution.objects[b], pl), away) >= 1.0 && Free(room, b, pose, options.clearance, aside_ignore))
-                  aside = Candidate{pose, -1};
-              }
-              if (aside) break;
-            }
+            if (loose(b))
+              for (const Candidate& c : StepsAside(room, b, away, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5}))
+                if (Free(room, b, c.pose, options.clearance, moving)) {
+                  aside = c;
+                  break;
+                }
             if (!aside) {
-              cleared = false;
+              ok = false;
               break;
             }
             poses.push_back({b, *aside});
             moving.insert(b);
           }
-          if (!cleared) {
-            ok = false;
-            break;
-          }
+          if (!ok) break;
         }
         poses.push_back({k, cand});
       }
@@ -1518,9 +1494,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           }
           if (!holds) continue;
           if (std::any_of(landed.begin(), landed.end(), [&](const ObjectBox& b) { return PlanGap(ob, b) < options.clearance; })) continue;
-          std::set<int> ignore = moving;
-          ignore.insert(other);
-          if (!Free(room, other, c.pose, options.clearance, ignore)) continue;
+          if (!Free(room, other, c.pose, options.clearance, moving)) continue;
           poses.push_back({other, c});
           break;
         }
@@ -1531,9 +1505,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
         auto c = OnWallAt(room, f, room.solution.placements[f].wall, geo::Dot(geo::Sub({hub_at.x, hub_at.y}, wall.a), d),
                           room.solution.placements[f].pose.scale);
-        std::set<int> ignore = moving;
-        ignore.insert(f);
-        if (c && Free(room, f, c->pose, options.clearance, ignore)) poses.push_back({f, *c});
+        if (c && Free(room, f, c->pose, options.clearance, moving)) poses.push_back({f, *c});
       }
       std::vector<solver::ObjectPlacement> placements = room.solution.placements;
       for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
