@@ -712,11 +712,17 @@ class Planning {
   // The mirror over the basin narrower than the basin by the 10 cm wall decor keeps from a wall's end on
   // each side (solver/place.cpp), down to the category's smallest: centred over a basin that stands in a
   // corner (as small bathrooms put it), a wider mirror could not hang.
+  // The mirror's width over a basin `basin_width` wide: narrower by the 10 cm wall decor keeps from a wall's
+  // end on each side (the basin may stand in a corner), not below the category's smallest.
+  double MirrorWidth(int mirror, double basin_width) const {
+    constexpr double kDecorEnd = 0.1;  // m wall decor keeps from a wall's end
+    const Node& m = nodes_[mirror];
+    return std::max(m.info->size_min.x, std::min(m.size.x, basin_width - 2.0 * kDecorEnd));
+  }
   void FitMirror(int mirror, int basin) {
     if (mirror < 0 || basin < 0) return;
-    constexpr double kDecorEnd = 0.1;  // m wall decor keeps from a wall's end
     Node& m = nodes_[mirror];
-    const double width = std::max(m.info->size_min.x, std::min(m.size.x, nodes_[basin].size.x - 2.0 * kDecorEnd));
+    const double width = MirrorWidth(mirror, nodes_[basin].size.x);
     onwall_left_ += m.size.x - width;
     m.onwall_taken -= m.size.x - width;
     m.size.x = width;
@@ -755,7 +761,7 @@ class Planning {
         const CategoryInfo& info = i == bathing && c.shower ? *shower : *nodes_[i].info;
         const Vec3 size = size_of(i, c);
         BathFixture f{std::string(info.name), size.x, size.y, size.z, info.zone ? info.zone->depth : 0.0};
-        if (i == basin && mirror >= 0) f.mirror = nodes_[mirror].size.x;
+        if (i == basin && mirror >= 0) f.mirror = MirrorWidth(mirror, size.x);  // as FitMirror will make it
         out.push_back(f);
       };
       add(toilet);
@@ -769,11 +775,9 @@ class Planning {
       return out;
     };
     size_t pick = choices.size() - 1;
-    for (size_t k = 0; k < choices.size(); ++k)
-      if (FitBathFixtures(room_, fixtures_of(choices[k])).fits) {
-        pick = k;
-        break;
-      }
+    bool fits = false;
+    for (size_t k = 0; k < choices.size() && !fits; ++k)
+      if ((fits = FitBathFixtures(room_, fixtures_of(choices[k])).fits)) pick = k;
     if (pick == 0) {
       FitMirror(mirror, basin);
       return false;
@@ -805,9 +809,8 @@ class Planning {
     FitMirror(mirror, basin);
     std::string words;
     for (const std::string& w : what) words += (words.empty() ? "" : ", ") + w;
-    notes_.push_back("a small bathroom: " + words + (pick + 1 == choices.size() && !FitBathFixtures(room_, fixtures_of(c)).fits
-                                                         ? " (even so the use zones do not all fit)"
-                                                         : " (so that every fixture's use zone stays open floor)"));
+    notes_.push_back("a small bathroom: " + words + (fits ? " (so that every fixture's use zone stays open floor)"
+                                                          : " (even so the use zones do not all fit)"));
     return true;
   }
 
