@@ -24,11 +24,6 @@ using Json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-std::string Fixed2(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", v);
-  return text;
-}
 double Round4(double v) {
   const double r = std::round(v * 1e4) / 1e4;
   return r == 0.0 ? 0.0 : r;
@@ -504,7 +499,7 @@ Status ModelRounds(LoopState& st) {
       st.session.Restore(*best_room);
       record["rolled_back_to"] = best_round;
       st.kept_round = best_round;
-      finish_round("E rose to " + Fixed2(energy) + " from round " + std::to_string(best_round) + "'s " + Fixed2(best_energy) +
+      finish_round("E rose to " + FormatFixed(energy, 2) + " from round " + std::to_string(best_round) + "'s " + FormatFixed(best_energy, 2) +
                    ": back to round " + std::to_string(best_round) + "'s arrangement");
       return Status::Ok();
     }

@@ -10,6 +10,7 @@
 #include "critic/observation.h"
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
+#include "util/text_table.h"
 
 namespace villa::critic {
 namespace {
@@ -388,11 +389,6 @@ std::vector<Candidate> RoomyPoses(const Room& room, int hub, const std::set<int>
   return out;
 }
 
-std::string Fixed2(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", v);
-  return text;
-}
 
 }  // namespace
 
@@ -426,7 +422,7 @@ std::vector<std::string> OfflineProblems(const std::string& room, const RoomRela
   }
   for (const ZoneCheck& z : relations.zones) {
     if (z.clear()) continue;
-    std::string line = "zone " + z.side + " of " + ShortId(room, z.owner) + " (" + Fixed2(z.depth) + " m) entered by";
+    std::string line = "zone " + z.side + " of " + ShortId(room, z.owner) + " (" + FormatFixed(z.depth, 2) + " m) entered by";
     for (const std::string& id : z.intruders) line += ' ' + ShortId(room, id);
     out.push_back(line);
   }
@@ -889,11 +885,15 @@ ObjectBox BoxAt(const Room& room, int k, const solver::Pose& pose) {
 std::optional<MemberPoses> MakeRoomForRun(const Room& room, const std::vector<int>& movers, const std::vector<ObjectBox>& targets,
                                           double clearance) {
   const std::set<int> ignore(movers.begin(), movers.end());
-  std::vector<Point> deltas;
-  for (int i = -30; i <= 30; ++i)
-    for (int j = -30; j <= 30; ++j)
-      if (i != 0 || j != 0) deltas.push_back({0.1 * i, 0.1 * j});
-  std::stable_sort(deltas.begin(), deltas.end(), [](Point a, Point b) { return std::hypot(a.x, a.y) < std::hypot(b.x, b.y) - 1e-9; });
+  // Shifts on a 10 cm grid up to 3 m, nearest first: the same for every call, built once.
+  static const std::vector<Point> deltas = [] {
+    std::vector<Point> out;
+    for (int i = -30; i <= 30; ++i)
+      for (int j = -30; j <= 30; ++j)
+        if (i != 0 || j != 0) out.push_back({0.1 * i, 0.1 * j});
+    std::stable_sort(out.begin(), out.end(), [](Point a, Point b) { return std::hypot(a.x, a.y) < std::hypot(b.x, b.y) - 1e-9; });
+    return out;
+  }();
   for (const Point& d : deltas) {
     if (std::hypot(d.x, d.y) > 3.0) break;
     MemberPoses poses;
@@ -1582,6 +1582,8 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
   std::vector<size_t> either;
   for (size_t i = 0; i < g.sides.size(); ++i)
     if (g.sides[i].second == 0) either.push_back(i);
+  // Either-side members past the first two go right when a fixed member takes the left, else left.
+  const bool taken_left = std::any_of(g.sides.begin(), g.sides.end(), [](const auto& p) { return p.second == 1; });
   struct Layout {
     Unmet unmet;
     int shrink = 0;  // the scales: 0 as they are, 1 the bed at its smallest, 2 everything that can be
@@ -1623,6 +1625,9 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
         }
       }
       std::erase_if(ts, [&](double t) { return t < bed_half + 0.01 || t > length - bed_half - 0.01; });
+      // Stops closer than 5 mm are one stop (the comb meets the wall's ends and openings): measured once.
+      std::sort(ts.begin(), ts.end());
+      ts.erase(std::unique(ts.begin(), ts.end(), [](double a, double b) { return b - a < 0.005; }), ts.end());
       for (double t : ts) {
         auto c = OnWallAt(room, g.bed, static_cast<int>(w), t, bed_scale);
         if (!c || !Free(room, g.bed, c->pose, options.clearance, group)) continue;
@@ -1637,7 +1642,6 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
             int s = fixed;
             if (s == 0) {
               const size_t bit = std::find(either.begin(), either.end(), i) - either.begin();
-              const bool taken_left = std::any_of(g.sides.begin(), g.sides.end(), [](const auto& p) { return p.second == 1; });
               s = bit < 2 ? ((flip >> bit) & 1u ? 1 : -1) : (taken_left ? -1 : 1);
             }
             const double scale = scale_of(k, shrink), half = 0.5 * room.solution.objects[k].asset.size.x * scale;
