@@ -547,11 +547,13 @@ double PlaceBody(Layer& layer, int self, const RoomState& state, const SolveOpti
   return best[0].hard;
 }
 
-bool PlaceBodyNth(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, size_t nth, PlaceStats* stats) {
-  const std::vector<Scored> ranked = RankCandidates(layer, self, state, o, rng, 0.0, nth + 1, stats);
-  if (ranked.size() <= nth) return false;
-  Put(layer, self, state, ranked[nth].c);
-  return true;
+bool PlaceBodyAmong(Layer& layer, int self, const RoomState& state, const SolveOptions& o, Rng& rng, size_t keep, PlaceStats* stats,
+                    const std::function<bool()>& accept) {
+  for (const Scored& s : RankCandidates(layer, self, state, o, rng, 0.0, keep, stats)) {
+    Put(layer, self, state, s.c);
+    if (accept()) return true;
+  }
+  return false;
 }
 
 // Whether something is to stand in front of this object at a distance of a metre or more (a TV stand

@@ -5,6 +5,7 @@
 // (around their target, at the relation's gap, facing it), free objects on a grid or by a wall, hung
 // objects along the walls at eye level or above their target, small objects in rows on their surface or
 // in their cavity. Ceres then polishes what this finds.
+#include <functional>
 #include <vector>
 
 #include "solver/layer.h"
@@ -22,11 +23,12 @@ struct PlaceStats {
 // Returns the hard cost at the chosen pose (0: no proxy violation).
 double PlaceBody(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, double jitter,
                  PlaceStats* stats);
-// Puts body `b` at its `nth` best candidate (0: the best, as PlaceBody with no jitter) and marks it active;
-// false (the body left as it was) when it has fewer candidates. For a slot search that polishes what it
-// finds and moves on to the next candidate when the polish does not end clean.
-bool PlaceBodyNth(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, size_t nth,
-                  PlaceStats* stats);
+// Puts body `b` (marked active) at each of its best `keep` candidates in turn, best first (ranked once,
+// as PlaceBody with no jitter), until `accept` (called with the body at the candidate: it may polish it)
+// says yes; false when none was accepted. For a slot search that moves on to the next candidate when the
+// polish of one does not end clean.
+bool PlaceBodyAmong(Layer& layer, int b, const RoomState& state, const SolveOptions& options, Rng& rng, size_t keep,
+                    PlaceStats* stats, const std::function<bool()>& accept);
 
 // Places every movable body of the layer in PlacementOrder. A body that others relate to (a hub: the
 // bed, the sofa, the table) is tried at its few best poses with its dependents placed around each, and the

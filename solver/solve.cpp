@@ -298,24 +298,25 @@ struct RoomSolver::Impl {
       if (TooTall(layer, i)) continue;
       // Its best candidate polished; when the polish does not end clean (a hair of overlap left), the next
       // best, up to four.
-      for (size_t nth = 0; nth < 4; ++nth) {
-        Rng rng(options.seed ^ (0x5107ull + i));
-        const auto t = Clock::now();
-        PlaceStats stats;
-        const bool put = PlaceBodyNth(layer, 0, state, options, rng, nth, &stats);
-        summary.candidates += stats.candidates;
-        summary.seconds_place += Since(t);
-        if (!put) break;
+      Rng rng(options.seed ^ (0x5107ull + i));
+      const auto t = Clock::now();
+      PlaceStats stats;
+      double polishing = 0.0;  // s of the above spent polishing (Account counts it as polish time)
+      PlaceBodyAmong(layer, 0, state, options, rng, 4, &stats, [&] {
+        const auto p = Clock::now();
         const PolishStats polish = Polish(layer, state, options);
+        polishing += Since(p);
         Account(polish);
-        if (polish.cost.hard > kFeasible) continue;
+        if (polish.cost.hard > kFeasible) return false;
         RoomState probe = state;
         WriteBack(layer, 0, probe);
         const ObjectPlacement& found = probe.placements[i];
         const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
         if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
-        break;
-      }
+        return true;
+      });
+      summary.candidates += stats.candidates;
+      summary.seconds_place += Since(t) - polishing;
     }
     state.placements[i] = saved;
     return best;
