@@ -174,12 +174,6 @@ class Search {
     std::vector<std::pair<int, double>> stops;
     for (int w = 0; w < static_cast<int>(room_.walls.size()); ++w)
       for (double t0 : Stops(k, w)) stops.push_back({w, t0});
-    if (f.prefer_wall >= 0)
-      std::stable_sort(stops.begin(), stops.end(), [&](const auto& a, const auto& b) {
-        const double da = (a.first == f.prefer_wall ? 0.0 : 10.0) + std::abs(a.second - f.prefer_t0);
-        const double db = (b.first == f.prefer_wall ? 0.0 : 10.0) + std::abs(b.second - f.prefer_t0);
-        return da < db;
-      });
     for (const auto& [w, t0] : stops) {
       Placed p;
       if (!Fits(k, w, t0, &p)) continue;

@@ -24,8 +24,9 @@
 
 namespace villa::scene {
 
-// The room as the search sees it, in plain geometry, so that the planner (from a room context) and the
-// critic (from a solver problem) ask the same question.
+// The room as the search sees it, in plain geometry (the planner builds it from a room context; nothing
+// else asks yet: a critic move laying all fixtures out from this search was tried and dropped, see
+// docs/BENCHMARKS.md "Bathrooms").
 struct FitWall {
   Point a, b;                     // the wall's inner face, the room on its left (CCW like the free floor)
   std::vector<Interval> free;     // m along a -> b where something may stand against it
@@ -52,8 +53,6 @@ struct BathFixture {
   double zone = 0.0;      // m of free floor in front, 0 for none
   double mirror = 0.0;    // m of window-free wall centred above it (the mirror's width), 0 for none
   int companion_of = -1;  // index of the fixture it stands beside on the same wall (the bin by the toilet)
-  int prefer_wall = -1;   // where it stands now (the critic's question): the search tries the nearest
-  double prefer_t0 = 0.0;  // places to it first, so a found layout moves little; -1: no preference
 };
 
 // Where a fixture stands in a found layout: its wall and the interval [t0, t0 + width] along it.
