@@ -101,14 +101,29 @@ struct Candidate {
   bool proven = false;            // the solver found it itself (RoomSolver::Suggest): it fits
 };
 
+// The box of object k at `pose`.
+ObjectBox BoxAt(const Room& room, int k, const solver::Pose& pose) {
+  solver::ObjectPlacement pl = room.solution.placements[k];
+  pl.pose = pose;
+  return BoxOf(room.solution.objects[k], pl);
+}
+
+// Whether a box meets one of the room's keep-outs (plan overlap and height ranges meeting).
+bool InKeepOut(const Room& room, const ObjectBox& box) {
+  const Ring footprint = box.Footprint();
+  for (const solver::KeepOut& k : room.problem.keep_outs) {
+    if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
+    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return true;
+  }
+  return false;
+}
+
 // The free-standing objects closer than `clearance` to object i at `pose` (none: it is free of them), or
 // nothing at all when the floor's edge or a keep-out is in the way (no object can be moved out of that).
 std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::Pose& pose, double clearance,
                                          const std::set<int>& ignore = {}, bool own_box = false) {
   const solver::ProblemObject& o = room.solution.objects[i];
-  solver::ObjectPlacement pl = room.solution.placements[i];
-  pl.pose = pose;
-  ObjectBox box = BoxOf(o, pl);
+  ObjectBox box = BoxAt(room, i, pose);
   const double top = own_box ? box.z1
                              : pose.z + (room.stack_top[i] - room.solution.placements[i].pose.z) * pose.scale /
                                             room.solution.placements[i].pose.scale;
@@ -127,11 +142,7 @@ std::optional<std::vector<int>> Blockers(const Room& room, int i, const solver::
       if (!PointInRing(p, room.problem.free_floor, 0.0) || DistanceToBoundary(p, room.problem.free_floor) < 0.012) return std::nullopt;
   }
   box.z1 = top;
-  const Ring footprint = box.Footprint();
-  for (const solver::KeepOut& k : room.problem.keep_outs) {
-    if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
-    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return std::nullopt;
-  }
+  if (InKeepOut(room, box)) return std::nullopt;
   return blockers;
 }
 
@@ -388,7 +399,6 @@ std::vector<Candidate> RoomyPoses(const Room& room, int hub, const std::set<int>
   }
   return out;
 }
-
 
 }  // namespace
 
@@ -744,16 +754,6 @@ std::vector<std::pair<int, int>> HungOverRun(const Room& room, const std::set<in
   return hung;
 }
 
-// Whether a box meets one of the room's keep-outs (plan overlap and height ranges meeting).
-bool InKeepOut(const Room& room, const ObjectBox& box) {
-  const Ring footprint = box.Footprint();
-  for (const solver::KeepOut& k : room.problem.keep_outs) {
-    if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
-    if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return true;
-  }
-  return false;
-}
-
 // A place for child `ch` of member k on another surface of k (a shelf inside a counter): the surface index and
 // the place in the member's frame (m along its width and depth). `top` is the member's box where it goes,
 // `boxes` its children's boxes there (the one at `self` is the child's); none clears a keep-out and every
@@ -869,13 +869,6 @@ std::optional<std::vector<std::pair<int, Candidate>>> ShiftsOffKeepOuts(const Ro
 // The width and the depth of object k as it stands (its scale), m.
 double WidthOf(const Room& room, int k) { return room.solution.objects[k].asset.size.x * room.solution.placements[k].pose.scale; }
 double DepthOf(const Room& room, int k) { return room.solution.objects[k].asset.size.y * room.solution.placements[k].pose.scale; }
-
-// The box of object k at `pose`.
-ObjectBox BoxAt(const Room& room, int k, const solver::Pose& pose) {
-  solver::ObjectPlacement pl = room.solution.placements[k];
-  pl.pose = pose;
-  return BoxOf(room.solution.objects[k], pl);
-}
 
 // Moves that make room for a run's layout: the free-standing objects `movers` (a dining table and its chairs)
 // shifted together by one translation, the shortest on a 10 cm grid up to 3 m, to where each keeps
