@@ -119,39 +119,6 @@ bool HardTrouble(const solver::RoomSolution& s) {
   return !s.summary.metrics.Clean() || s.summary.energy.collision > 0.0 || s.summary.energy.support > 0.0;
 }
 
-// Puts an object back where it was (pose first, then scale) after an alternative that did not help.
-void Restore(solver::RoomSolver& session, const solver::ProblemObject& object, const solver::ObjectPlacement& was,
-             std::vector<solver::ActionResult>& log, int* tries) {
-  const solver::RoomSolution now = session.Solution();
-  int i = -1;
-  for (size_t k = 0; k < now.objects.size(); ++k)
-    if (now.objects[k].id == object.id) i = static_cast<int>(k);
-  if (i < 0) return;
-  const solver::ObjectPlacement& at = now.placements[i];
-  if (std::hypot(at.pose.x - was.pose.x, at.pose.y - was.pose.y) > 1e-9 || std::abs(at.pose.yaw - was.pose.yaw) > 1e-12 ||
-      std::abs(at.pose.z - was.pose.z) > 1e-9 || at.wall != was.wall) {
-    solver::Action back;
-    back.kind = solver::ActionKind::kUpdatePose;
-    back.id = object.id;
-    back.pose = was.pose;
-    back.pose->scale = at.pose.scale;
-    if (object.relation != solver::Relation::kOnWall) back.pose->z = std::nan("");
-    if (was.wall >= 0) back.wall = was.wall;
-    back.reason = "critic: undo (it did not help)";
-    log.push_back(session.Apply(back));
-    ++*tries;
-  }
-  if (std::abs(at.pose.scale - was.pose.scale) > 1e-12) {
-    solver::Action back;
-    back.kind = solver::ActionKind::kUpdateScale;
-    back.id = object.id;
-    back.scale = was.pose.scale;
-    back.reason = "critic: undo (it did not help)";
-    log.push_back(session.Apply(back));
-    ++*tries;
-  }
-}
-
 // ---- the offline rounds
 
 struct LoopState {
@@ -263,16 +230,14 @@ void OfflineRounds(LoopState& st) {
       for (const std::vector<Step>& alternative : attempt.alternatives) {
         if (tries >= st.options.max_tries) break;
         std::vector<solver::ActionResult> results;
-        const std::shared_ptr<const solver::RoomSolver::Snapshot> undo = attempt.undo_by_snapshot ? st.session.Save() : nullptr;
-        // Where each object moved stood, in the order they were first moved: undone in reverse, so that an
-        // object goes back only after those that moved into its place have left it (a run's members).
-        std::vector<std::pair<std::string, solver::ObjectPlacement>> was;
+        // An alternative that does not help is undone by going back to the room as it was before it
+        // (RoomSolver::Save / Restore): moving each object back one by one can be refused where another has
+        // taken its place (what the solver re-placed around a group), and a bed made smaller with its
+        // pillows laid out again cannot grow back over pillows already put back.
+        const std::shared_ptr<const solver::RoomSolver::Snapshot> undo = st.session.Save();
         bool refused = false;
         for (const Step& step : alternative) {
           solver::Action a = step.action;
-          const bool first = std::none_of(was.begin(), was.end(), [&](const auto& w) { return w.first == a.id; });
-          for (size_t k = 0; k < before.objects.size() && first; ++k)
-            if (before.objects[k].id == a.id) was.emplace_back(a.id, before.placements[k]);
           if (step.suggest) {
             // Where the solver would put it now, after the steps before this one.
             auto slot = st.session.Suggest(a.id);
@@ -294,19 +259,7 @@ void OfflineRounds(LoopState& st) {
         const solver::RoomSolution after = st.session.Solution();
         const RoomRelations after_relations = Measure(st, after);
         helped = !HardTrouble(after) && !results.empty() && !refused && UnmetOf(after_relations) < unmet_before;
-        if (!helped && undo) {
-          st.session.Restore(*undo);
-        } else if (!helped) {
-          for (auto it = was.rbegin(); it != was.rend(); ++it) {
-            const auto& [id, placement] = *it;
-            const int k = [&] {
-              for (size_t j = 0; j < before.objects.size(); ++j)
-                if (before.objects[j].id == id) return static_cast<int>(j);
-              return -1;
-            }();
-            if (k >= 0) Restore(st.session, before.objects[k], placement, results, &tries);
-          }
-        }
+        if (!helped) st.session.Restore(*undo);
         for (const solver::ActionResult& r : results) entry["actions"].push_back(solver::ActionResultToJson(r));
         if (helped) break;
       }

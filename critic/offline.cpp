@@ -602,6 +602,7 @@ struct MultiMove {
   double moved = 0.0;
   std::vector<std::pair<int, Candidate>> poses;
   std::vector<int> ring;
+  int displaced = 0;  // of the ring, those that were in the way (not the group's own): fewer is better
 };
 
 // The best `keep` of them (fewest unmet, then least moved) as step sequences.
@@ -609,6 +610,7 @@ std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<Mult
                                               const std::string& how) {
   std::stable_sort(moves.begin(), moves.end(), [](const MultiMove& a, const MultiMove& b) {
     if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    if (a.displaced != b.displaced) return a.displaced < b.displaced;
     return a.moved < b.moved;
   });
   std::vector<std::vector<Step>> out;
@@ -1219,6 +1221,24 @@ std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose&
   return best;
 }
 
+// The relations left unmet with `placements`, leaving out what the solver re-places after a group move
+// (`replaced`, roots): their edges, their zones, and where they alone enter a zone.
+Unmet UnmetBesides(const Room& room, const std::vector<solver::ObjectPlacement>& placements, const std::vector<int>& replaced) {
+  const auto re = [&](const std::string& id) {
+    const int k = room.Find(id);
+    return k >= 0 && std::find(replaced.begin(), replaced.end(), room.Root(k)) != replaced.end();
+  };
+  std::vector<scene::SemanticEdge> graph;
+  for (const scene::SemanticEdge& e : room.graph)
+    if (!re(e.source) && !re(e.target)) graph.push_back(e);
+  RoomRelations r = MeasureRelations(room.solution.objects, placements, graph);
+  std::erase_if(r.zones, [&](ZoneCheck& z) {
+    std::erase_if(z.intruders, re);
+    return re(z.owner);
+  });
+  return UnmetOf(r);
+}
+
 // Cluster moves for an unmet edge: its hub and the hub's cluster moved as one rigid piece, so the relations
 // inside it keep holding (the sofa with its coffee table, side table and lamp slid until the painting above
 // it is centred, or carried 2-3 m before the TV stand; a bed with its nightstands along its wall). Motions:
@@ -1293,6 +1313,13 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     if (room.parent[k] >= 0 || o.parent != "floor" || o.relation != solver::Relation::kOnTop || !room.children[k].empty()) return false;
     return std::none_of(room.graph.begin(), room.graph.end(), [&](const scene::SemanticEdge& e) { return e.source == o.id || e.target == o.id; });
   };
+  // What may make way for the hub and the other end placed anew (re-placed by the solver after): a root
+  // standing on the floor or against a wall, not a kitchen's unit (its run holds it).
+  const auto makes_way = [&](int k) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (room.parent[k] >= 0 || k == hub || k == other || KitchenUnit(o)) return false;
+    return (o.parent == "floor" && o.relation == solver::Relation::kOnTop) || o.relation == solver::Relation::kAgainstWall;
+  };
   const solver::Pose& at = room.solution.placements[hub].pose;
   const bool on_wall = ho.relation == solver::Relation::kAgainstWall;
   struct Motion {
@@ -1316,6 +1343,12 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   for (const Point& axis : axes)
     for (int k = -30; k <= 30; ++k)
       if (k != 0) motions.push_back({0.1 * k * axis.x, 0.1 * k * axis.y, 0.0, std::nullopt, std::nullopt});
+  // A free-standing hub also slides on a 20 cm grid off its axes (back from a corner of the floor, then along).
+  if (!on_wall)
+    for (int i = -3; i <= 3; ++i)
+      for (int j = -3; j <= 3; ++j)
+        if (i != 0 && j != 0)
+          motions.push_back({0.2 * (i * axes[0].x + j * axes[1].x), 0.2 * (i * axes[0].y + j * axes[1].y), 0.0, std::nullopt, std::nullopt});
   // The hub faces the other end, which stands against a wall in front of it at a gap: both placed anew.
   if (facing_gap && !on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
     const solver::ProblemObject& oo = room.solution.objects[other];
@@ -1385,27 +1418,45 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   std::vector<MultiMove> layouts;
   for (const Variant& variant : variants) {
     const std::vector<int>& members = variant.members;
-    std::vector<scene::SemanticEdge> graph;  // the edges the ranking counts: none of the ring's
-    for (const scene::SemanticEdge& e : room.graph) {
-      const int a = room.Find(e.source), b = room.Find(e.target);
-      const auto in_ring = [&](int k) {
-        return k >= 0 && std::find(variant.ring.begin(), variant.ring.end(), room.Root(k)) != variant.ring.end();
-      };
-      if (!in_ring(a) && !in_ring(b)) graph.push_back(e);
-    }
-    const Unmet before = variant.ring.empty() ? now : UnmetOf(MeasureRelations(room.solution.objects, room.solution.placements, graph));
+    const Unmet before = variant.ring.empty() ? now : UnmetBesides(room, room.solution.placements, variant.ring);
     std::set<int> cluster(members.begin(), members.end());
     cluster.insert(variant.ring.begin(), variant.ring.end());  // the ring is re-placed: it does not block
     cluster.insert(hung.begin(), hung.end());
     cluster.insert(before_hub.begin(), before_hub.end());
     for (const Motion& mo : motions) {
       std::set<int> moving = cluster;
-      if (mo.other_at) moving.insert(other);
+      if (mo.other_at || reseat) moving.insert(other);  // re-seated: it does not block the members
       const double cs = std::cos(mo.turn), sn = std::sin(mo.turn);
       std::vector<std::pair<int, Candidate>> poses;
+      std::vector<int> made_way;
+      // Whether object k may land at `pose`: it is free there, or what stands in the way steps aside first,
+      // well clear of where k lands. A loose thing (a plant) only steps aside; when both ends are placed
+      // anew (the sofa carried before a TV stand on another wall), anything standing on the floor or against
+      // a wall may make way, and the solver re-places it after (an armchair, a bookcase).
       // (Free and Blockers never count the object itself: `moving` serves every member.)
+      const auto clear_way = [&](int k, const solver::Pose& pose) {
+        if (Free(room, k, pose, options.clearance, moving)) return true;
+        auto blockers = Blockers(room, k, pose, options.clearance, moving);
+        if (!blockers || blockers->empty()) return false;
+        const ObjectBox away = BoxAt(room, k, pose);
+        for (int b : *blockers) {
+          const bool is_loose = loose(b);
+          if (!is_loose && !(mo.other_at && makes_way(b))) return false;
+          std::optional<Candidate> aside;
+          for (const Candidate& c : StepsAside(room, b, away, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
+            if (Free(room, b, c.pose, options.clearance, moving)) {
+              aside = c;
+              break;
+            }
+          if (!aside) return false;
+          poses.push_back({b, *aside});
+          moving.insert(b);
+          if (!is_loose) made_way.push_back(b);
+        }
+        return true;
+      };
       if (mo.other_at) {
-        if (!Free(room, other, mo.other_at->pose, options.clearance, moving)) continue;
+        if (!clear_way(other, mo.other_at->pose)) continue;
         poses.push_back({other, *mo.other_at});
       }
       bool ok = true;
@@ -1431,30 +1482,9 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           }
           cand = *on;
         }
-        if (!Free(room, k, cand.pose, options.clearance, moving)) {
-          // A loose thing in the way (a plant: no relation, nothing on it) steps aside first, well clear of
-          // where the piece lands (its companions are re-placed around it after).
-          solver::ObjectPlacement landed = room.solution.placements[k];
-          landed.pose = cand.pose;
-          const ObjectBox away = BoxOf(room.solution.objects[k], landed);
-          auto blockers = Blockers(room, k, cand.pose, options.clearance, moving);
-          ok = blockers && !blockers->empty();
-          for (int b : ok ? *blockers : std::vector<int>{}) {
-            std::optional<Candidate> aside;
-            if (loose(b))
-              for (const Candidate& c : StepsAside(room, b, away, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5}))
-                if (Free(room, b, c.pose, options.clearance, moving)) {
-                  aside = c;
-                  break;
-                }
-            if (!aside) {
-              ok = false;
-              break;
-            }
-            poses.push_back({b, *aside});
-            moving.insert(b);
-          }
-          if (!ok) break;
+        if (!clear_way(k, cand.pose)) {
+          ok = false;
+          break;
         }
         poses.push_back({k, cand});
       }
@@ -1491,6 +1521,11 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           poses.push_back({other, c});
           break;
         }
+        // Not re-seated: it stays, and must then be clear of where the members land.
+        if (poses.back().first != other) {
+          const ObjectBox stays = BoxOf(room.solution.objects[other], op);
+          if (std::any_of(landed.begin(), landed.end(), [&](const ObjectBox& b) { return PlanGap(stays, b) < options.clearance; })) continue;
+        }
       }
       for (int f : before_hub) {
         if (mo.turn != 0.0) continue;  // a turned hub faces another wall: its own edges decide
@@ -1502,11 +1537,15 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       }
       std::vector<solver::ObjectPlacement> placements = room.solution.placements;
       for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
-      const Unmet u = UnmetOf(MeasureRelations(room.solution.objects, placements, graph));
-      if (!(u < before)) continue;
+      // What made way is re-placed by the solver, as the ring is: left out of the ranking.
+      std::vector<int> ring = variant.ring;
+      ring.insert(ring.end(), made_way.begin(), made_way.end());
+      const Unmet u = UnmetBesides(room, placements, ring);
+      if (!(u < (made_way.empty() ? before : UnmetBesides(room, room.solution.placements, ring)))) continue;
       std::vector<std::pair<int, Candidate>> order;
       if (!MoveOrder(room, poses, options.clearance, &order) || order.size() != poses.size()) continue;
-      layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), variant.ring});
+      layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), std::move(ring),
+                         static_cast<int>(made_way.size())});
     }
   }
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
@@ -1783,7 +1822,7 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
     const std::string key = ShortId(problem.room, solution.objects[b].id) + " laid out again with its nightstands and what hangs above it";
     if (!trouble || given_up.count(key)) continue;
     std::vector<std::vector<Step>> layouts = BedGroupMoves(room, *g, now, options, key);
-    if (!layouts.empty()) out.push_back({key, std::move(layouts), true});
+    if (!layouts.empty()) out.push_back({key, std::move(layouts)});
   }
   size_t p = 0;
   for (const EdgeCheck& c : relations.edges) {

@@ -36,10 +36,6 @@ struct Attempt {
   // Tried in order, the first kept that helps; each a short sequence (update_scale then update_pose; or a
   // group move: the hub, then each object related to it where the solver would now put it).
   std::vector<std::vector<Step>> alternatives;
-  // Undo an alternative that did not help by going back to the room as it was before it
-  // (RoomSolver::Save / Restore) instead of moving each object back: a bed made smaller with its pillows
-  // laid out again cannot grow back over pillows already put back where they lay.
-  bool undo_by_snapshot = false;
 };
 
 // How far an arrangement is from its graph: the edges that do not hold (an edge whose object was removed

@@ -523,11 +523,12 @@ class Planning {
   // stand is 2-3 m in front of the sofa (priors.cpp), so with both against opposite walls these must be
   // 3.4-4.4 m apart (sofa and stand depths and their wall gaps included) and hold free stretches facing each
   // other, room for the sofa on one and the stand across from it on the other (doors, passages and stair
-  // keep-outs take wall; a sofa and a stand stand under windows). Where no two walls do and the room is
+  // keep-outs take wall; a sofa stands under a window, the stand does not: the TV on it rises above the
+  // sill). Where no two walls do and the room is
   // longer than that one way, the sofa floats, as a designer would.
   bool SofaFloats() const {
     constexpr double kAcrossMin = 3.4, kAcrossMax = 4.4;  // m wall to wall
-    constexpr double kSofa = 1.9, kStand = 1.2;           // m of free wall each needs (their smallest widths, about)
+    constexpr double kSofa = 2.1, kStand = 1.4;           // m of free wall each needs (the narrowest assets, about)
     if (room_.free_floor.empty()) return false;
     const Box2 box = BoundingBox(room_.free_floor.front());
     if (std::max(box.max_x - box.min_x, box.max_y - box.min_y) <= kAcrossMax) return false;
@@ -540,7 +541,7 @@ class Planning {
         if (across < kAcrossMin || across > kAcrossMax) continue;
         for (const Interval& fa : a.free) {
           if (fa.second - fa.first < kSofa) continue;
-          for (const Interval& fb : b.free) {
+          for (const Interval& fb : RunStretches(b)) {
             if (fb.second - fb.first < kStand) continue;
             // b's stretch seen along a (b runs the other way).
             const double b0 = geo::Dot(geo::Sub(geo::Add(b.inner.a, geo::Scale(db, fb.second)), a.inner.a), da);
