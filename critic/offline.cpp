@@ -1420,7 +1420,6 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     const std::vector<int>& members = variant.members;
     const Unmet before = variant.ring.empty() ? now : UnmetBesides(room, room.solution.placements, variant.ring);
     std::set<int> cluster(members.begin(), members.end());
-    cluster.insert(variant.ring.begin(), variant.ring.end());  // the ring is re-placed: it does not block
     cluster.insert(hung.begin(), hung.end());
     cluster.insert(before_hub.begin(), before_hub.end());
     for (const Motion& mo : motions) {
@@ -1434,24 +1433,40 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       // anew (the sofa carried before a TV stand on another wall), anything standing on the floor or against
       // a wall may make way, and the solver re-places it after (an armchair, a bookcase).
       // (Free and Blockers never count the object itself: `moving` serves every member.)
+      // Whether object k at `pose` keeps clear of what has landed already (the other end on its new wall,
+      // what stepped aside).
+      const auto clear_of_landed = [&](int k, const solver::Pose& pose) {
+        if (Covering(room.solution.objects[k], pose.scale)) return true;
+        const ObjectBox box = BoxAt(room, k, pose);
+        const double top = box.z0 + room.stack_top[k] - room.solution.placements[k].pose.z;
+        return std::none_of(poses.begin(), poses.end(), [&](const auto& p) {
+          if (p.first == k || Covering(room.solution.objects[p.first], p.second.pose.scale)) return false;
+          const ObjectBox there = BoxAt(room, p.first, p.second.pose);
+          return PlanGap(box, there) < options.clearance &&
+                 std::min(top, there.z0 + room.stack_top[p.first] - room.solution.placements[p.first].pose.z) > std::max(box.z0, there.z0);
+        });
+      };
       const auto clear_way = [&](int k, const solver::Pose& pose) {
+        if (!clear_of_landed(k, pose)) return false;
+        const ObjectBox box = BoxAt(room, k, pose);
         if (Free(room, k, pose, options.clearance, moving)) return true;
         auto blockers = Blockers(room, k, pose, options.clearance, moving);
         if (!blockers || blockers->empty()) return false;
-        const ObjectBox away = BoxAt(room, k, pose);
         for (int b : *blockers) {
           const bool is_loose = loose(b);
-          if (!is_loose && !(mo.other_at && makes_way(b))) return false;
+          // The ring, re-placed by the solver after the move, steps aside first where it is in the way.
+          const bool ringed = std::find(variant.ring.begin(), variant.ring.end(), b) != variant.ring.end();
+          if (!is_loose && !ringed && !(mo.other_at && makes_way(b))) return false;
           std::optional<Candidate> aside;
-          for (const Candidate& c : StepsAside(room, b, away, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
-            if (Free(room, b, c.pose, options.clearance, moving)) {
+          for (const Candidate& c : StepsAside(room, b, box, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
+            if (Free(room, b, c.pose, options.clearance, moving) && clear_of_landed(b, c.pose)) {
               aside = c;
               break;
             }
           if (!aside) return false;
           poses.push_back({b, *aside});
           moving.insert(b);
-          if (!is_loose) made_way.push_back(b);
+          if (!is_loose && !ringed) made_way.push_back(b);
         }
         return true;
       };
@@ -1543,7 +1558,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       const Unmet u = UnmetBesides(room, placements, ring);
       if (!(u < (made_way.empty() ? before : UnmetBesides(room, room.solution.placements, ring)))) continue;
       std::vector<std::pair<int, Candidate>> order;
-      if (!MoveOrder(room, poses, options.clearance, &order) || order.size() != poses.size()) continue;
+      if (!MoveOrder(room, poses, options.clearance, &order)) continue;  // (what it parks on the way counts as moves)
       layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), std::move(ring),
                          static_cast<int>(made_way.size())});
     }
