@@ -2,48 +2,15 @@
 // sofa with its cluster as one piece and re-seating the side table at the end the move made room for.
 #include <catch2/catch.hpp>
 
-#include <filesystem>
-#include <fstream>
-#include <unistd.h>
-
-#include "critic/critic.h"
-#include "solver/furnish.h"
+#include "furnish_fixture.h"
 
 namespace villa {
-
-// Furnishes the living room of a bench villa kept as a fixture (seed 7, procedural assets, the offline
-// critic, no reachability loop) and returns its report: the room's record and the totals.
-struct Furnished {
-  nlohmann::json room, totals;
-};
-Furnished FurnishLiving(const std::string& fixture) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("villa_critic_cluster_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  solver::FurnishOptions options;
-  options.rooms = {"living-room_0/0"};
-  options.procedural_only = true;
-  options.seed = 7;
-  options.check_reach = false;
-  options.critic = critic::MakeRoomCritic(critic::CriticOptions{});
-  auto summary = solver::FurnishLayoutFile(std::string(VILLA_FIXTURE_DIR) + "/layouts/" + fixture, dir, options);
-  REQUIRE(summary.ok());
-  std::ifstream in(dir / "report.json");
-  const nlohmann::json report = nlohmann::json::parse(in);
-  Furnished out{nlohmann::json(), report["totals"]};
-  for (const auto& r : report["rooms"])
-    if (r.value("room", "") == "living-room_0/0") out.room = r;
-  fs::remove_all(dir);
-  REQUIRE(out.room.is_object());
-  return out;
-}
 
 TEST_CASE("The sofa carried with its coffee table makes room for the side table at its end", "[critic][offline][cluster]") {
   // villa-000030 of `villa synth --count 50 --seed 7`: the solver leaves the side table beside the sofa's
   // back corner (neither left of it nor within 10 cm), the coffee table short of its gap, and the sofa's
   // zone entered; the side table alone has no free place at the sofa's left end.
-  const auto [room, totals] = FurnishLiving("living_side_table_cluster.json");
-  const nlohmann::json& record = room["critic"]["record"];
+  const auto [room, record, totals] = testing::FurnishFixtureRoom("living_side_table_cluster.json", "living-room_0/0", false);
   INFO(record.dump(1));
   const auto count = [&](const char* when, const char* relation, const char* what) {
     return record[when]["by_relation"][relation][what].get<int>();
@@ -71,8 +38,7 @@ TEST_CASE("The sofa is carried to the long wall across from the TV stand, the ar
   // the short end wall and the TV stand on a long side wall, 3.8 m before it and off its side, facing 64
   // degrees away. The sofa belongs on the other long wall, 3.5 m across; an armchair and a plant stand where
   // the stand goes. Before the make-way moves (a4e0f5b) the critic left the TV stand's three edges unmet.
-  const auto [room, totals] = FurnishLiving("living_tv_across.json");
-  const nlohmann::json& record = room["critic"]["record"];
+  const auto [room, record, totals] = testing::FurnishFixtureRoom("living_tv_across.json", "living-room_0/0", false);
   INFO(record.dump(1));
   const auto unmet_of = [&](const char* when, const std::string& start) {
     int n = 0;

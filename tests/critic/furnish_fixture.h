@@ -1,0 +1,53 @@
+#pragma once
+// One room of a fixture layout furnished as `villa furnish LAYOUT --room ROOM --seed 7` does with procedural
+// assets and the offline critic (its log under the run's critic/), and what the run's report.json says of
+// it: the room's entry, the critic's record, and the totals. The run's folder is removed afterwards.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "critic/critic.h"
+#include "solver/furnish.h"
+
+namespace villa::testing {
+
+struct FurnishedRoom {
+  nlohmann::json room, record, totals;
+};
+
+// `layout`: a file under tests/fixtures/layouts/; `reach`: the reachability feedback loop on.
+inline FurnishedRoom FurnishFixtureRoom(const std::string& layout, const std::string& room, bool reach) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("villa_critic_fixture_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  solver::FurnishOptions options;
+  options.rooms = {room};
+  options.seed = 7;
+  options.procedural_only = true;
+  options.pictures = false;
+  options.check_reach = reach;
+  options.jobs = 1;
+  critic::CriticOptions c;
+  c.log_dir = dir / "critic";
+  options.critic = critic::MakeRoomCritic(c);
+  auto summary = solver::FurnishLayoutFile(std::string(VILLA_FIXTURE_DIR) + "/layouts/" + layout, dir, options);
+  REQUIRE(summary.ok());
+  std::ifstream in(dir / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  FurnishedRoom out;
+  out.totals = report["totals"];
+  for (const auto& r : report["rooms"])
+    if (r.value("room", "") == room) out.room = r;
+  fs::remove_all(dir);
+  REQUIRE(out.room.is_object());
+  REQUIRE(out.room.contains("critic"));
+  out.record = out.room["critic"]["record"];
+  return out;
+}
+
+}  // namespace villa::testing
