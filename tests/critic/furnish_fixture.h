@@ -1,7 +1,8 @@
 #pragma once
 // One room of a fixture layout furnished as `villa furnish LAYOUT --room ROOM --seed 7` does with procedural
 // assets and the offline critic (its log under the run's critic/), and what the run's report.json says of
-// it: the room's entry, the critic's record, and the totals. The run's folder is removed afterwards.
+// it: the room's entry, the critic's record, the totals, and the critic's log of its first round. The run's
+// folder is removed afterwards.
 #include <unistd.h>
 
 #include <filesystem>
@@ -18,6 +19,7 @@ namespace villa::testing {
 
 struct FurnishedRoom {
   nlohmann::json room, record, totals;
+  nlohmann::json first_round;  // critic/<room>/round-1/round.json (null when there is none)
 };
 
 // `layout`: a file under tests/fixtures/layouts/; `reach`: the reachability feedback loop on.
@@ -43,6 +45,10 @@ inline FurnishedRoom FurnishFixtureRoom(const std::string& layout, const std::st
   out.totals = report["totals"];
   for (const auto& r : report["rooms"])
     if (r.value("room", "") == room) out.room = r;
+  std::string folder = room;
+  for (char& ch : folder)
+    if (ch == '/') ch = '_';
+  if (std::ifstream round{dir / "critic" / folder / "round-1" / "round.json"}) out.first_round = nlohmann::json::parse(round);
   fs::remove_all(dir);
   REQUIRE(out.room.is_object());
   REQUIRE(out.room.contains("critic"));
