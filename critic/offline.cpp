@@ -1221,6 +1221,20 @@ std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose&
   return best;
 }
 
+// Whether object k at `pose` keeps `clearance` from where the objects of `landed` land (heights counted;
+// floor coverings neither block nor are blocked).
+bool ClearOfLanded(const Room& room, int k, const solver::Pose& pose, const std::vector<std::pair<int, Candidate>>& landed, double clearance) {
+  if (Covering(room.solution.objects[k], pose.scale)) return true;
+  const ObjectBox box = BoxAt(room, k, pose);
+  const double top = box.z0 + room.stack_top[k] - room.solution.placements[k].pose.z;
+  return std::none_of(landed.begin(), landed.end(), [&](const auto& p) {
+    if (p.first == k || Covering(room.solution.objects[p.first], p.second.pose.scale)) return false;
+    const ObjectBox there = BoxAt(room, p.first, p.second.pose);
+    return PlanGap(box, there) < clearance &&
+           std::min(top, there.z0 + room.stack_top[p.first] - room.solution.placements[p.first].pose.z) > std::max(box.z0, there.z0);
+  });
+}
+
 // The relations left unmet with `placements`, leaving out what the solver re-places after a group move
 // (`replaced`, roots): their edges, their zones, and where they alone enter a zone.
 Unmet UnmetBesides(const Room& room, const std::vector<solver::ObjectPlacement>& placements, const std::vector<int>& replaced) {
@@ -1403,7 +1417,14 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           const double dist = geo::Dot(geo::Sub(c, facing_wall.a), nv);  // from that wall to the hub's centre
           if (dist <= 0.0 || dist >= nearest) continue;
           const double t_foot = geo::Dot(geo::Sub(c, facing_wall.a), dv);
-          auto stand = OnWallAt(room, other, static_cast<int>(v), t_foot, room.solution.placements[other].pose.scale);
+          // At the foot, else off it along the wall while still before the hub (the foot under a window, in
+          // a keep-out: what stands in the way may move, a keep-out not).
+          std::optional<Candidate> stand;
+          for (double off : {0.0, -0.25, 0.25, -0.5, 0.5, -0.75, 0.75}) {
+            stand = OnWallAt(room, other, static_cast<int>(v), t_foot + off * half, room.solution.placements[other].pose.scale);
+            if (stand && Blockers(room, other, stand->pose, options.clearance, {hub, other})) break;
+            stand.reset();
+          }
           if (!stand) continue;
           const double gap = dist - 0.5 * ho.asset.size.y * at.scale - (oo.wall_gap + oo.asset.size.y * room.solution.placements[other].pose.scale);
           if (gap < facing_gap->first || gap > facing_gap->second) continue;
@@ -1435,17 +1456,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       // (Free and Blockers never count the object itself: `moving` serves every member.)
       // Whether object k at `pose` keeps clear of what has landed already (the other end on its new wall,
       // what stepped aside).
-      const auto clear_of_landed = [&](int k, const solver::Pose& pose) {
-        if (Covering(room.solution.objects[k], pose.scale)) return true;
-        const ObjectBox box = BoxAt(room, k, pose);
-        const double top = box.z0 + room.stack_top[k] - room.solution.placements[k].pose.z;
-        return std::none_of(poses.begin(), poses.end(), [&](const auto& p) {
-          if (p.first == k || Covering(room.solution.objects[p.first], p.second.pose.scale)) return false;
-          const ObjectBox there = BoxAt(room, p.first, p.second.pose);
-          return PlanGap(box, there) < options.clearance &&
-                 std::min(top, there.z0 + room.stack_top[p.first] - room.solution.placements[p.first].pose.z) > std::max(box.z0, there.z0);
-        });
-      };
+      const auto clear_of_landed = [&](int k, const solver::Pose& pose) { return ClearOfLanded(room, k, pose, poses, options.clearance); };
       const auto clear_way = [&](int k, const solver::Pose& pose) {
         if (!clear_of_landed(k, pose)) return false;
         const ObjectBox box = BoxAt(room, k, pose);
@@ -1458,7 +1469,18 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           const bool ringed = std::find(variant.ring.begin(), variant.ring.end(), b) != variant.ring.end();
           if (!is_loose && !ringed && !(mo.other_at && makes_way(b))) return false;
           std::optional<Candidate> aside;
-          for (const Candidate& c : StepsAside(room, b, box, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
+          std::vector<Candidate> spots = StepsAside(room, b, box, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0});
+          // What makes way for a wall-standing piece and is re-placed by the solver after may wait on any
+          // wall (a bookcase between a door and a window has no step aside along its own).
+          if (!is_loose && !ringed && WallBound(room.solution.objects[b]))
+            for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+              const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+              for (double tw = 0.0; tw < length; tw += 0.25)
+                if (auto c = OnWallAt(room, b, static_cast<int>(w), tw, room.solution.placements[b].pose.scale);
+                    c && PlanGap(BoxAt(room, b, c->pose), box) >= 1.0)
+                  spots.push_back(*c);
+            }
+          for (const Candidate& c : spots)
             if (Free(room, b, c.pose, options.clearance, moving) && clear_of_landed(b, c.pose)) {
               aside = c;
               break;
@@ -1507,6 +1529,50 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       const solver::Pose hub_at = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == hub; })->second.pose;
       for (int h : hung)
         if (auto c = HungBehind(room, h, hub_at)) poses.push_back({h, *c});
+      // What of the ring stands free before the hub (the coffee table, when the sofa moves alone) is seated
+      // before it where it lands, at the first pose where all its edges to the hub hold, rather than left to
+      // the solver, which would place it around the ring still standing where it was (the armchairs in its
+      // place). What stands beside the hub (side tables, a lamp) the solver places well.
+      std::vector<int> seated;
+      for (int k : variant.ring) {
+        const solver::ProblemObject& ko = room.solution.objects[k];
+        const solver::ObjectPlacement& kp = room.solution.placements[k];
+        if (room.parent[k] >= 0 || ko.parent != "floor" || ko.relation != solver::Relation::kOnTop || Covering(ko, kp.pose.scale)) continue;
+        std::vector<scene::SemanticEdge> to_hub;
+        for (const scene::SemanticEdge& e : room.graph)
+          if ((room.Find(e.source) == k && room.Find(e.target) == hub) || (room.Find(e.source) == hub && room.Find(e.target) == k)) to_hub.push_back(e);
+        if (std::none_of(to_hub.begin(), to_hub.end(), [&](const scene::SemanticEdge& e) {
+              return e.relation == scene::SemanticRelation::kFrontOf && room.Find(e.source) == k;
+            }))
+          continue;
+        // Where it stepped aside for the hub, it goes to its seat instead (MoveOrder lets it leave first).
+        std::optional<std::pair<int, Candidate>> aside;
+        if (auto it = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == k; }); it != poses.end()) {
+          aside = *it;
+          poses.erase(it);
+        }
+        const ObjectBox hub_box = BoxAt(room, hub, hub_at);
+        for (const Candidate& c : CandidatesFor(room, k, hub, to_hub.front(), kp.pose.scale, &hub_box)) {
+          const ObjectBox kb = BoxAt(room, k, c.pose);
+          if (!std::all_of(to_hub.begin(), to_hub.end(), [&](const scene::SemanticEdge& e) {
+                return room.Find(e.source) == k ? CheckEdge(e, kb, hub_box).satisfied : CheckEdge(e, hub_box, kb).satisfied;
+              }))
+            continue;
+          const size_t landed = poses.size(), gave_way = made_way.size();
+          const std::set<int> was_moving = moving;
+          if (!clear_way(k, c.pose)) {  // (what stepped aside for it on the way comes back)
+            poses.resize(landed);
+            made_way.resize(gave_way);
+            moving = was_moving;
+            continue;
+          }
+          poses.push_back({k, c});
+          moving.insert(k);
+          seated.push_back(k);
+          break;
+        }
+        if (aside && std::find(seated.begin(), seated.end(), k) == seated.end()) poses.push_back(*aside);
+      }
       if (reseat && !mo.other_at) {
         // The other end re-seated against the hub where it lands (the side table at the sofa's end the slide
         // made room for): the first pose where every edge between the two holds, clear of everything.
@@ -1553,10 +1619,12 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       std::vector<solver::ObjectPlacement> placements = room.solution.placements;
       for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
       // What made way is re-placed by the solver, as the ring is: left out of the ranking.
-      std::vector<int> ring = variant.ring;
+      std::vector<int> ring;
+      for (int k : variant.ring)
+        if (std::find(seated.begin(), seated.end(), k) == seated.end()) ring.push_back(k);
       ring.insert(ring.end(), made_way.begin(), made_way.end());
       const Unmet u = UnmetBesides(room, placements, ring);
-      if (!(u < (made_way.empty() ? before : UnmetBesides(room, room.solution.placements, ring)))) continue;
+      if (!(u < (made_way.empty() && seated.empty() ? before : UnmetBesides(room, room.solution.placements, ring)))) continue;
       std::vector<std::pair<int, Candidate>> order;
       if (!MoveOrder(room, poses, options.clearance, &order)) continue;  // (what it parks on the way counts as moves)
       layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), std::move(ring),
@@ -1564,6 +1632,91 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
     }
   }
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
+}
+
+// The satellites of a root m: what stands free on the floor with all its edges to m (the armchairs and the
+// rug of a coffee table); a satellite's own things may have edges to it too.
+std::vector<int> SatellitesOf(const Room& room, int m) {
+  std::map<int, bool> only_m;  // root -> whether every edge of it so far ends at m (or at itself)
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if (a < 0 || b < 0) continue;
+    const int ra = room.Root(a), rb = room.Root(b);
+    if (ra == rb) continue;
+    if (ra != m) only_m.emplace(ra, true).first->second &= rb == m;
+    if (rb != m) only_m.emplace(rb, true).first->second &= ra == m;
+  }
+  std::vector<int> out;
+  for (const auto& [k, only] : only_m) {
+    const solver::ProblemObject& o = room.solution.objects[k];
+    if (only && room.parent[k] < 0 && o.parent == "floor" && o.relation == solver::Relation::kOnTop) out.push_back(k);
+  }
+  return out;
+}
+
+// Moves of an object standing free on the floor that take its satellites along (the coffee table brought
+// before the sofa with the rug under it and the armchairs around it): the object to each candidate pose of
+// the edge, each satellite carried by the same rigid motion where it lands free, else re-placed by the
+// solver after (stepping aside first when it stands where the others land). The re-placed ones' relations
+// are left out of the ranking, which the loop's real measure then decides. Ranked like cluster moves.
+std::vector<std::vector<Step>> SatelliteMoves(const Room& room, int s, int t, const scene::SemanticEdge& edge, const OfflineProposalOptions& options,
+                                              const std::string& why) {
+  std::vector<MultiMove> layouts;
+  std::map<std::vector<int>, Unmet> before;  // by the set re-placed
+  for (int m : {s, t}) {
+    const int other = m == s ? t : s;
+    const solver::ProblemObject& mo = room.solution.objects[m];
+    if (room.parent[m] >= 0 || mo.parent != "floor" || mo.relation != solver::Relation::kOnTop || room.Root(other) == m) continue;
+    const std::vector<int> satellites = SatellitesOf(room, m);
+    if (satellites.empty() || std::find(satellites.begin(), satellites.end(), room.Root(other)) != satellites.end()) continue;
+    std::set<int> group(satellites.begin(), satellites.end());
+    group.insert(m);
+    const solver::Pose at = room.solution.placements[m].pose;
+    for (const Candidate& c : CandidatesFor(room, m, room.Root(other), edge, at.scale)) {
+      if (!Free(room, m, c.pose, options.clearance, group)) continue;
+      const double turn = solver::WrapAngle(c.pose.yaw - at.yaw), cs = std::cos(turn), sn = std::sin(turn);
+      std::vector<std::pair<int, Candidate>> poses{{m, c}};
+      std::vector<int> ring;
+      for (int k : satellites) {
+        const solver::Pose& p = room.solution.placements[k].pose;
+        const double rx = p.x - at.x, ry = p.y - at.y;
+        Candidate carried;
+        carried.pose = {c.pose.x + cs * rx - sn * ry, c.pose.y + sn * rx + cs * ry, p.z, solver::WrapAngle(p.yaw + turn), p.scale};
+        if (Free(room, k, carried.pose, options.clearance, group) && ClearOfLanded(room, k, carried.pose, poses, options.clearance))
+          poses.push_back({k, carried});
+        else
+          ring.push_back(k);
+      }
+      // A re-placed satellite standing where another lands steps aside first.
+      bool ok = true;
+      for (int k : ring) {
+        if (ClearOfLanded(room, k, room.solution.placements[k].pose, poses, options.clearance)) continue;
+        std::optional<Candidate> aside;
+        for (const Candidate& a : StepsAside(room, k, BoxAt(room, m, c.pose), 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
+          if (Free(room, k, a.pose, options.clearance, group) && ClearOfLanded(room, k, a.pose, poses, options.clearance)) {
+            aside = a;
+            break;
+          }
+        if (!aside) {
+          ok = false;
+          break;
+        }
+        poses.push_back({k, *aside});
+      }
+      if (!ok) continue;
+      std::vector<solver::ObjectPlacement> placements = room.solution.placements;
+      for (const auto& [k, cand] : poses) placements = room.Moved(placements, k, cand.pose, cand.wall);
+      std::sort(ring.begin(), ring.end());
+      auto [was, added] = before.emplace(ring, Unmet{});
+      if (added) was->second = UnmetBesides(room, room.solution.placements, ring);
+      const Unmet u = UnmetBesides(room, placements, ring);
+      if (!(u < was->second)) continue;
+      std::vector<std::pair<int, Candidate>> order;
+      if (!MoveOrder(room, poses, options.clearance, &order)) continue;
+      layouts.push_back({u, std::hypot(c.pose.x - at.x, c.pose.y - at.y) + std::abs(turn), std::move(order), std::move(ring), 0});
+    }
+  }
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "with what stands around it");
 }
 
 // A bed and what belongs at its head: the things standing against the wall beside it (nightstands, by a
@@ -1851,6 +2004,8 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
       for (std::vector<Step>& run : RunMoves(room, s, t, now, options, line)) single.alternatives.push_back(std::move(run));
       // The edge's hub with its cluster, moved as one piece.
       for (std::vector<Step>& moved : ClusterMoves(room, s, t, c.edge, now, options, line)) single.alternatives.push_back(std::move(moved));
+      // Either end with its satellites.
+      for (std::vector<Step>& moved : SatelliteMoves(room, s, t, c.edge, options, line)) single.alternatives.push_back(std::move(moved));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;
