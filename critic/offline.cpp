@@ -179,6 +179,19 @@ std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, doub
   return out;
 }
 
+// Object i's poses against every wall but `skip`, every `step` m from each wall's start, at `scale`, where
+// OnWallAt finds one (wall by wall, in order).
+std::vector<Candidate> AlongEveryWall(const Room& room, int i, double step, double scale, int skip = -1) {
+  std::vector<Candidate> out;
+  for (size_t w = 0; w < room.problem.walls.size(); ++w) {
+    if (static_cast<int>(w) == skip) continue;
+    const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
+    for (double t = 0.0; t < length; t += step)
+      if (auto c = OnWallAt(room, i, static_cast<int>(w), t, scale)) out.push_back(*c);
+  }
+  return out;
+}
+
 // Half the extent of a box of half sizes (hx, hy) at `yaw` along the unit direction n.
 double HalfAlong(double hx, double hy, double yaw, Point n) {
   return hx * std::abs(n.x * std::cos(yaw) + n.y * std::sin(yaw)) + hy * std::abs(-n.x * std::sin(yaw) + n.y * std::cos(yaw));
@@ -462,12 +475,7 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
     // Something hung (a towel rail in the place of a mirror) may go to another wall as well: it stands in
     // no one's way there.
     if (o.relation == solver::Relation::kOnWall)
-      for (size_t v = 0; v < room.problem.walls.size(); ++v) {
-        if (static_cast<int>(v) == w) continue;
-        const double length = geo::Dist(room.problem.walls[v].a, room.problem.walls[v].b);
-        for (double s = 0.0; s < length; s += 0.25)
-          if (auto c = OnWallAt(room, k, static_cast<int>(v), s, now.pose.scale)) out.push_back(*c);
-      }
+      for (const Candidate& c : AlongEveryWall(room, k, 0.25, now.pose.scale, w)) out.push_back(c);
   } else if (!OnObject(o)) {
     for (double step : steps)
       for (int dir = 0; dir < 8; ++dir) {
@@ -689,25 +697,23 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
     std::optional<Candidate> spot;
     for (size_t a : waiting) {
       const int obj = poses[a].first;
-      for (size_t w = 0; w < room.problem.walls.size() && !spot; ++w) {
-        if (!hung_first && static_cast<int>(w) == poses[a].second.wall) continue;
-        const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
-        for (double t = 0.0; t < length && !spot; t += hung_first ? 0.1 : 0.25) {
-          auto c = OnWallAt(room, obj, static_cast<int>(w), t, at[a].pose.scale);
-          if (!c || !(hung_first ? Free(room, obj, c->pose, clearance, moving) : Free(room, obj, c->pose, clearance))) continue;
-          solver::ObjectPlacement pl = at[a];
-          pl.pose = c->pose;
-          const ObjectBox box = BoxOf(room.solution.objects[obj], pl);
-          bool clear = true;
-          for (size_t b = 0; b < n && clear; ++b) {
-            if (hung_first && b == a) continue;
-            clear = !meets(box, box.z0 + height(a), target[b], target[b].z0 + height(b));
-            if (clear && hung_first) {
-              const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
-              clear = !meets(box, box.z0 + height(a), there, there.z0 + height(b));
-            }
+      for (const Candidate& c : AlongEveryWall(room, obj, hung_first ? 0.1 : 0.25, at[a].pose.scale, hung_first ? -1 : poses[a].second.wall)) {
+        if (!(hung_first ? Free(room, obj, c.pose, clearance, moving) : Free(room, obj, c.pose, clearance))) continue;
+        solver::ObjectPlacement pl = at[a];
+        pl.pose = c.pose;
+        const ObjectBox box = BoxOf(room.solution.objects[obj], pl);
+        bool clear = true;
+        for (size_t b = 0; b < n && clear; ++b) {
+          if (hung_first && b == a) continue;
+          clear = !meets(box, box.z0 + height(a), target[b], target[b].z0 + height(b));
+          if (clear && hung_first) {
+            const ObjectBox there = BoxOf(room.solution.objects[poses[b].first], at[b]);
+            clear = !meets(box, box.z0 + height(a), there, there.z0 + height(b));
           }
-          if (clear) spot = c;
+        }
+        if (clear) {
+          spot = c;
+          break;
         }
       }
       if (spot) {
@@ -1235,6 +1241,33 @@ bool ClearOfLanded(const Room& room, int k, const solver::Pose& pose, const std:
   });
 }
 
+// Steps (m) for what steps aside out of a group move's way: well clear of where the piece lands.
+const std::vector<double> kWellAside{0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
+
+// The first of `spots` where object k stands free (of everything but `moving`) and clear of where the
+// objects of `landed` land.
+std::optional<Candidate> FirstClear(const Room& room, int k, const std::vector<Candidate>& spots, const std::set<int>& moving,
+                                    const std::vector<std::pair<int, Candidate>>& landed, double clearance) {
+  for (const Candidate& c : spots)
+    if (Free(room, k, c.pose, clearance, moving) && ClearOfLanded(room, k, c.pose, landed, clearance)) return c;
+  return std::nullopt;
+}
+
+// The candidate poses of object k against the hub, whose box will be `hub_box` (CandidatesFor by `edge`),
+// where every edge of `edges` between the two holds.
+std::vector<Candidate> SeatsAgainst(const Room& room, int k, int hub, const ObjectBox& hub_box, const scene::SemanticEdge& edge,
+                                    const std::vector<scene::SemanticEdge>& edges, double scale) {
+  std::vector<Candidate> out;
+  for (const Candidate& c : CandidatesFor(room, k, hub, edge, scale, &hub_box)) {
+    const ObjectBox kb = BoxAt(room, k, c.pose);
+    if (std::all_of(edges.begin(), edges.end(), [&](const scene::SemanticEdge& e) {
+          return room.Find(e.source) == k ? CheckEdge(e, kb, hub_box).satisfied : CheckEdge(e, hub_box, kb).satisfied;
+        }))
+      out.push_back(c);
+  }
+  return out;
+}
+
 // The relations left unmet with `placements`, leaving out what the solver re-places after a group move
 // (`replaced`, roots): their edges, their zones, and where they alone enter a zone.
 Unmet UnmetBesides(const Room& room, const std::vector<solver::ObjectPlacement>& placements, const std::vector<int>& replaced) {
@@ -1367,22 +1400,17 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   if (facing_gap && !on_wall && room.solution.objects[other].relation == solver::Relation::kAgainstWall && room.parent[other] < 0) {
     const solver::ProblemObject& oo = room.solution.objects[other];
     const double scale = room.solution.placements[other].pose.scale;
-    for (size_t w = 0; w < room.problem.walls.size(); ++w) {
-      if (oo.wall >= 0 && static_cast<int>(w) != oo.wall) continue;
-      const solver::WallEdge& wall = room.problem.walls[w];
-      const double length = geo::Dist(wall.a, wall.b);
+    for (const Candidate& slot : AlongEveryWall(room, other, 0.25, scale)) {
+      if (oo.wall >= 0 && slot.wall != oo.wall) continue;
+      const solver::WallEdge& wall = room.problem.walls[slot.wall];
       const Point n = geo::Left(geo::Unit(geo::Sub(wall.b, wall.a)));
-      for (double tw = 0.0; tw < length; tw += 0.25) {
-        auto slot = OnWallAt(room, other, static_cast<int>(w), tw, scale);
-        if (!slot) continue;
-        const double yaw = std::atan2(-n.x, n.y);  // the hub faces the wall
-        for (double gap : {facing_gap->first + 0.05, 0.5 * (facing_gap->first + facing_gap->second), facing_gap->second - 0.05}) {
-          const double reach = 0.5 * oo.asset.size.y * scale + gap + 0.5 * ho.asset.size.y * at.scale;
-          const Point c = geo::Add({slot->pose.x, slot->pose.y}, geo::Scale(n, reach));
-          const double turn = solver::WrapAngle(yaw - at.yaw);
-          // The rigid motion taking the hub's centre to c, turned by `turn` about it.
-          motions.push_back({c.x - at.x, c.y - at.y, turn, slot, std::nullopt});
-        }
+      const double yaw = std::atan2(-n.x, n.y);  // the hub faces the wall
+      for (double gap : {facing_gap->first + 0.05, 0.5 * (facing_gap->first + facing_gap->second), facing_gap->second - 0.05}) {
+        const double reach = 0.5 * oo.asset.size.y * scale + gap + 0.5 * ho.asset.size.y * at.scale;
+        const Point c = geo::Add({slot.pose.x, slot.pose.y}, geo::Scale(n, reach));
+        const double turn = solver::WrapAngle(yaw - at.yaw);
+        // The rigid motion taking the hub's centre to c, turned by `turn` about it.
+        motions.push_back({c.x - at.x, c.y - at.y, turn, slot, std::nullopt});
       }
     }
   }
@@ -1453,38 +1481,25 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       // well clear of where k lands. A loose thing (a plant) only steps aside; when both ends are placed
       // anew (the sofa carried before a TV stand on another wall), anything standing on the floor or against
       // a wall may make way, and the solver re-places it after (an armchair, a bookcase).
-      // (Free and Blockers never count the object itself: `moving` serves every member.)
-      // Whether object k at `pose` keeps clear of what has landed already (the other end on its new wall,
-      // what stepped aside).
-      const auto clear_of_landed = [&](int k, const solver::Pose& pose) { return ClearOfLanded(room, k, pose, poses, options.clearance); };
+      // It must keep clear of what has landed already (the other end on its new wall, what stepped aside).
+      // (Blockers never counts the object itself: `moving` serves every member.)
       const auto clear_way = [&](int k, const solver::Pose& pose) {
-        if (!clear_of_landed(k, pose)) return false;
+        if (!ClearOfLanded(room, k, pose, poses, options.clearance)) return false;
+        const auto blockers = Blockers(room, k, pose, options.clearance, moving);
+        if (!blockers) return false;
         const ObjectBox box = BoxAt(room, k, pose);
-        if (Free(room, k, pose, options.clearance, moving)) return true;
-        auto blockers = Blockers(room, k, pose, options.clearance, moving);
-        if (!blockers || blockers->empty()) return false;
         for (int b : *blockers) {
           const bool is_loose = loose(b);
           // The ring, re-placed by the solver after the move, steps aside first where it is in the way.
           const bool ringed = std::find(variant.ring.begin(), variant.ring.end(), b) != variant.ring.end();
           if (!is_loose && !ringed && !(mo.other_at && makes_way(b))) return false;
-          std::optional<Candidate> aside;
-          std::vector<Candidate> spots = StepsAside(room, b, box, 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0});
+          std::vector<Candidate> spots = StepsAside(room, b, box, 1.0, kWellAside);
           // What makes way for a wall-standing piece and is re-placed by the solver after may wait on any
           // wall (a bookcase between a door and a window has no step aside along its own).
           if (!is_loose && !ringed && WallBound(room.solution.objects[b]))
-            for (size_t w = 0; w < room.problem.walls.size(); ++w) {
-              const double length = geo::Dist(room.problem.walls[w].a, room.problem.walls[w].b);
-              for (double tw = 0.0; tw < length; tw += 0.25)
-                if (auto c = OnWallAt(room, b, static_cast<int>(w), tw, room.solution.placements[b].pose.scale);
-                    c && PlanGap(BoxAt(room, b, c->pose), box) >= 1.0)
-                  spots.push_back(*c);
-            }
-          for (const Candidate& c : spots)
-            if (Free(room, b, c.pose, options.clearance, moving) && clear_of_landed(b, c.pose)) {
-              aside = c;
-              break;
-            }
+            for (const Candidate& c : AlongEveryWall(room, b, 0.25, room.solution.placements[b].pose.scale))
+              if (PlanGap(BoxAt(room, b, c.pose), box) >= 1.0) spots.push_back(c);
+          const std::optional<Candidate> aside = FirstClear(room, b, spots, moving, poses, options.clearance);
           if (!aside) return false;
           poses.push_back({b, *aside});
           moving.insert(b);
@@ -1527,6 +1542,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       }
       if (!ok) continue;
       const solver::Pose hub_at = std::find_if(poses.begin(), poses.end(), [&](const auto& p) { return p.first == hub; })->second.pose;
+      const ObjectBox hub_box = BoxAt(room, hub, hub_at);
       for (int h : hung)
         if (auto c = HungBehind(room, h, hub_at)) poses.push_back({h, *c});
       // What of the ring stands free before the hub (the coffee table, when the sofa moves alone) is seated
@@ -1540,7 +1556,8 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
         if (room.parent[k] >= 0 || ko.parent != "floor" || ko.relation != solver::Relation::kOnTop || Covering(ko, kp.pose.scale)) continue;
         std::vector<scene::SemanticEdge> to_hub;
         for (const scene::SemanticEdge& e : room.graph)
-          if ((room.Find(e.source) == k && room.Find(e.target) == hub) || (room.Find(e.source) == hub && room.Find(e.target) == k)) to_hub.push_back(e);
+          if ((room.Find(e.source) == k && room.Find(e.target) == hub) || (room.Find(e.source) == hub && room.Find(e.target) == k))
+            to_hub.push_back(e);
         if (std::none_of(to_hub.begin(), to_hub.end(), [&](const scene::SemanticEdge& e) {
               return e.relation == scene::SemanticRelation::kFrontOf && room.Find(e.source) == k;
             }))
@@ -1551,13 +1568,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           aside = *it;
           poses.erase(it);
         }
-        const ObjectBox hub_box = BoxAt(room, hub, hub_at);
-        for (const Candidate& c : CandidatesFor(room, k, hub, to_hub.front(), kp.pose.scale, &hub_box)) {
-          const ObjectBox kb = BoxAt(room, k, c.pose);
-          if (!std::all_of(to_hub.begin(), to_hub.end(), [&](const scene::SemanticEdge& e) {
-                return room.Find(e.source) == k ? CheckEdge(e, kb, hub_box).satisfied : CheckEdge(e, hub_box, kb).satisfied;
-              }))
-            continue;
+        for (const Candidate& c : SeatsAgainst(room, k, hub, hub_box, to_hub.front(), to_hub, kp.pose.scale)) {
           const size_t landed = poses.size(), gave_way = made_way.size();
           const std::set<int> was_moving = moving;
           if (!clear_way(k, c.pose)) {  // (what stepped aside for it on the way comes back)
@@ -1576,9 +1587,6 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       if (reseat && !mo.other_at) {
         // The other end re-seated against the hub where it lands (the side table at the sofa's end the slide
         // made room for): the first pose where every edge between the two holds, clear of everything.
-        solver::ObjectPlacement hub_pl = room.solution.placements[hub];
-        hub_pl.pose = hub_at;
-        const ObjectBox hub_box = BoxOf(ho, hub_pl);
         std::vector<ObjectBox> landed;
         for (const auto& [k, cand] : poses) {
           if (Covering(room.solution.objects[k], cand.pose.scale)) continue;
@@ -1587,16 +1595,8 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
           landed.push_back(BoxOf(room.solution.objects[k], pl));
         }
         const solver::ObjectPlacement& op = room.solution.placements[other];
-        for (const Candidate& c : CandidatesFor(room, other, hub, edge, op.pose.scale, &hub_box)) {
-          solver::ObjectPlacement pl = op;
-          pl.pose = c.pose;
-          const ObjectBox ob = BoxOf(room.solution.objects[other], pl);
-          bool holds = true;
-          for (const scene::SemanticEdge& e : between) {
-            const bool forward = room.Find(e.source) == other;
-            holds = holds && CheckEdge(e, forward ? ob : hub_box, forward ? hub_box : ob).satisfied;
-          }
-          if (!holds) continue;
+        for (const Candidate& c : SeatsAgainst(room, other, hub, hub_box, edge, between, op.pose.scale)) {
+          const ObjectBox ob = BoxAt(room, other, c.pose);
           if (std::any_of(landed.begin(), landed.end(), [&](const ObjectBox& b) { return PlanGap(ob, b) < options.clearance; })) continue;
           if (!Free(room, other, c.pose, options.clearance, moving)) continue;
           poses.push_back({other, c});
@@ -1691,12 +1691,8 @@ std::vector<std::vector<Step>> SatelliteMoves(const Room& room, int s, int t, co
       bool ok = true;
       for (int k : ring) {
         if (ClearOfLanded(room, k, room.solution.placements[k].pose, poses, options.clearance)) continue;
-        std::optional<Candidate> aside;
-        for (const Candidate& a : StepsAside(room, k, BoxAt(room, m, c.pose), 1.0, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}))
-          if (Free(room, k, a.pose, options.clearance, group) && ClearOfLanded(room, k, a.pose, poses, options.clearance)) {
-            aside = a;
-            break;
-          }
+        const std::optional<Candidate> aside =
+            FirstClear(room, k, StepsAside(room, k, BoxAt(room, m, c.pose), 1.0, kWellAside), group, poses, options.clearance);
         if (!aside) {
           ok = false;
           break;
