@@ -1715,6 +1715,63 @@ std::vector<std::vector<Step>> SatelliteMoves(const Room& room, int s, int t, co
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "with what stands around it");
 }
 
+// Both ends smaller: where the free-standing end (a desk chair) finds no free pose before the other end (a
+// desk against the wall of a narrow arm, 0.68 m deep, with 1.2 m of floor to the wall across) even at its
+// smallest scale, the other end shrinks to its smallest in place (its back kept to its wall, what stands on
+// it carried) and the first is seated before it, at its own scale or its smallest. Ranked like cluster
+// moves; the loop's real measure decides.
+std::vector<std::vector<Step>> ShrunkPairMoves(const Room& room, int s, int t, const scene::SemanticEdge& edge, const Unmet& now,
+                                               const OfflineProposalOptions& options, const std::string& why) {
+  std::vector<MultiMove> layouts;
+  const int hub = room.Root(t);
+  const solver::ProblemObject& so = room.solution.objects[s];
+  const solver::ProblemObject& ho = room.solution.objects[hub];
+  const solver::ObjectPlacement& hp = room.solution.placements[hub];
+  if (room.parent[s] >= 0 || so.parent != "floor" || so.relation != solver::Relation::kOnTop || hub == s ||
+      ho.scale_min >= hp.pose.scale - 1e-9)
+    return {};
+  std::vector<scene::SemanticEdge> between;
+  std::vector<int> facers;  // what stands on the other end and faces the first (the monitor): turned to it
+  for (const scene::SemanticEdge& e : room.graph) {
+    const int a = room.Find(e.source), b = room.Find(e.target);
+    if ((a == s && b >= 0 && room.Root(b) == hub) || (b == s && a >= 0 && room.Root(a) == hub)) between.push_back(e);
+    if (b == s && a >= 0 && a != hub && room.Root(a) == hub && e.relation == scene::SemanticRelation::kFaceTo) facers.push_back(a);
+  }
+  Candidate shrunk;
+  shrunk.pose = hp.pose;
+  shrunk.pose.scale = ho.scale_min;
+  if (ho.relation == solver::Relation::kAgainstWall && hp.wall >= 0) {
+    const solver::WallEdge& wall = room.problem.walls[hp.wall];
+    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+    const std::optional<Candidate> c = OnWallAt(room, hub, hp.wall, geo::Dot(geo::Sub({hp.pose.x, hp.pose.y}, wall.a), d), ho.scale_min);
+    if (!c) return {};
+    shrunk = *c;
+  }
+  const ObjectBox hub_box = BoxAt(room, hub, shrunk.pose);
+  const solver::Pose at = room.solution.placements[s].pose;
+  for (double scale : {at.scale, so.scale_min}) {
+    for (const Candidate& c : SeatsAgainst(room, s, hub, hub_box, edge, between, scale)) {
+      // Seated at the edge's own gap from where the other end lands.
+      if (!Free(room, s, c.pose, options.clearance, {hub})) continue;
+      std::vector<solver::ObjectPlacement> placements = room.Moved(room.solution.placements, hub, shrunk.pose, shrunk.wall);
+      placements = room.Moved(placements, s, c.pose, c.wall);
+      std::vector<std::pair<int, Candidate>> poses{{hub, shrunk}, {s, c}};
+      for (int k : facers) {
+        Candidate turned;
+        turned.pose = placements[k].pose;
+        turned.pose.yaw = std::atan2(c.pose.x - turned.pose.x, -(c.pose.y - turned.pose.y));
+        placements = room.Moved(placements, k, turned.pose, -1);
+        poses.push_back({k, turned});
+      }
+      const Unmet u = UnmetBesides(room, placements, {});
+      if (!(u < now)) continue;
+      layouts.push_back({u, std::hypot(c.pose.x - at.x, c.pose.y - at.y) + (at.scale - scale), std::move(poses), {}, 0});
+    }
+    if (!layouts.empty() || so.scale_min >= at.scale - 1e-9) break;
+  }
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "both smaller");
+}
+
 // A bed and what belongs at its head: the things standing against the wall beside it (nightstands, by a
 // left_of / right_of / next_to edge to it) and what hangs on the wall above it (the painting, behind it or
 // centred on it). Single moves cannot mend a bed put where its wall has no room for a nightstand on one
@@ -2002,6 +2059,8 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
       for (std::vector<Step>& moved : ClusterMoves(room, s, t, c.edge, now, options, line)) single.alternatives.push_back(std::move(moved));
       // Either end with its satellites.
       for (std::vector<Step>& moved : SatelliteMoves(room, s, t, c.edge, options, line)) single.alternatives.push_back(std::move(moved));
+      // Both ends smaller, where nothing else fits (a desk and its chair in a narrow arm).
+      for (std::vector<Step>& moved : ShrunkPairMoves(room, s, t, c.edge, now, options, line)) single.alternatives.push_back(std::move(moved));
       if (!single.alternatives.empty()) {
         out.push_back(std::move(single));
         continue;
@@ -2062,3 +2121,5 @@ std::vector<Attempt> ProposeOffline(solver::RoomSolver& session, const solver::R
 }
 
 }  // namespace villa::critic
+
+

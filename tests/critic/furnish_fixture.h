@@ -20,6 +20,9 @@ namespace villa::testing {
 struct FurnishedRoom {
   nlohmann::json room, record, totals;
   nlohmann::json first_round;  // critic/<room>/round-1/round.json (null when there is none)
+  // The critic record's count `what` ("satisfied", "measured", "lost") of a relation type, `when`
+  // "relations_before" or "relations_after".
+  int Count(const char* when, const char* relation, const char* what) const { return record[when]["by_relation"][relation][what].get<int>(); }
 };
 
 // `layout`: a file under tests/fixtures/layouts/; `reach`: the reachability feedback loop on.
