@@ -6,8 +6,10 @@
 //     reachability check and its feedback loop on, as by default): RCH and ACC before and after the
 //     feedback, what is still unreachable by cause (the building: walls, stairs, holes and open door leaves;
 //     furniture), the actions the rooms' agents took, and the seconds of the check and the loop a villa.
-//   villa_bench_reach [--villas N] [--seed S] [--radius R] [--bare | --furnished] [--closed-doors] [--no-last-resort] [--verbose]
-// --closed-doors: the furnished villas with every door leaf shut in its opening (no leaf is an obstacle),
+//   villa_bench_reach [--villas N] [--seed S] [--radius R] [--bare | --furnished] [--closed-doors] [--no-last-resort] [--critic]
+//                     [--verbose]
+// --critic: each room reviewed by the offline critic (critic/) before the reachability check, as `villa
+// furnish` does by default. --closed-doors: the furnished villas with every door leaf shut in its opening (no leaf is an obstacle),
 // so what is left unreachable is the building's stairs and the furniture's. --no-last-resort: the feedback's
 // rounds only (ReachFeedbackOptions::last_resort off), to compare.
 #include <time.h>
@@ -22,6 +24,7 @@
 
 #include "bench/support/villas.h"
 #include "building/building.h"
+#include "critic/critic.h"
 #include "scene/acquire.h"
 #include "solver/furnish.h"
 #include "solver/reach.h"
@@ -135,7 +138,8 @@ void Bare(const std::vector<bench::BenchVilla>& villas, const solver::ReachOptio
   std::printf("  per villa: %.3f s CPU (worst %.3f s)\n", cpu / std::max<size_t>(1, villas.size()), worst);
 }
 
-void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, const solver::ReachOptions& reach, bool closed_doors, bool last_resort, bool verbose) {
+void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, const solver::ReachOptions& reach, bool closed_doors, bool last_resort,
+               const solver::RoomCritic& critic, bool verbose) {
   auto library = scene::OpenFurnishingLibrary("", true);
   if (!library.ok()) {
     std::fprintf(stderr, "%s\n", library.error().c_str());
@@ -143,7 +147,10 @@ void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, cons
   }
   std::printf("\n2. furnished (procedural assets, seed %llu, one room at a time, the feedback loop on%s), radius %.2f m; wall "
               "seconds\n",
-              static_cast<unsigned long long>(seed), ((closed_doors ? std::string(", door leaves shut") : std::string()) + (last_resort ? "" : ", no last resort")).c_str(),
+              static_cast<unsigned long long>(seed),
+              ((closed_doors ? std::string(", door leaves shut") : std::string()) + (last_resort ? "" : ", no last resort") +
+               (critic ? ", the offline critic" : ""))
+                  .c_str(),
               reach.radius);
   int rooms = 0, zones = 0, rooms_before = 0, zones_before = 0, rooms_after = 0, zones_after = 0, not_measured = 0;
   std::map<std::string, int> rooms_by_cause, zones_by_cause, actions, statuses;
@@ -158,6 +165,7 @@ void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, cons
     options.reach.reach = reach;
     options.build.door_leaves_open = !closed_doors;
     options.reach.last_resort = last_resort;
+    options.critic = critic;
     auto f = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
     if (!f.ok()) {
       std::fprintf(stderr, "%s: %s\n", v.name.c_str(), f.error().c_str());
@@ -243,7 +251,7 @@ void Furnished(const std::vector<bench::BenchVilla>& villas, uint64_t seed, cons
 int main(int argc, char** argv) {
   uint64_t count = 50, seed = 7;
   solver::ReachOptions options;
-  bool bare = true, furnished = true, verbose = false, closed_doors = false, last_resort = true;
+  bool bare = true, furnished = true, verbose = false, closed_doors = false, last_resort = true, with_critic = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--villas" && i + 1 < argc) count = std::strtoull(argv[++i], nullptr, 10);
@@ -254,8 +262,9 @@ int main(int argc, char** argv) {
     else if (a == "--verbose") verbose = true;
     else if (a == "--closed-doors") closed_doors = true;
     else if (a == "--no-last-resort") last_resort = false;
+    else if (a == "--critic") with_critic = true;
     else {
-      std::fprintf(stderr, "usage: villa_bench_reach [--villas N] [--seed S] [--radius R] [--bare | --furnished] [--closed-doors] [--no-last-resort] [--verbose]\n");
+      std::fprintf(stderr, "usage: villa_bench_reach [--villas N] [--seed S] [--radius R] [--bare | --furnished] [--closed-doors] [--no-last-resort] [--critic] [--verbose]\n");
       return 2;
     }
   }
@@ -269,6 +278,6 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(count), static_cast<unsigned long long>(count),
               static_cast<unsigned long long>(seed));
   if (bare) Bare(villas, options, verbose);
-  if (furnished) Furnished(villas, seed, options, closed_doors, last_resort, verbose);
+  if (furnished) Furnished(villas, seed, options, closed_doors, last_resort, with_critic ? critic::MakeRoomCritic({}) : solver::RoomCritic{}, verbose);
   return 0;
 }

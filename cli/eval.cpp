@@ -18,6 +18,7 @@
 #include "layout/layout_io.h"
 #include "util/progress.h"
 #ifdef VILLA_HAVE_FURNISH
+#include "cli/critic_flag.h"
 #include "cli/furnish_flags.h"
 #include "generator/scene_eval.h"
 #endif
@@ -227,6 +228,7 @@ Registration registration{55, [](CLI::App& app) {
                   "DIR/<NNN-request>/<seed>/ (a new or empty folder)");
 #ifdef VILLA_HAVE_FURNISH
   AddFurnishFlags(sub, command->furnish, {.seed = false, .jobs = false, .reach = true, .scope = "with --scenes: "});
+  AddCriticChoice(sub, command->furnish, "with --scenes: ");
 #endif
   sub->callback([command] { Run(*command); });
 }};

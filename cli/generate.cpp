@@ -9,6 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
+#include "cli/critic_flag.h"
 #include "cli/furnish_flags.h"
 #include "generator/generate.h"
 #include "util/progress.h"
@@ -92,6 +93,7 @@ Registration registration{65, [](CLI::App& app) {
   sub->add_option("-o,--out", command->out, "output folder (created if missing)")->required();
   AddBackendFlags(sub, command->backend, command->api_key_env, command->options);
   AddFurnishFlags(sub, f);
+  AddCriticChoice(sub, f);
   sub->add_flag("--no-furnish", command->no_furnish, "plan and build only (building.glb, no furniture)");
   sub->add_flag("--force", command->force, "overwrite existing output files in OUTDIR");
   sub->add_flag("-q,--quiet", command->quiet, "print nothing on success");

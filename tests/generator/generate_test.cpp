@@ -93,6 +93,9 @@ TEST_CASE("villa generate plans, builds and furnishes: files, wishes in their ro
   CHECK((micro["RCH"].is_null() || (micro["RCH"].get<double>() >= 0.0 && micro["RCH"].get<double>() <= 1.0)));
   REQUIRE(report["furnish"]["rooms"].size() == layout->rooms.size());
   CHECK(report["furnish"]["layout"] == "layout.json");
+  // The offline critic reviewed the rooms, as `villa furnish` does by default.
+  CHECK(report["furnish"]["totals"]["critic"]["critic"] == "offline");
+  CHECK(report["furnish"]["totals"]["critic"]["rounds"].get<int>() >= static_cast<int>(layout->rooms.size()) / 2);
   CHECK(report["problems"].empty());
   nlohmann::json files = {"layout.json", "plan.png", "scene.json", "furnished.glb", "CREDITS"};
   for (const Room& room : layout->rooms) {
@@ -164,8 +167,10 @@ TEST_CASE("villa generate: usage errors exit 2, a bad library exits 1, --no-furn
   CHECK(refused.status == 2);
   CHECK(refused.out.find("--force") != std::string::npos);
   CHECK(Read(out / "scene.json") == before);
-  REQUIRE(testing::RunVilla("generate " + request + " --procedural --seed 9 --force -q -o " + out.string()).status == 0);
+  CHECK(testing::RunVilla("generate " + request + " --procedural --seed 9 --force --critic mllm -o " + out.string()).status == 2);
+  REQUIRE(testing::RunVilla("generate " + request + " --procedural --seed 9 --force --critic none -q -o " + out.string()).status == 0);
   CHECK(Read(out / "notes.txt") == "mine");
+  CHECK(nlohmann::json::parse(Read(out / "report.json"))["furnish"]["totals"]["critic"].is_null());  // --critic none: the solver's rooms
 
   const fs::path bare = dir.path / "bare";
   REQUIRE(testing::RunVilla("generate " + request + " --no-furnish -q -o " + bare.string()).status == 0);
@@ -174,5 +179,5 @@ TEST_CASE("villa generate: usage errors exit 2, a bad library exits 1, --no-furn
   CHECK(nlohmann::json::parse(Read(bare / "report.json"))["micro"].is_null());
 
   const testing::CliRun help = testing::RunVilla("generate --help");
-  for (const char* word : {"furnished.glb", "scene.json", "--jobs", "--library", "--procedural", "--no-furnish"}) CHECK(help.out.find(word) != std::string::npos);
+  for (const char* word : {"furnished.glb", "scene.json", "--jobs", "--library", "--procedural", "--no-furnish", "--critic"}) CHECK(help.out.find(word) != std::string::npos);
 }
