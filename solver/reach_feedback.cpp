@@ -1,7 +1,10 @@
 #include "solver/reach_feedback.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <set>
 
 #include "layout/geometry.h"
@@ -124,10 +127,50 @@ std::vector<Slot> FloorSlots(const RoomProblem& problem, const ProblemObject& o,
   return out;
 }
 
-// Moves object `id` of `solver` to the nearest slot whose zone a person on `cells` touches and that keeps
-// the room's hard constraints; the action's result, or nothing when no slot does.
-std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::string& id, const ReachedCells& cells,
-                                                const ReachFeedbackOptions& options) {
+// The share of `zone`'s boxes within `radius` of a reached cell whose disc keeps clear of `owner` (the
+// owner's box where it would stand), sampled every 4 cm: ZoneShare's measure (solver/reach.cpp) on the
+// cells reached with the owner elsewhere. Every other cell is tried, like ZoneTouchable.
+double ZoneCover(const ReachedCells& cells, const std::vector<Ring>& zone, const OrientedBox& owner, double radius) {
+  const Point u = owner.U(), v = owner.V();
+  const auto clear_of_owner = [&](Point p) {
+    const Point d = Sub(p, owner.c);
+    return std::hypot(std::max(0.0, std::abs(Dot(d, u)) - owner.hx), std::max(0.0, std::abs(Dot(d, v)) - owner.hy)) >= radius;
+  };
+  constexpr double kSample = 0.04;
+  const int k = static_cast<int>(std::ceil(radius / cells.cell));
+  long inside = 0, covered = 0;
+  for (const Ring& z : zone) {
+    if (z.empty()) continue;
+    Point lo = z[0], hi = z[0];
+    for (const Point& p : z) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    for (double y = lo.y + 0.5 * kSample; y < hi.y; y += kSample) {
+      for (double x = lo.x + 0.5 * kSample; x < hi.x; x += kSample) {
+        const Point p{x, y};
+        if (!PointInRing(p, z, 0)) continue;
+        ++inside;
+        const int ci = static_cast<int>(std::floor((x - cells.x0) / cells.cell)), cj = static_cast<int>(std::floor((y - cells.y0) / cells.cell));
+        bool hit = false;
+        for (int j = std::max(0, cj - k); j <= std::min(cells.ny - 1, cj + k) && !hit; j += 2) {
+          for (int i = std::max(0, ci - k); i <= std::min(cells.nx - 1, ci + k) && !hit; i += 2) {
+            if (!cells.reached[static_cast<long>(j) * cells.nx + i]) continue;
+            const Point q{cells.x0 + (i + 0.5) * cells.cell, cells.y0 + (j + 0.5) * cells.cell};
+            hit = Dist(p, q) <= radius && clear_of_owner(q);
+          }
+        }
+        covered += hit;
+      }
+    }
+  }
+  return inside ? static_cast<double>(covered) / inside : 0.0;
+}
+
+// Moves object `id` of `solver` to the nearest slot, at most `max_move` m away, where `good` holds for its
+// box and zone there and that keeps the room's hard constraints; the action's result, or nothing when no
+// slot does. `why` ends the action's reason ("... moved 0.40 m to a free slot WHY").
+std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id, const ReachFeedbackOptions& options, double max_move,
+                                       const std::string& cause,
+                                       const std::function<bool(const OrientedBox&, const std::vector<Ring>&)>& good,
+                                       const std::string& why) {
   const RoomSolution now = solver.Solution();
   int i = -1;
   for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
@@ -139,8 +182,9 @@ std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::s
   if (!zone) return std::nullopt;
   int tries = 0;
   for (const Slot& slot : FloorSlots(solver.Problem(), o, now.placements[i], options.slot_step)) {
+    if (slot.distance > max_move) break;
     const OrientedBox box = StandingBox(o, slot.pose);
-    if (!ZoneTouchable(cells, ZoneFootprints(box, zone->side, zone->depth * slot.pose.scale), box, options.reach.radius)) continue;
+    if (!good(box, ZoneFootprints(box, zone->side, zone->depth * slot.pose.scale))) continue;
     const std::optional<int> wall = slot.wall >= 0 ? std::optional<int>(slot.wall) : std::nullopt;
     if (!solver.Fits(id, slot.pose, wall)) {
       if (++tries >= options.slot_tries) break;
@@ -151,13 +195,22 @@ std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::s
     a.id = id;
     a.pose = slot.pose;
     a.wall = wall;
-    a.reason = "reachability: its zone cannot be reached where it stands; moved " + Fixed(slot.distance, 2) +
-               " m to a free slot a person can step up to";
+    a.reason = "reachability: " + cause + "; moved " + Fixed(slot.distance, 2) + " m to a free slot " + why;
     ActionResult r = solver.Apply(a);
     if (r.status != ActionStatus::kRefused) return r;
     if (++tries >= options.slot_tries) break;
   }
   return std::nullopt;
+}
+
+// Moves object `id` of `solver` to the nearest slot whose zone a person on `cells` touches and that keeps
+// the room's hard constraints; the action's result, or nothing when no slot does.
+std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::string& id, const ReachedCells& cells,
+                                                const ReachFeedbackOptions& options) {
+  return MoveToSlot(
+      solver, id, options, std::numeric_limits<double>::infinity(), "its zone cannot be reached where it stands",
+      [&](const OrientedBox& box, const std::vector<Ring>& zone) { return ZoneTouchable(cells, zone, box, options.reach.radius); },
+      "a person can step up to");
 }
 
 ActionResult Remove(RoomSolver& solver, const std::string& id, const std::string& why) {
@@ -192,6 +245,14 @@ bool ReachFeedbackOptions::IsValid(std::string* message) const {
   }
   if (!(slot_step >= 0.02 && slot_step <= 1.0)) {
     if (message) *message = "slot_step must be in [0.02, 1] m, is " + Fixed(slot_step, 3);
+    return false;
+  }
+  if (!(thin_share >= 0.0 && thin_share <= 1.0)) {
+    if (message) *message = "thin_share must be in [0, 1], is " + Fixed(thin_share, 3);
+    return false;
+  }
+  if (!(widen_move >= 0.0 && widen_move <= 20.0)) {
+    if (message) *message = "widen_move must be in [0, 20] m, is " + Fixed(widen_move, 3);
     return false;
   }
   if (slot_tries < 1 || slot_tries > 100000) {
@@ -405,6 +466,81 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     summary.reason = rounds_reason + "; last resort: " + std::to_string(summary.moved) + " moved, " + std::to_string(summary.removed) + " removed, " +
                       (left ? std::to_string(left) + " target(s) still unreachable" : "every room and zone reachable");
   }
+  // Widening: the owners of zones a person reaches only at their edge (share below thin_share: a wardrobe
+  // whose front a bed leaves a strip of) move to the nearest free slot within widen_move m where a person on
+  // the reached cells covers far more of the zone. A room where that leaves any of its zones less reached
+  // (or a target anywhere unreachable) goes back to how it was.
+  if (options.last_resort && options.thin_share > 0.0) {
+    FeedbackRound fr;
+    fr.stage = "widen";
+    std::map<std::string, std::shared_ptr<const RoomSolver::Snapshot>> saved;
+    std::map<std::string, std::vector<RoomAction>> acted;
+    for (const TargetResult& t : report.targets) {
+      if (t.kind != TargetKind::kZone || !t.reachable || t.share >= options.thin_share || t.level >= static_cast<int>(report.reached.size()))
+        continue;
+      const auto owner = seen.find(t.name);
+      if (owner == seen.end() || !owner->second.on_floor || !solvers.count(owner->second.room)) continue;
+      const std::string& room = owner->second.room;
+      RoomSolver& solver = *solvers.at(room);
+      const std::shared_ptr<const RoomSolver::Snapshot> before = solver.Save();
+      const ReachedCells& cells = report.reached[t.level];
+      const double want = std::max(options.thin_share, t.share + 0.3);
+      auto r = MoveToSlot(
+          solver, t.name, options, options.widen_move, "a person reaches " + Fixed(100.0 * t.share, 0) + " % of its zone where it stands",
+          [&](const OrientedBox& box, const std::vector<Ring>& zone) { return ZoneCover(cells, zone, box, options.reach.radius) >= want; },
+          "where they reach most of it");
+      if (!r) continue;
+      fr.unreachable.push_back(t.name);
+      saved.emplace(room, before);
+      acted[room].push_back({room, *r});
+    }
+    if (!acted.empty()) {
+      auto next = check();
+      if (!next.ok()) return Error{next.error()};
+      // Per room: its zones' shares before and after, and whether a target anywhere was lost.
+      std::map<std::string, std::pair<double, double>> shares;
+      bool lost_elsewhere = false;
+      std::set<std::string> worse;
+      for (size_t k = 0; k < report.targets.size() && k < next->targets.size(); ++k) {
+        const TargetResult &a = report.targets[k], &b = next->targets[k];
+        if (a.reachable && !b.reachable) {
+          if (acted.count(b.room)) worse.insert(b.room);
+          else lost_elsewhere = true;
+        }
+        if (a.kind != TargetKind::kZone || !acted.count(a.room)) continue;
+        shares[a.room].first += a.share;
+        shares[a.room].second += b.share;
+        if (b.share < a.share - 0.05) worse.insert(a.room);
+      }
+      for (const auto& [room, s] : shares)
+        if (s.second <= s.first + 1e-6) worse.insert(room);
+      if (lost_elsewhere)
+        for (const auto& [room, a] : acted) worse.insert(room);
+      for (const std::string& room : worse) solvers.at(room)->Restore(*saved.at(room));
+      for (const auto& [room, list] : acted) {
+        if (worse.count(room)) continue;
+        for (const RoomAction& a : list) {
+          fr.actions.push_back(a);
+          ++summary.widened;
+        }
+      }
+      if (worse.empty()) {
+        report = std::move(*next);
+      } else if (worse.size() < acted.size()) {
+        auto again = check();
+        if (!again.ok()) return Error{again.error()};
+        report = std::move(*again);
+      }
+      std::erase_if(fr.unreachable, [&](const std::string& id) {
+        const auto o = seen.find(id);
+        return o == seen.end() || worse.count(o->second.room) > 0;
+      });
+      if (!fr.actions.empty()) {
+        summary.rounds.push_back(std::move(fr));
+        summary.reason += "; " + std::to_string(summary.widened) + " moved where their zone is reached more widely";
+      }
+    }
+  }
   summary.last = std::move(report);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
@@ -434,7 +570,7 @@ nlohmann::ordered_json FeedbackSummary::ToJson() const {
   j["acc_before"] = std::round(first.Acc() * 1e4) / 1e4;
   j["rooms_reachable_before"] = first.rooms_reachable;
   j["zones_reachable_before"] = first.zones_reachable;
-  j["last_resort"] = {{"moved", moved}, {"removed", removed}};
+  j["last_resort"] = {{"moved", moved}, {"removed", removed}, {"widened", widened}};
   j["rounds"] = nlohmann::ordered_json::array();
   for (const FeedbackRound& r : rounds) {
     nlohmann::ordered_json jr;

@@ -32,6 +32,11 @@ struct ReachFeedbackOptions {
   // enters moves to the nearest free slot whose zone a reached cell touches; failing that (and for what
   // still blocks a room) it is removed, unless only a door leaf is in the way (the building's to mend).
   bool last_resort = true;
+  // Then the owners of zones reached only at their edge (a share below thin_share; 0: never) move to the
+  // nearest free slot within widen_move m where a person covers far more of the zone (at least thin_share
+  // and 0.3 more); a room whose zones end up less reached, or that cuts a way, goes back.
+  double thin_share = 0.5;       // [0, 1]
+  double widen_move = 1.5;       // m, [0, 20]
   double slot_step = 0.1;        // m between the slots tried (along walls, over the floor), [0.02, 1]
   int slot_tries = 1000;         // slots checked against the room's hard constraints per object, [1, 100000]
   bool IsValid(std::string* message) const;
@@ -54,7 +59,8 @@ struct RoomAction {
 
 struct FeedbackRound {
   // "walkways" (the rounds), "move" (the last resort's moves to slots with a reachable zone, and the
-  // removals of what blocks a room), "remove" (owners of zones still unreachable after the moves).
+  // removals of what blocks a room), "remove" (owners of zones still unreachable after the moves), "widen"
+  // (owners of thinly reached zones moved where more of the zone is reached; `unreachable` lists them).
   std::string stage = "walkways";
   std::vector<std::string> unreachable;  // targets unreachable when the round began
   std::vector<Walkway> walkways;
@@ -68,12 +74,13 @@ struct FeedbackSummary {
   ReachReport first;                // before any action
   int moved = 0;                    // the last resort: owners moved to a slot with a reachable zone
   int removed = 0;                  // the last resort: objects removed (with what stood on them)
+  int widened = 0;                  // owners moved where their thinly reached zone is reached more widely
   ReachReport last;                 // after the last round
   double seconds = 0.0;
 
   std::string BriefReport() const;
   // {"all_reachable", "reason", "rch_before", "acc_before", "rooms_reachable_before",
-  // "zones_reachable_before", "last_resort": {"moved", "removed"}, "rounds": [{"stage", "unreachable",
+  // "zones_reachable_before", "last_resort": {"moved", "removed", "widened"}, "rounds": [{"stage", "unreachable",
   // "walkways", "actions": [{"room", ...action result}]}]}
   nlohmann::ordered_json ToJson() const;
 };

@@ -1,6 +1,7 @@
 // The reachability loop's last resort (solver/reach_feedback.h): a zone the bare building leaves no floor
-// for is moved to a slot a person can step up to, and a small dining room whose table and chairs close the
-// way in ends with the room and every chair that is left reachable, checked through the reach API.
+// for is moved to a slot a person can step up to, a zone reached only at its edge is widened, and a small
+// dining room whose table and chairs close the way in ends with the room and every chair that is left
+// reachable, checked through the reach API.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -33,27 +34,35 @@ bool Removed(const RoomSolution& s, const std::string& id) {
   return std::find(s.summary.removed.begin(), s.summary.removed.end(), id) != s.summary.removed.end();
 }
 
-TEST_CASE("a zone planned where the bare building leaves no floor is moved where a person reaches it", "[reach]") {
-  Built built = BuildFixture("house_one_floor.json");
-  // A partition 5 cm thick, 0.3 m in front of the bedroom's north wall from its west wall to x = 1.6: the slot
-  // behind it is too narrow for the person (0.3 m < 0.4 m), so nothing in it is reached, furnished or not.
+// The bedroom with a partition 5 cm thick, 0.3 m in front of its north wall from its west wall to x = 1.6:
+// the slot behind it is too narrow for the person (0.3 m < 0.4 m), so nothing in it is reached, furnished
+// or not. The room holds one stool (0.2 m, a 0.3 m zone in front).
+struct PartitionedBedroom {
   const Ring partition = {{0.25, 8.40}, {1.6, 8.40}, {1.6, 8.45}, {0.25, 8.45}};
-  ReachObstacle wall;
-  wall.name = "partition";
-  wall.kind = ObstacleKind::kWall;
-  wall.level = 0;
-  wall.pieces = {partition};
-  wall.z0 = built.input.levels[0].floor_z - 0.05;
-  wall.z1 = built.input.levels[0].floor_z + 2.6;
-  built.input.obstacles.push_back(wall);
-
+  Built built = BuildFixture("house_one_floor.json");
   RoomProblem problem = WithFloor(kBedroomFloor);
-  problem.room = "bedroom_0/0";
-  problem.keep_outs.push_back({partition, problem.floor_z, problem.floor_z + 2.6, KeepOutKind::kOther, "partition"});
-  ProblemObject stool = BoxObject("stool-0", 0.2, 0.2, 0.45);
-  stool.zone = InteractionZone{"front", 0.3, {}};
-  problem.objects.push_back(stool);
-  RoomSolver solver(problem, {});
+  PartitionedBedroom() {
+    ReachObstacle wall;
+    wall.name = "partition";
+    wall.kind = ObstacleKind::kWall;
+    wall.level = 0;
+    wall.pieces = {partition};
+    wall.z0 = built.input.levels[0].floor_z - 0.05;
+    wall.z1 = built.input.levels[0].floor_z + 2.6;
+    built.input.obstacles.push_back(wall);
+    problem.room = "bedroom_0/0";
+    problem.keep_outs.push_back({partition, problem.floor_z, problem.floor_z + 2.6, KeepOutKind::kOther, "partition"});
+    ProblemObject stool = BoxObject("stool-0", 0.2, 0.2, 0.45);
+    stool.zone = InteractionZone{"front", 0.3, {}};
+    problem.objects.push_back(stool);
+  }
+};
+
+TEST_CASE("a zone planned where the bare building leaves no floor is moved where a person reaches it", "[reach]") {
+  const PartitionedBedroom room;
+  const Built& built = room.built;
+  const Ring& partition = room.partition;
+  RoomSolver solver(room.problem, {});
   REQUIRE(solver.Initialise().ok());
   solver.RunAgent();
   // In the slot, facing along it (+x): its zone lies 0.7 m inside the slot's mouth.
@@ -95,6 +104,53 @@ TEST_CASE("a zone planned where the bare building leaves no floor is moved where
     const auto json = summary->ToJson();
     CHECK(json["last_resort"]["moved"] == 1);
     CHECK(json["rounds"].back()["stage"] == "move");
+  }
+}
+
+TEST_CASE("a zone reached only at its edge is widened: its owner moves where a person covers most of it", "[reach]") {
+  const PartitionedBedroom room;
+  const Built& built = room.built;
+  RoomSolver solver(room.problem, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  // In the slot facing its mouth (+x): its zone, x 1.3-1.6, ends where the slot opens; a person standing
+  // outside covers only its last few centimetres.
+  const ActionResult put = Put(solver, "r/stool-0", 1.2, 8.6, std::numbers::pi / 2.0);
+  INFO(put.message);
+  REQUIRE(put.status == ActionStatus::kApplied);
+
+  SECTION("without widening the zone stays reached at its edge") {
+    ReachFeedbackOptions options;
+    options.thin_share = 0.0;
+    auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, options);
+    REQUIRE(summary.ok());
+    const TargetResult* zone = summary->last.Find("r/stool-0");
+    REQUIRE(zone);
+    CHECK(zone->reachable);
+    CHECK(zone->share < 0.3);
+    CHECK(summary->widened == 0);
+  }
+  SECTION("with it the stool moves out (within 1.5 m, not removed) and most of its zone is reached") {
+    auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
+    REQUIRE(summary.ok());
+    INFO(summary->BriefReport() << summary->last.BriefReport());
+    const TargetResult* before = summary->first.Find("r/stool-0");
+    REQUIRE(before);
+    CHECK(before->reachable);
+    CHECK(before->share < 0.3);
+    CHECK(summary->widened == 1);
+    CHECK(summary->moved == 0);
+    CHECK(summary->removed == 0);
+    const TargetResult* after = summary->last.Find("r/stool-0");
+    REQUIRE(after);
+    CHECK(after->share >= 0.5);
+    CHECK(summary->last.Acc() > summary->first.Acc());
+    const RoomSolution s = solver.Solution();
+    CHECK_FALSE(Removed(s, "r/stool-0"));
+    CHECK(std::hypot(s.placements[0].pose.x - 1.2, s.placements[0].pose.y - 8.6) <= 1.5 + 1e-9);
+    const auto json = summary->ToJson();
+    CHECK(json["last_resort"]["widened"] == 1);
+    CHECK(json["rounds"].back()["stage"] == "widen");
   }
 }
 
