@@ -287,7 +287,7 @@ Fact RoomFact(FactKind kind, const Layout& layout, int a, int b, const std::stri
 std::string TheRoom(const Layout& layout, const Analysis& an, int room, const Voice& v, bool always_level = false) {
   const Room& r = layout.rooms[room];
   std::string noun = "the " + Singular(r.category, v);
-  if (an.floors > 1 && (always_level || an.counts.at(r.category) > 1)) noun += " " + LevelPlace(r.level, an.floors, v);
+  if (an.floors > 1 && (always_level || an.counts.at(r.category) > 1)) noun.append(" ").append(LevelPlace(r.level, an.floors, v));
   return noun;
 }
 

@@ -34,7 +34,7 @@ bool HasWindow(const Layout& layout, int room) {
 
 std::string RoomToken(const Room& room) {
   std::string token = std::string(CategoryToken(room.category)) + std::to_string(room.level);
-  if (room.index > 0) token += "." + std::to_string(room.index);
+  if (room.index > 0) token.append(".").append(std::to_string(room.index));
   return token;
 }
 

@@ -75,7 +75,7 @@ std::string DataCard(const ExportSummary& s, const TrainerConfigInput& config) {
      << "answer of the val or test split was seen in training.\n\n"
      << "| split | file | layouts | samples |\n| --- | --- | ---: | ---: |\n";
   for (int i = 0; i < kSplitCount; ++i) {
-    md << "| " << kSplitNames[i] << " | " << (config.has_split[i] ? "`" + SplitFileName(i) + "`" : "(none)") << " | "
+    md << "| " << kSplitNames[i] << " | " << (config.has_split[i] ? std::string("`").append(SplitFileName(i)).append("`") : "(none)") << " | "
        << s.layouts_per_split[i] << " | " << s.samples_per_split[i] << " |\n";
   }
   md << "| total | | " << s.layouts << " | " << s.samples << " |\n\n";
