@@ -2,8 +2,9 @@
 // on three-floor villas of 15 rooms (the paper's standard villa: ~225 minutes each, ~15 a room). For each
 // request and seed: the wall time of the whole run and of its steps (plan, build, furnish, export, preview),
 // the rooms and objects, the time a room (wall: furnish / rooms; and the rooms' own thread CPU time), the
-// clean rooms (CR = FR = OBR = 0, CSR = 1). Offline: the procedural planner and procedural assets.
-//   villa_bench_generate [--seeds N] [--jobs J] [--library DIR]
+// clean rooms (CR = FR = OBR = 0, CSR = 1). Offline: the procedural planner and procedural assets; each room
+// reviewed by the offline critic as `villa generate` does by default (`--critic none`: the solver alone).
+//   villa_bench_generate [--seeds N] [--jobs J] [--library DIR] [--critic offline|none]
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include <unistd.h>
 
+#include "critic/critic.h"
 #include "generator/generate.h"
 #include "util/text_table.h"
 
@@ -36,14 +38,15 @@ const char* const kRequests[] = {
 
 int main(int argc, char** argv) {
   int seeds = 3, jobs = 0;
-  std::string library;
+  std::string library, critic = "offline";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seeds" && i + 1 < argc) seeds = std::atoi(argv[++i]);
     else if (a == "--jobs" && i + 1 < argc) jobs = std::atoi(argv[++i]);
     else if (a == "--library" && i + 1 < argc) library = argv[++i];
+    else if (a == "--critic" && i + 1 < argc && (std::string(argv[i + 1]) == "offline" || std::string(argv[i + 1]) == "none")) critic = argv[++i];
     else {
-      std::fprintf(stderr, "usage: villa_bench_generate [--seeds N] [--jobs J] [--library DIR]\n");
+      std::fprintf(stderr, "usage: villa_bench_generate [--seeds N] [--jobs J] [--library DIR] [--critic offline|none]\n");
       return 2;
     }
   }
@@ -61,6 +64,7 @@ int main(int argc, char** argv) {
       options.furnishing.jobs = jobs;
       options.furnishing.library = library;
       options.furnishing.procedural_only = library.empty();
+      if (critic == "offline") options.furnishing.critic = critic::MakeRoomCritic({});
       auto summary = GenerateVilla(kRequests[r], options);
       if (!summary.ok() || !summary->furnished) {
         std::fprintf(stderr, "request %zu seed %d: %s\n", r + 1, seed,
