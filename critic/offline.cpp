@@ -1715,11 +1715,11 @@ std::vector<std::vector<Step>> SatelliteMoves(const Room& room, int s, int t, co
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "with what stands around it");
 }
 
-// Both ends smaller: where the free-standing end (a desk chair) finds no free pose before the other end (a
-// desk against the wall of a narrow arm, 0.68 m deep, with 1.2 m of floor to the wall across) even at its
-// smallest scale, the other end shrinks to its smallest in place (its back kept to its wall, what stands on
-// it carried) and the first is seated before it, at its own scale or its smallest. Ranked like cluster
-// moves; the loop's real measure decides.
+// Both ends smaller, tried last (after the single moves at the smallest scale): where the edge's source
+// stands free on the floor (a desk chair), its target (a desk against the wall of a narrow arm, 0.68 m deep,
+// with 1.2 m of floor to the wall across) shrinks to its smallest in place (its back kept to its wall, one
+// standing free about its centre; what stands on it carried) and the source is seated before it, at its
+// own scale or its smallest. Ranked like cluster moves; the loop's real measure decides.
 std::vector<std::vector<Step>> ShrunkPairMoves(const Room& room, int s, int t, const scene::SemanticEdge& edge, const Unmet& now,
                                                const OfflineProposalOptions& options, const std::string& why) {
   std::vector<MultiMove> layouts;

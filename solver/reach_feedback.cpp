@@ -497,39 +497,60 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     if (!acted.empty()) {
       auto next = check();
       if (!next.ok()) return Error{next.error()};
-      // Per room: its zones' shares before and after, and whether a target anywhere was lost.
-      std::map<std::string, std::pair<double, double>> shares;
-      bool lost_elsewhere = false;
-      std::set<std::string> worse;
-      for (size_t k = 0; k < report.targets.size() && k < next->targets.size(); ++k) {
-        const TargetResult &a = report.targets[k], &b = next->targets[k];
-        if (a.reachable && !b.reachable) {
-          if (acted.count(b.room)) worse.insert(b.room);
-          else lost_elsewhere = true;
+      // The rooms where the widening made things worse: a zone less reached, the zones' shares not risen
+      // in all. A target lost anywhere (a way cut) sends every room back: which move cut it is not known.
+      const auto worse_rooms = [&](const ReachReport& after, bool* lost) {
+        std::map<std::string, const TargetResult*> was;
+        for (const TargetResult& t : report.targets) was[t.name] = &t;
+        std::map<std::string, std::pair<double, double>> shares;
+        std::set<std::string> worse;
+        *lost = false;
+        for (const TargetResult& t : after.targets) {
+          const auto w = was.find(t.name);
+          if (w == was.end()) continue;
+          const TargetResult& before = *w->second;
+          *lost = *lost || (before.reachable && !t.reachable);
+          if (t.kind != TargetKind::kZone || !acted.count(t.room)) continue;
+          shares[t.room].first += before.share;
+          shares[t.room].second += t.share;
+          if (t.share < before.share - 0.05) worse.insert(t.room);
         }
-        if (a.kind != TargetKind::kZone || !acted.count(a.room)) continue;
-        shares[a.room].first += a.share;
-        shares[a.room].second += b.share;
-        if (b.share < a.share - 0.05) worse.insert(a.room);
-      }
-      for (const auto& [room, s] : shares)
-        if (s.second <= s.first + 1e-6) worse.insert(room);
-      if (lost_elsewhere)
-        for (const auto& [room, a] : acted) worse.insert(room);
-      for (const std::string& room : worse) solvers.at(room)->Restore(*saved.at(room));
-      for (const auto& [room, list] : acted) {
-        if (worse.count(room)) continue;
-        for (const RoomAction& a : list) {
-          fr.actions.push_back(a);
-          ++summary.widened;
+        for (const auto& [room, sum] : shares)
+          if (sum.second <= sum.first + 1e-6) worse.insert(room);
+        return worse;
+      };
+      bool lost = false;
+      std::set<std::string> worse = worse_rooms(*next, &lost);
+      const auto restore_all = [&] {
+        for (const auto& [room, list] : acted) {
+          solvers.at(room)->Restore(*saved.at(room));
+          worse.insert(room);
         }
-      }
-      if (worse.empty()) {
+      };
+      if (lost) {
+        restore_all();
+      } else if (worse.empty()) {
         report = std::move(*next);
       } else if (worse.size() < acted.size()) {
+        for (const std::string& room : worse) solvers.at(room)->Restore(*saved.at(room));
+        // What is kept is judged again on its own: if it no longer stands, nothing is kept.
         auto again = check();
         if (!again.ok()) return Error{again.error()};
-        report = std::move(*again);
+        bool lost_again = false;
+        const std::set<std::string> still = worse_rooms(*again, &lost_again);
+        const bool holds = !lost_again && std::all_of(still.begin(), still.end(), [&](const std::string& r) { return worse.count(r) > 0; });
+        if (holds) report = std::move(*again);
+        else restore_all();
+      } else {
+        restore_all();
+      }
+      // When every room went back, the solvers are as `report` saw them (a snapshot is an exact copy).
+      for (const auto& [room, list] : acted) {
+        if (worse.count(room)) continue;
+        for (const RoomAction& act : list) {
+          fr.actions.push_back(act);
+          ++summary.widened;
+        }
       }
       std::erase_if(fr.unreachable, [&](const std::string& id) {
         const auto o = seen.find(id);
@@ -537,7 +558,12 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
       });
       if (!fr.actions.empty()) {
         summary.rounds.push_back(std::move(fr));
-        summary.reason += "; " + std::to_string(summary.widened) + " moved where their zone is reached more widely";
+        int left = 0;
+        for (const TargetResult& t : report.targets) left += !t.reachable;
+        const bool was_all = summary.all_reachable;
+        summary.all_reachable = left == 0;
+        summary.reason += "; " + std::to_string(summary.widened) + " moved where their zone is reached more widely" +
+                          (left ? ", " + std::to_string(left) + " target(s) still unreachable" : was_all ? "" : ", every room and zone reachable");
       }
     }
   }
