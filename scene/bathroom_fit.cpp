@@ -32,14 +32,6 @@ Ring RectOf(const Frame& f, double t0, double t1, double s0, double s1) {
   return {at(t0, s0), at(t1, s0), at(t1, s1), at(t0, s1)};
 }
 
-double OverlapArea(const Ring& subject, const Ring& convex) {
-  // Bounding boxes apart: no clipping needed (most pairs of a search).
-  const Box2 a = BoundingBox(subject), b = BoundingBox(convex);
-  if (a.max_x <= b.min_x || b.max_x <= a.min_x || a.max_y <= b.min_y || b.max_y <= a.min_y) return 0.0;
-  const Ring clipped = geo::ClipConvex(subject, convex);
-  return clipped.size() < 3 ? 0.0 : std::abs(SignedArea(clipped));
-}
-
 struct Placed {
   int wall = -1;
   double t0 = 0.0, t1 = 0.0;
@@ -80,7 +72,7 @@ class Search {
  private:
   bool OnFloor(const Ring& rect) const {
     double inside = 0.0;
-    for (const Ring& ring : room_.free_floor) inside += OverlapArea(ring, rect);
+    for (const Ring& ring : room_.free_floor) inside += IntersectionArea(ring, rect);
     return inside >= std::abs(SignedArea(rect)) - kAreaSlack;
   }
 
@@ -112,14 +104,14 @@ class Search {
     p.z1 = room_.floor_z + f.height;
     if (!OnFloor(p.body) || (!p.zone.empty() && !OnFloor(p.zone))) return false;
     for (const FitKeepOut& ko : room_.keep_outs)
-      if (std::min(ko.z_max, p.z1) - std::max(ko.z_min, p.z0) > 0.0 && OverlapArea(ko.polygon, p.body) > kAreaSlack)
+      if (std::min(ko.z_max, p.z1) - std::max(ko.z_min, p.z0) > 0.0 && IntersectionArea(ko.polygon, p.body) > kAreaSlack)
         return false;
     for (size_t j = 0; j < placed_.size(); ++j) {
       const Placed& q = placed_[j];
       if (q.wall < 0) continue;
-      if (OverlapArea(q.body, p.body) > kAreaSlack) return false;
-      if (!q.zone.empty() && OverlapArea(q.zone, p.body) > kAreaSlack) return false;
-      if (!p.zone.empty() && OverlapArea(q.body, p.zone) > kAreaSlack) return false;
+      if (IntersectionArea(q.body, p.body) > kAreaSlack) return false;
+      if (!q.zone.empty() && IntersectionArea(q.zone, p.body) > kAreaSlack) return false;
+      if (!p.zone.empty() && IntersectionArea(q.body, p.zone) > kAreaSlack) return false;
     }
     *out = std::move(p);
     return true;
