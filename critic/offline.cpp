@@ -762,6 +762,27 @@ std::vector<std::pair<int, int>> HungOverRun(const Room& room, const std::set<in
   return hung;
 }
 
+// How far (m) box `from` slides along the unit direction u, in steps of 2 cm from `first` to `last` steps
+// each length tried to both sides (the nearer first), within [lo, hi], before it stays out of the room's
+// keep-outs and 5 mm clear of every box of `boxes` but `self` that it meets in height; nullopt if never.
+std::optional<double> SlideClear(const Room& room, const ObjectBox& from, Point u, int first, int last, double lo, double hi,
+                                 const std::vector<ObjectBox>& boxes, int self) {
+  for (int step = first; step <= last; ++step) {
+    for (double sign : {-1.0, 1.0}) {
+      const double dx = sign * 0.02 * step;
+      if (dx < lo || dx > hi || (step == 0 && sign > 0)) continue;
+      ObjectBox there = from;
+      there.c = geo::Add(from.c, geo::Scale(u, dx));
+      if (InKeepOut(room, there)) continue;
+      bool clear = true;
+      for (size_t o = 0; o < boxes.size() && clear; ++o)
+        clear = static_cast<int>(o) == self || HeightOverlap(there, boxes[o]) <= 0.0 || PlanGap(there, boxes[o]) >= 0.005;
+      if (clear) return dx;
+    }
+  }
+  return std::nullopt;
+}
+
 // A place for child `ch` of member k on another surface of k (a shelf inside a counter): the surface index and
 // the place in the member's frame (m along its width and depth). `top` is the member's box where it goes,
 // `boxes` its children's boxes there (the one at `self` is the child's); none clears a keep-out and every
@@ -786,22 +807,14 @@ std::optional<ShelfPlace> OnLowerShelf(const Room& room, int k, int ch, const Ob
     const double y = 0.5 * (extent.min_y + extent.max_y) * scale;
     if (x1 < x0 || (extent.max_y - extent.min_y) * scale < 2.0 * hy + 0.02) continue;
     const double mid = 0.5 * (x0 + x1);
-    for (int step = 0; step <= 100; ++step) {
-      for (double sign : {-1.0, 1.0}) {
-        const double x = mid + sign * 0.02 * step;
-        if (x < x0 || x > x1 || (step == 0 && sign > 0)) continue;
-        ObjectBox there = at;
-        there.c = geo::Add(geo::Add(top.c, geo::Scale(top.U(), x)), geo::Scale(top.V(), y));
-        there.z0 = top.z0 + surface.z * scale;
-        there.z1 = there.z0 + height;
-        if (InKeepOut(room, there)) continue;
-        bool clear = true;
-        for (size_t o = 0; o < boxes.size() && clear; ++o)
-          clear = static_cast<int>(o) == self || HeightOverlap(there, boxes[o]) <= 0.0 || PlanGap(there, boxes[o]) >= 0.005;
-        if (!clear) continue;
-        boxes[self] = there;
-        return ShelfPlace{static_cast<int>(j), x, y};
-      }
+    ObjectBox there = at;  // at the shelf's middle, then slid along it
+    there.c = geo::Add(geo::Add(top.c, geo::Scale(top.U(), mid)), geo::Scale(top.V(), y));
+    there.z0 = top.z0 + surface.z * scale;
+    there.z1 = there.z0 + height;
+    if (const std::optional<double> dx = SlideClear(room, there, top.U(), 0, 100, x0 - mid, x1 - mid, boxes, self)) {
+      there.c = geo::Add(there.c, geo::Scale(top.U(), *dx));
+      boxes[self] = there;
+      return ShelfPlace{static_cast<int>(j), mid + *dx, y};
     }
   }
   return std::nullopt;
@@ -833,25 +846,9 @@ std::optional<std::vector<std::pair<int, Candidate>>> ShiftsOffKeepOuts(const Ro
       if (!room.children[ch].empty() || room.solution.objects[ch].relation != solver::Relation::kOnTop) return std::nullopt;
       const ObjectBox at = boxes[s];
       const double half = HalfAlong(at.hx, at.hy, at.yaw - top.yaw, {1.0, 0.0});
-      const double local = geo::Dot(geo::Sub(at.c, top.c), u);
-      std::optional<double> best;
-      for (int step = 1; step <= 200 && !best; ++step) {
-        for (double sign : {-1.0, 1.0}) {
-          const double dx = sign * 0.02 * step;
-          if (std::abs(local + dx) + half > top.hx - 0.01) continue;
-          ObjectBox there = at;
-          there.c = geo::Add(at.c, geo::Scale(u, dx));
-          if (InKeepOut(room, there)) continue;
-          bool clear = true;
-          for (size_t o = 0; o < boxes.size() && clear; ++o)
-            clear = static_cast<int>(o) == s || HeightOverlap(there, boxes[o]) <= 0.0 || PlanGap(there, boxes[o]) >= 0.005;
-          if (clear) {
-            best = dx;
-            boxes[s] = there;
-            break;
-          }
-        }
-      }
+      const double local = geo::Dot(geo::Sub(at.c, top.c), u), room_on_top = top.hx - 0.01 - half;
+      const std::optional<double> best = SlideClear(room, at, u, 1, 200, -room_on_top - local, room_on_top - local, boxes, s);
+      if (best) boxes[s].c = geo::Add(at.c, geo::Scale(u, *best));
       const ObjectBox member_now = BoxOf(room.solution.objects[k], room.solution.placements[k]);
       const solver::ObjectPlacement& now = room.solution.placements[ch];
       Candidate shift;
