@@ -608,32 +608,14 @@ std::vector<int> RunThrough(const Room& room, int m) {
 struct MultiMove {
   Unmet unmet;
   double moved = 0.0;
-  std::vector<std::pair<int, Candidate>> poses;
-  std::vector<int> ring;
+  std::vector<std::pair<int, Candidate>> poses{};
+  std::vector<int> ring{};
   int displaced = 0;  // of the ring, those that were in the way (not the group's own): fewer is better
+  // Moved after `poses`, in any order, with their own reason (a rug keeping its place under a moving bed).
+  std::vector<std::pair<int, Candidate>> after{};
+  std::string after_how{};
+  bool unordered = false;  // `poses` still to be put in an order (MoveOrder) when chosen; none found: passed over
 };
-
-// The best `keep` of them (fewest unmet, then least moved) as step sequences.
-std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<MultiMove> moves, int keep, const std::string& why,
-                                              const std::string& how) {
-  std::stable_sort(moves.begin(), moves.end(), [](const MultiMove& a, const MultiMove& b) {
-    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
-    if (a.displaced != b.displaced) return a.displaced < b.displaced;
-    return a.moved < b.moved;
-  });
-  std::vector<std::vector<Step>> out;
-  for (const MultiMove& l : moves) {
-    if (static_cast<int>(out.size()) >= keep) break;
-    std::vector<Step> steps;
-    for (const auto& [k, c] : l.poses) {
-      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (" + how + ")"));
-      steps.insert(steps.end(), more.begin(), more.end());
-    }
-    for (int k : l.ring) steps.push_back(Suggested(room.solution.objects[k].id, why));
-    out.push_back(std::move(steps));
-  }
-  return out;
-}
 
 // An order of moves taking each object of `poses` to its pose, where none enters the place of one still to
 // move (height ranges counted: an upper cabinet hangs over a counter). Where every remaining one waits for
@@ -730,6 +712,37 @@ bool MoveOrder(const Room& room, const std::vector<std::pair<int, Candidate>>& p
     order->push_back({k, *spot});
   }
   return false;
+}
+
+// The best `keep` of them (fewest unmet, then fewest displaced, then least moved) as step sequences.
+std::vector<std::vector<Step>> BestMultiMoves(const Room& room, std::vector<MultiMove> moves, int keep, const std::string& why,
+                                              const std::string& how, double clearance = 0.0) {
+  std::stable_sort(moves.begin(), moves.end(), [](const MultiMove& a, const MultiMove& b) {
+    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
+    if (a.displaced != b.displaced) return a.displaced < b.displaced;
+    return a.moved < b.moved;
+  });
+  std::vector<std::vector<Step>> out;
+  for (MultiMove& l : moves) {
+    if (static_cast<int>(out.size()) >= keep) break;
+    if (l.unordered) {
+      std::vector<std::pair<int, Candidate>> order;
+      if (!MoveOrder(room, l.poses, clearance, &order)) continue;
+      l.poses = std::move(order);
+    }
+    std::vector<Step> steps;
+    for (const auto& [k, c] : l.poses) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (" + how + ")"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (const auto& [k, c] : l.after) {
+      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (" + l.after_how + ")"));
+      steps.insert(steps.end(), more.begin(), more.end());
+    }
+    for (int k : l.ring) steps.push_back(Suggested(room.solution.objects[k].id, why));
+    out.push_back(std::move(steps));
+  }
+  return out;
 }
 
 // A unit of a kitchen's run: a counter, the fridge, the cooker, the dishwasher.
@@ -1624,8 +1637,11 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
       if (!(u < (made_way.empty() && seated.empty() ? before : UnmetBesides(room, room.solution.placements, ring)))) continue;
       std::vector<std::pair<int, Candidate>> order;
       if (!MoveOrder(room, poses, options.clearance, &order)) continue;  // (what it parks on the way counts as moves)
-      layouts.push_back({u, std::hypot(mo.dx, mo.dy) + std::abs(mo.turn), std::move(order), std::move(ring),
-                         static_cast<int>(made_way.size())});
+      layouts.push_back({.unmet = u,
+                         .moved = std::hypot(mo.dx, mo.dy) + std::abs(mo.turn),
+                         .poses = std::move(order),
+                         .ring = std::move(ring),
+                         .displaced = static_cast<int>(made_way.size())});
     }
   }
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "moved with " + room.solution.objects[hub].id);
@@ -1706,7 +1722,8 @@ std::vector<std::vector<Step>> SatelliteMoves(const Room& room, int s, int t, co
       if (!(u < was->second)) continue;
       std::vector<std::pair<int, Candidate>> order;
       if (!MoveOrder(room, poses, options.clearance, &order)) continue;
-      layouts.push_back({u, std::hypot(c.pose.x - at.x, c.pose.y - at.y) + std::abs(turn), std::move(order), std::move(ring), 0});
+      layouts.push_back(
+          {.unmet = u, .moved = std::hypot(c.pose.x - at.x, c.pose.y - at.y) + std::abs(turn), .poses = std::move(order), .ring = std::move(ring)});
     }
   }
   return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "with what stands around it");
@@ -1762,7 +1779,7 @@ std::vector<std::vector<Step>> ShrunkPairMoves(const Room& room, int s, int t, c
       }
       const Unmet u = UnmetBesides(room, placements, {});
       if (!(u < now)) continue;
-      layouts.push_back({u, std::hypot(c.pose.x - at.x, c.pose.y - at.y) + (at.scale - scale), std::move(poses), {}, 0});
+      layouts.push_back({.unmet = u, .moved = std::hypot(c.pose.x - at.x, c.pose.y - at.y) + (at.scale - scale), .poses = std::move(poses)});
     }
     if (!layouts.empty() || so.scale_min >= at.scale - 1e-9) break;
   }
@@ -1834,15 +1851,10 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
     if (g.sides[i].second == 0) either.push_back(i);
   // Either-side members past the first two go right when a fixed member takes the left, else left.
   const bool taken_left = std::any_of(g.sides.begin(), g.sides.end(), [](const auto& p) { return p.second == 1; });
-  struct Layout {
-    Unmet unmet;
-    int shrink = 0;  // the scales: 0 as they are, 1 the bed at its smallest, 2 everything that can be
-    double moved = 0.0;
-    std::vector<std::pair<int, Candidate>> poses;
-    std::vector<std::pair<int, Candidate>> carried;  // rugs moved with the bed, last
-    std::vector<int> replace;  // others to re-place afterwards
-  };
-  std::vector<Layout> layouts;
+  // Layouts as multi-moves: `displaced` holds the shrink (0 the scales as they are, 1 the bed at its
+  // smallest, 2 everything that can be), `after` the rugs moved with the bed, `ring` what the solver
+  // re-places after (a smaller bed's pillows, others whose edges the layout leaves unmet).
+  std::vector<MultiMove> layouts;
   // What carries things (a nightstand with its lamp and books) keeps its scale: smaller, its load would
   // no longer fit on it. The bed's pillows fit a smaller bed.
   const auto scale_of = [&](int k, int shrink) {
@@ -1932,45 +1944,28 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
           const RoomRelations r = MeasureRelations(room.solution.objects, placements, room.graph);
           const Unmet u = UnmetOf(r);
           if (!(u < now)) continue;
-          Layout l{u, shrink, moved, std::move(poses), std::move(carried), {}};
+          MultiMove l{.unmet = u,
+                      .moved = moved,
+                      .poses = std::move(poses),
+                      .displaced = shrink,
+                      .after = std::move(carried),
+                      .after_how = "the rug moves with the bed",
+                      .unordered = true};
+          // A smaller bed brings its pillows closer together: the solver lays them out again on it.
+          if (shrink > 0) l.ring = room.Descendants(g.bed);
           for (int k : g.others) {
-            if (std::any_of(l.carried.begin(), l.carried.end(), [&](const auto& p) { return p.first == k; })) continue;
+            if (std::any_of(l.after.begin(), l.after.end(), [&](const auto& p) { return p.first == k; })) continue;
             const std::string& id = room.solution.objects[k].id;
             const bool unmet = std::any_of(r.edges.begin(), r.edges.end(),
                                            [&](const EdgeCheck& e) { return !e.satisfied && (e.edge.source == id || e.edge.target == id); });
-            if (unmet) l.replace.push_back(k);
+            if (unmet) l.ring.push_back(k);
           }
           layouts.push_back(std::move(l));
         }
       }
     }
   }
-  std::stable_sort(layouts.begin(), layouts.end(), [](const Layout& a, const Layout& b) {
-    if (a.unmet < b.unmet || b.unmet < a.unmet) return a.unmet < b.unmet;
-    if (a.shrink != b.shrink) return a.shrink < b.shrink;
-    return a.moved < b.moved;
-  });
-  std::vector<std::vector<Step>> out;
-  for (const Layout& l : layouts) {
-    if (static_cast<int>(out.size()) >= options.alternatives) break;
-    std::vector<std::pair<int, Candidate>> order;
-    if (!MoveOrder(room, l.poses, options.clearance, &order)) continue;
-    std::vector<Step> steps;
-    for (const auto& [k, c] : order) {
-      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the bed and its group laid out again)"));
-      steps.insert(steps.end(), more.begin(), more.end());
-    }
-    for (const auto& [k, c] : l.carried) {
-      const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (the rug moves with the bed)"));
-      steps.insert(steps.end(), more.begin(), more.end());
-    }
-    // A smaller bed brings its pillows closer together: the solver lays them out again on it.
-    if (l.shrink > 0)
-      for (int k : room.Descendants(g.bed)) steps.push_back(Suggested(room.solution.objects[k].id, why));
-    for (int k : l.replace) steps.push_back(Suggested(room.solution.objects[k].id, why));
-    out.push_back(std::move(steps));
-  }
-  return out;
+  return BestMultiMoves(room, std::move(layouts), options.alternatives, why, "the bed and its group laid out again", options.clearance);
 }
 
 // The group move for an edge single moves could not mend: its hub (the end with more relations to other
