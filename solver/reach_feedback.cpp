@@ -9,6 +9,7 @@
 
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
+#include "solver/energy.h"
 #include "solver/free_space.h"
 
 namespace villa::solver {
@@ -170,7 +171,7 @@ double ZoneCover(const ReachedCells& cells, const std::vector<Ring>& zone, const
 std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id, const ReachFeedbackOptions& options, double max_move,
                                        const std::string& cause,
                                        const std::function<bool(const OrientedBox&, const std::vector<Ring>&)>& good,
-                                       const std::string& why) {
+                                       const std::string& why, const std::function<bool()>& keep = nullptr) {
   const RoomSolution now = solver.Solution();
   int i = -1;
   for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
@@ -196,8 +197,12 @@ std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id
     a.pose = slot.pose;
     a.wall = wall;
     a.reason = "reachability: " + cause + "; moved " + Fixed(slot.distance, 2) + " m to a free slot " + why;
+    const std::shared_ptr<const RoomSolver::Snapshot> undo = keep ? solver.Save() : nullptr;
     ActionResult r = solver.Apply(a);
-    if (r.status != ActionStatus::kRefused) return r;
+    if (r.status != ActionStatus::kRefused) {
+      if (!keep || keep()) return r;
+      solver.Restore(*undo);  // the move costs what `keep` guards: the next slot
+    }
     if (++tries >= options.slot_tries) break;
   }
   return std::nullopt;
@@ -485,10 +490,31 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
       const std::shared_ptr<const RoomSolver::Snapshot> before = solver.Save();
       const ReachedCells& cells = report.reached[t.level];
       const double want = std::max(options.thin_share, t.share + 0.3);
+      // The owner's relations (a nightstand beside its bed) are worth more than a wider zone: a slot where
+      // more of them are violated (the solver's semantic proxy) is passed over.
+      const auto violated = [&] {
+        const RoomSolution now = solver.Solution();
+        RoomProblem placed = solver.Problem();  // the objects as they stand (placed ones), their edges
+        placed.objects.clear();
+        std::vector<ObjectPlacement> at;
+        std::set<std::string> ids;
+        for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
+          if (!now.placements[k].placed) continue;
+          placed.objects.push_back(now.objects[k]);
+          at.push_back(now.placements[k]);
+          ids.insert(now.objects[k].id);
+        }
+        placed.edges.clear();
+        for (const SemanticEdge& edge : now.edges)
+          if ((edge.source == t.name || edge.target == t.name) && ids.count(edge.source) && ids.count(edge.target)) placed.edges.push_back(edge);
+        const EnergyTerms e = ArrangementEnergy(placed, at);
+        return static_cast<int>(std::count_if(e.edge_violation.begin(), e.edge_violation.end(), [](double v) { return v > 1e-6; }));
+      };
+      const int violated_before = violated();
       auto r = MoveToSlot(
           solver, t.name, options, options.widen_move, "a person reaches " + Fixed(100.0 * t.share, 0) + " % of its zone where it stands",
           [&](const OrientedBox& box, const std::vector<Ring>& zone) { return ZoneCover(cells, zone, box, options.reach.radius) >= want; },
-          "where they reach most of it");
+          "where they reach most of it, its relations kept", [&] { return violated() <= violated_before; });
       if (!r) continue;
       fr.unreachable.push_back(t.name);
       saved.emplace(room, before);

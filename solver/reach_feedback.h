@@ -34,9 +34,10 @@ struct ReachFeedbackOptions {
   bool last_resort = true;
   // Then the owners of zones reached only at their edge (a share below thin_share; 0: never) move to the
   // nearest free slot within widen_move m where a person covers far more of the zone (at least thin_share
-  // and 0.3 more); a room whose zones end up less reached, or that cuts a way, goes back.
+  // and 0.3 more) and no more of the owner's relations are violated (the solver's semantic proxy); a room
+  // whose zones end up less reached, or that cuts a way, goes back.
   double thin_share = 0.5;       // [0, 1]
-  double widen_move = 1.5;       // m, [0, 20]
+  double widen_move = 3.0;       // m, [0, 20]
   double slot_step = 0.1;        // m between the slots tried (along walls, over the floor), [0.02, 1]
   int slot_tries = 1000;         // slots checked against the room's hard constraints per object, [1, 100000]
   bool IsValid(std::string* message) const;

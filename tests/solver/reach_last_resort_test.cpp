@@ -130,7 +130,7 @@ TEST_CASE("a zone reached only at its edge is widened: its owner moves where a p
     CHECK(zone->share < 0.3);
     CHECK(summary->widened == 0);
   }
-  SECTION("with it the stool moves out (within 1.5 m, not removed) and most of its zone is reached") {
+  SECTION("with it the stool moves out (within widen_move, not removed) and most of its zone is reached") {
     auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
     REQUIRE(summary.ok());
     INFO(summary->BriefReport() << summary->last.BriefReport());
@@ -147,7 +147,7 @@ TEST_CASE("a zone reached only at its edge is widened: its owner moves where a p
     CHECK(summary->last.Acc() > summary->first.Acc());
     const RoomSolution s = solver.Solution();
     CHECK_FALSE(Removed(s, "r/stool-0"));
-    CHECK(std::hypot(s.placements[0].pose.x - 1.2, s.placements[0].pose.y - 8.6) <= 1.5 + 1e-9);
+    CHECK(std::hypot(s.placements[0].pose.x - 1.2, s.placements[0].pose.y - 8.6) <= ReachFeedbackOptions{}.widen_move + 1e-9);
     const auto json = summary->ToJson();
     CHECK(json["last_resort"]["widened"] == 1);
     CHECK(json["rounds"].back()["stage"] == "widen");
