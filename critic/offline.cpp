@@ -155,6 +155,15 @@ bool Free(const Room& room, int i, const solver::Pose& pose, double clearance, c
   return blockers && blockers->empty();
 }
 
+// m along wall w from its start to the foot of point p.
+double AlongWall(const Room& room, int w, Point p) {
+  const solver::WallEdge& wall = room.problem.walls[w];
+  return geo::Dot(geo::Sub(p, wall.a), geo::Unit(geo::Sub(wall.b, wall.a)));
+}
+
+// The yaw at which something standing at `from` faces `to` (yaw 0 faces -y, 90 degrees +x).
+double FacingYaw(Point from, Point to) { return std::atan2(to.x - from.x, -(to.y - from.y)); }
+
 // Poses along a wall for a wall-bound object: its back at its gap from the wall, facing the room, at
 // `t` m along the wall from its start; none where it would overhang the wall's ends or cover an opening.
 std::optional<Candidate> OnWallAt(const Room& room, int i, int w, double t, double scale) {
@@ -245,7 +254,7 @@ std::vector<Candidate> CandidatesFor(const Room& room, int m, int other, const s
   }
   if (OnObject(o)) return out;  // small things stay on their surfaces: their parent moves instead
   // Turned in place: facing the other object exactly, or along its axes.
-  const double face = std::atan2(ob.c.x - now.pose.x, -(ob.c.y - now.pose.y));
+  const double face = FacingYaw({now.pose.x, now.pose.y}, ob.c);
   std::vector<double> yaws{now.pose.yaw, face, face + std::numbers::pi};
   for (int k = 0; k < 4; ++k) yaws.push_back(ob.yaw + k * kHalfPi);
   // Turned a little either way, and half way to facing: a second face_to of the object may still hold.
@@ -466,9 +475,7 @@ std::vector<Candidate> StepsAside(const Room& room, int k, const ObjectBox& away
   if (WallBound(o)) {
     const int w = now.wall;
     if (w < 0) return out;
-    const solver::WallEdge& wall = room.problem.walls[w];
-    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
-    const double t = geo::Dot(geo::Sub({now.pose.x, now.pose.y}, wall.a), d);
+    const double t = AlongWall(room, w, {now.pose.x, now.pose.y});
     for (double step : steps)
       for (double sign : {-1.0, 1.0})
         if (auto c = OnWallAt(room, k, w, t + sign * step, now.pose.scale)) out.push_back(*c);
@@ -1229,7 +1236,7 @@ std::optional<Candidate> HungBehind(const Room& room, int k, const solver::Pose&
     if (geo::Dot(n, facing) < 0.995) continue;
     const double behind = geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), n);  // m from the wall to the target's centre
     if (behind <= 0.0 || behind >= nearest) continue;
-    if (auto c = OnWallAt(room, k, static_cast<int>(w), geo::Dot(geo::Sub({pose.x, pose.y}, wall.a), d), room.solution.placements[k].pose.scale)) {
+    if (auto c = OnWallAt(room, k, static_cast<int>(w), AlongWall(room, static_cast<int>(w), {pose.x, pose.y}), room.solution.placements[k].pose.scale)) {
       best = c;
       nearest = behind;
     }
@@ -1393,7 +1400,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
   } else {
     axes = {{std::cos(at.yaw), std::sin(at.yaw)}, {-std::sin(at.yaw), std::cos(at.yaw)}};
     const ObjectBox ob = BoxOf(room.solution.objects[other], room.solution.placements[other]);
-    const double face = std::atan2(ob.c.x - at.x, -(ob.c.y - at.y));
+    const double face = FacingYaw({at.x, at.y}, ob.c);
     for (double turn : {solver::WrapAngle(face - at.yaw), kHalfPi, -kHalfPi, std::numbers::pi})
       if (std::abs(turn) > 0.01) motions.push_back({0.0, 0.0, turn, std::nullopt, std::nullopt});
   }
@@ -1535,9 +1542,7 @@ std::vector<std::vector<Step>> ClusterMoves(const Room& room, int s, int t, cons
             ok = false;
             break;
           }
-          const solver::WallEdge& wall = room.problem.walls[pl.wall];
-          const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
-          auto on = OnWallAt(room, k, pl.wall, geo::Dot(geo::Sub({cand.pose.x, cand.pose.y}, wall.a), d), pl.pose.scale);
+          auto on = OnWallAt(room, k, pl.wall, AlongWall(room, pl.wall, {cand.pose.x, cand.pose.y}), pl.pose.scale);
           if (!on) {
             ok = false;
             break;
@@ -1755,9 +1760,7 @@ std::vector<std::vector<Step>> ShrunkPairMoves(const Room& room, int s, int t, c
   shrunk.pose = hp.pose;
   shrunk.pose.scale = ho.scale_min;
   if (ho.relation == solver::Relation::kAgainstWall && hp.wall >= 0) {
-    const solver::WallEdge& wall = room.problem.walls[hp.wall];
-    const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
-    const std::optional<Candidate> c = OnWallAt(room, hub, hp.wall, geo::Dot(geo::Sub({hp.pose.x, hp.pose.y}, wall.a), d), ho.scale_min);
+    const std::optional<Candidate> c = OnWallAt(room, hub, hp.wall, AlongWall(room, hp.wall, {hp.pose.x, hp.pose.y}), ho.scale_min);
     if (!c) return {};
     shrunk = *c;
   }
@@ -1773,7 +1776,7 @@ std::vector<std::vector<Step>> ShrunkPairMoves(const Room& room, int s, int t, c
       for (int k : facers) {
         Candidate turned;
         turned.pose = placements[k].pose;
-        turned.pose.yaw = std::atan2(c.pose.x - turned.pose.x, -(c.pose.y - turned.pose.y));
+        turned.pose.yaw = FacingYaw({turned.pose.x, turned.pose.y}, {c.pose.x, c.pose.y});
         placements = room.Moved(placements, k, turned.pose, -1);
         poses.push_back({k, turned});
       }

@@ -148,13 +148,7 @@ EnergyTerms StateEnergy(const RoomState& st) {
     const int a = st.Find(edge.source), b = st.Find(edge.target);
     double v = 0.0;
     if (a >= 0 && b >= 0) {
-      Blocks pa = BlocksOf(st.placements[a]), pb = BlocksOf(st.placements[b]);
-      bool pose_only = false;
-      std::unique_ptr<ceres::CostFunction> cost(
-          SemanticCost(edge, ShapeOf(st.objects[a]), ShapeOf(st.objects[b]), 1.0, &pose_only));
-      std::vector<double*> blocks = pose_only ? std::vector<double*>{pa.p, pb.p} : std::vector<double*>{pa.p, pa.s, pb.p, pb.s};
-      cost->Evaluate(blocks.data(), &v, nullptr);
-      v = std::abs(v);
+      v = EdgeViolation(edge, st.objects[a], st.placements[a], st.objects[b], st.placements[b]);
       if (v > 1e-9) {
         e.object_semantic[a] += v;
         e.findings.push_back(Format("relation %s -> %s: %.4f", edge.source + " " + std::string(SemanticRelationName(edge.relation)),
@@ -182,6 +176,17 @@ EnergyTerms StateEnergy(const RoomState& st) {
   }
   e.total = kWeightCollision * e.collision + kWeightSupport * e.support + kWeightSemantic * e.semantic;
   return e;
+}
+
+double EdgeViolation(const SemanticEdge& edge, const ProblemObject& source, const ObjectPlacement& at_source, const ProblemObject& target,
+                     const ObjectPlacement& at_target) {
+  Blocks pa = BlocksOf(at_source), pb = BlocksOf(at_target);
+  bool pose_only = false;
+  std::unique_ptr<ceres::CostFunction> cost(SemanticCost(edge, ShapeOf(source), ShapeOf(target), 1.0, &pose_only));
+  std::vector<double*> blocks = pose_only ? std::vector<double*>{pa.p, pb.p} : std::vector<double*>{pa.p, pa.s, pb.p, pb.s};
+  double v = 0.0;
+  cost->Evaluate(blocks.data(), &v, nullptr);
+  return std::abs(v);
 }
 
 EnergyTerms ArrangementEnergy(const RoomProblem& problem, const std::vector<ObjectPlacement>& placements) {

@@ -39,6 +39,9 @@ inline constexpr double kWeightCollision = 5.0;
 inline constexpr double kWeightSupport = 2.0;
 inline constexpr double kWeightSemantic = 1.0;
 
+// E_sem's term for one semantic edge between `source` and `target` as placed (0: it holds).
+double EdgeViolation(const SemanticEdge& edge, const ProblemObject& source, const ObjectPlacement& at_source, const ProblemObject& target,
+                     const ObjectPlacement& at_target);
 // The energy of `placements` (parallel to problem.objects; every object placed).
 EnergyTerms ArrangementEnergy(const RoomProblem& problem, const std::vector<ObjectPlacement>& placements);
 // The same on the solver's working state.

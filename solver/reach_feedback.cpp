@@ -49,26 +49,26 @@ std::vector<KeepOut> WalkwayPieces(const std::vector<std::pair<int, std::vector<
 // Whether a person standing on a reached cell touches one of `zone`'s boxes with their disc clear of
 // `owner` (the owner's box where it would stand; the cells were reached with it elsewhere). Every other
 // cell is tried: the check after the move decides.
+// Whether a person's disc of `radius` at p keeps clear of box b.
+bool DiscClearOf(const OrientedBox& b, Point p, double radius) {
+  const Point d = Sub(p, b.c);
+  return std::hypot(std::max(0.0, std::abs(Dot(d, b.U())) - b.hx), std::max(0.0, std::abs(Dot(d, b.V())) - b.hy)) >= radius;
+}
+
 bool ZoneTouchable(const ReachedCells& cells, const std::vector<Ring>& zone, const OrientedBox& owner, double radius) {
-  const Point u = owner.U(), v = owner.V();
-  auto clear_of_owner = [&](Point p) {
-    const Point d = Sub(p, owner.c);
-    return std::hypot(std::max(0.0, std::abs(Dot(d, u)) - owner.hx), std::max(0.0, std::abs(Dot(d, v)) - owner.hy)) >= radius;
-  };
   for (const Ring& z : zone) {
     if (z.empty()) continue;
-    Point lo = z[0], hi = z[0];
-    for (const Point& p : z) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    const int i0 = std::max(0, static_cast<int>(std::floor((lo.x - radius - cells.x0) / cells.cell)));
-    const int j0 = std::max(0, static_cast<int>(std::floor((lo.y - radius - cells.y0) / cells.cell)));
-    const int i1 = std::min(cells.nx - 1, static_cast<int>(std::floor((hi.x + radius - cells.x0) / cells.cell)));
-    const int j1 = std::min(cells.ny - 1, static_cast<int>(std::floor((hi.y + radius - cells.y0) / cells.cell)));
+    const Box2 box = BoundingBox(z);
+    const int i0 = std::max(0, static_cast<int>(std::floor((box.min_x - radius - cells.x0) / cells.cell)));
+    const int j0 = std::max(0, static_cast<int>(std::floor((box.min_y - radius - cells.y0) / cells.cell)));
+    const int i1 = std::min(cells.nx - 1, static_cast<int>(std::floor((box.max_x + radius - cells.x0) / cells.cell)));
+    const int j1 = std::min(cells.ny - 1, static_cast<int>(std::floor((box.max_y + radius - cells.y0) / cells.cell)));
     for (int j = j0; j <= j1; j += 2) {
       for (int i = i0; i <= i1; i += 2) {
         if (!cells.reached[static_cast<long>(j) * cells.nx + i]) continue;
         const Point p{cells.x0 + (i + 0.5) * cells.cell, cells.y0 + (j + 0.5) * cells.cell};
         const double d = PointInRing(p, z, 0) ? 0.0 : DistanceToBoundary(p, z);
-        if (d <= radius && clear_of_owner(p)) return true;
+        if (d <= radius && DiscClearOf(owner, p, radius)) return true;
       }
     }
   }
@@ -132,20 +132,14 @@ std::vector<Slot> FloorSlots(const RoomProblem& problem, const ProblemObject& o,
 // owner's box where it would stand), sampled every 4 cm: ZoneShare's measure (solver/reach.cpp) on the
 // cells reached with the owner elsewhere. Every other cell is tried, like ZoneTouchable.
 double ZoneCover(const ReachedCells& cells, const std::vector<Ring>& zone, const OrientedBox& owner, double radius) {
-  const Point u = owner.U(), v = owner.V();
-  const auto clear_of_owner = [&](Point p) {
-    const Point d = Sub(p, owner.c);
-    return std::hypot(std::max(0.0, std::abs(Dot(d, u)) - owner.hx), std::max(0.0, std::abs(Dot(d, v)) - owner.hy)) >= radius;
-  };
   constexpr double kSample = 0.04;
   const int k = static_cast<int>(std::ceil(radius / cells.cell));
   long inside = 0, covered = 0;
   for (const Ring& z : zone) {
     if (z.empty()) continue;
-    Point lo = z[0], hi = z[0];
-    for (const Point& p : z) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    for (double y = lo.y + 0.5 * kSample; y < hi.y; y += kSample) {
-      for (double x = lo.x + 0.5 * kSample; x < hi.x; x += kSample) {
+    const Box2 box = BoundingBox(z);
+    for (double y = box.min_y + 0.5 * kSample; y < box.max_y; y += kSample) {
+      for (double x = box.min_x + 0.5 * kSample; x < box.max_x; x += kSample) {
         const Point p{x, y};
         if (!PointInRing(p, z, 0)) continue;
         ++inside;
@@ -155,7 +149,7 @@ double ZoneCover(const ReachedCells& cells, const std::vector<Ring>& zone, const
           for (int i = std::max(0, ci - k); i <= std::min(cells.nx - 1, ci + k) && !hit; i += 2) {
             if (!cells.reached[static_cast<long>(j) * cells.nx + i]) continue;
             const Point q{cells.x0 + (i + 0.5) * cells.cell, cells.y0 + (j + 0.5) * cells.cell};
-            hit = Dist(p, q) <= radius && clear_of_owner(q);
+            hit = Dist(p, q) <= radius && DiscClearOf(owner, q, radius);
           }
         }
         covered += hit;
@@ -487,28 +481,25 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
       if (owner == seen.end() || !owner->second.on_floor || !solvers.count(owner->second.room)) continue;
       const std::string& room = owner->second.room;
       RoomSolver& solver = *solvers.at(room);
-      const std::shared_ptr<const RoomSolver::Snapshot> before = solver.Save();
+      if (!saved.count(room)) saved.emplace(room, solver.Save());  // before any widening in the room
       const ReachedCells& cells = report.reached[t.level];
       const double want = std::max(options.thin_share, t.share + 0.3);
       // The owner's relations (a nightstand beside its bed) are worth more than a wider zone: a slot where
       // more of them are violated (the solver's semantic proxy) is passed over.
       const auto violated = [&] {
         const RoomSolution now = solver.Solution();
-        RoomProblem placed = solver.Problem();  // the objects as they stand (placed ones), their edges
-        placed.objects.clear();
-        std::vector<ObjectPlacement> at;
-        std::set<std::string> ids;
-        for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
-          if (!now.placements[k].placed) continue;
-          placed.objects.push_back(now.objects[k]);
-          at.push_back(now.placements[k]);
-          ids.insert(now.objects[k].id);
+        const auto placed = [&](const std::string& id) {
+          for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k)
+            if (now.objects[k].id == id && now.placements[k].placed) return static_cast<int>(k);
+          return -1;
+        };
+        int n = 0;
+        for (const SemanticEdge& edge : now.edges) {
+          if (edge.source != t.name && edge.target != t.name) continue;
+          const int a = placed(edge.source), b = placed(edge.target);
+          n += a >= 0 && b >= 0 && EdgeViolation(edge, now.objects[a], now.placements[a], now.objects[b], now.placements[b]) > 1e-6;
         }
-        placed.edges.clear();
-        for (const SemanticEdge& edge : now.edges)
-          if ((edge.source == t.name || edge.target == t.name) && ids.count(edge.source) && ids.count(edge.target)) placed.edges.push_back(edge);
-        const EnergyTerms e = ArrangementEnergy(placed, at);
-        return static_cast<int>(std::count_if(e.edge_violation.begin(), e.edge_violation.end(), [](double v) { return v > 1e-6; }));
+        return n;
       };
       const int violated_before = violated();
       auto r = MoveToSlot(
@@ -517,7 +508,6 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
           "where they reach most of it, its relations kept", [&] { return violated() <= violated_before; });
       if (!r) continue;
       fr.unreachable.push_back(t.name);
-      saved.emplace(room, before);
       acted[room].push_back({room, *r});
     }
     if (!acted.empty()) {
