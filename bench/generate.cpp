@@ -38,17 +38,24 @@ const char* const kRequests[] = {
 
 int main(int argc, char** argv) {
   int seeds = 3, jobs = 0;
-  std::string library, critic = "offline";
+  std::string library, critic_name = "offline";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seeds" && i + 1 < argc) seeds = std::atoi(argv[++i]);
     else if (a == "--jobs" && i + 1 < argc) jobs = std::atoi(argv[++i]);
     else if (a == "--library" && i + 1 < argc) library = argv[++i];
-    else if (a == "--critic" && i + 1 < argc && (std::string(argv[i + 1]) == "offline" || std::string(argv[i + 1]) == "none")) critic = argv[++i];
+    else if (a == "--critic" && i + 1 < argc) critic_name = argv[++i];
     else {
       std::fprintf(stderr, "usage: villa_bench_generate [--seeds N] [--jobs J] [--library DIR] [--critic offline|none]\n");
       return 2;
     }
+  }
+  critic::CriticOptions critic_options;
+  if (auto kind = critic::ParseCriticKind(critic_name); kind && *kind != critic::CriticKind::kMllm) {
+    critic_options.kind = *kind;
+  } else {
+    std::fprintf(stderr, "--critic %s: expected offline or none\n", critic_name.c_str());
+    return 2;
   }
   const fs::path dir = fs::temp_directory_path() / ("villa_bench_generate_" + std::to_string(::getpid()));
   TextTable table({"request", "seed", "floors", "rooms", "objects", "clean", "plan s", "build s", "furnish s", "export s",
@@ -64,7 +71,7 @@ int main(int argc, char** argv) {
       options.furnishing.jobs = jobs;
       options.furnishing.library = library;
       options.furnishing.procedural_only = library.empty();
-      if (critic == "offline") options.furnishing.critic = critic::MakeRoomCritic({});
+      options.furnishing.critic = critic::MakeRoomCritic(critic_options);
       auto summary = GenerateVilla(kRequests[r], options);
       if (!summary.ok() || !summary->furnished) {
         std::fprintf(stderr, "request %zu seed %d: %s\n", r + 1, seed,

@@ -21,7 +21,9 @@ inline void AddCriticChoice(CLI::App* sub, solver::FurnishOptions& options, cons
   sub->add_option_function<std::string>(
          "--critic",
          [&options](const std::string& kind) {
-           options.critic = kind == "none" ? solver::RoomCritic{} : critic::MakeRoomCritic({});
+           critic::CriticOptions c;
+           c.kind = *critic::ParseCriticKind(kind);  // offline or none: checked by IsMember
+           options.critic = critic::MakeRoomCritic(c);
          },
          scope + "offline (default: a geometric critic moves objects until the room's relations hold) or none (the "
                  "solver's arrangement as it is)")
