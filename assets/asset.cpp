@@ -188,6 +188,12 @@ std::optional<unsigned> ParseAffordances(const std::vector<std::string>& names) 
   return out;
 }
 
+bool AssetRecord::ClosedCellFloor(int surface) const {
+  for (const Cavity& c : cavities)
+    if (c.floor_surface == surface && c.open == "closed") return true;
+  return false;
+}
+
 std::string AssetRecord::Credit() const {
   if (license.rfind("CC-BY", 0) != 0) return "";
   return (name.empty() ? id : name) + " by " + (creator.empty() ? "unknown" : creator) + " (" + license + ")";

@@ -96,6 +96,10 @@ struct AssetRecord {
   AssetMeshInfo mesh;
 
   bool Has(Affordance a) const { return (affordances & a) != 0; }
+  // Whether support surface `surface` is the floor of a closed cavity (a cell behind a door or a drawer
+  // front): a place to store things inside, not a top to stand things on (issue 27: no kettle 'ontop' a
+  // counter's inner shelf).
+  bool ClosedCellFloor(int surface) const;
   // Credit line for CC-BY assets ("Couch by Jane Doe (CC-BY-3.0)"); empty when none is needed.
   std::string Credit() const;
 };

@@ -302,6 +302,11 @@ Result<solver::Action> ToSolverAction(const ProposedAction& p, const solver::Roo
     return nullptr;
   };
   if (p.action == "remove_entity") {
+    // Issue 27: the room's essential pieces and what the request named stay; the model may move, turn or
+    // shrink them.
+    for (const solver::ProblemObject& o : now.objects)
+      if (o.id == p.id && solver::IsProtected(o.priority))
+        return Error{p.id + " is " + std::string(solver::PriorityName(o.priority)) + " to the room: it is kept (move, turn or shrink it instead)"};
     a.kind = solver::ActionKind::kRemoveEntity;
     return a;
   }

@@ -99,6 +99,7 @@ struct Candidate {
   int wall = -1;
   int surface = -1, cavity = -1;  // a new support choice (the solver's suggestions for small things)
   bool proven = false;            // the solver found it itself (RoomSolver::Suggest): it fits
+  bool remove = false;            // not moved but taken out (a decorative thing with no open place left)
 };
 
 // The box of object k at `pose`.
@@ -803,10 +804,11 @@ std::optional<double> SlideClear(const Room& room, const ObjectBox& from, Point 
   return std::nullopt;
 }
 
-// A place for child `ch` of member k on another surface of k (a shelf inside a counter): the surface index and
-// the place in the member's frame (m along its width and depth). `top` is the member's box where it goes,
-// `boxes` its children's boxes there (the one at `self` is the child's); none clears a keep-out and every
-// other child by 5 mm, within the surface's extent and under the room above it.
+// A place for child `ch` of member k on another surface of k (an open shelf of a counter, never the floor of
+// a closed cell): the surface index and the place in the member's frame (m along its width and depth).
+// `top` is the member's box where it goes, `boxes` its children's boxes there (the one at `self` is the
+// child's); none clears a keep-out and every other child by 5 mm, within the surface's extent and under
+// the room above it.
 struct ShelfPlace {
   int surface = -1;
   double x = 0.0, y = 0.0;
@@ -822,6 +824,7 @@ std::optional<ShelfPlace> OnLowerShelf(const Room& room, int k, int ch, const Ob
   for (size_t j = 0; j < member.asset.support_surfaces.size(); ++j) {
     const SupportSurface& surface = member.asset.support_surfaces[j];
     if (static_cast<int>(j) == room.solution.placements[ch].surface || surface.clear_height * scale < height + 0.01) continue;
+    if (member.asset.ClosedCellFloor(static_cast<int>(j))) continue;  // behind a door: not a place to stand things
     const Box2 extent = BoundingBox(surface.polygon);
     const double x0 = extent.min_x * scale + hx + 0.01, x1 = extent.max_x * scale - hx - 0.01;
     const double y = 0.5 * (extent.min_y + extent.max_y) * scale;
@@ -842,9 +845,11 @@ std::optional<ShelfPlace> OnLowerShelf(const Room& room, int k, int ch, const Ob
 
 // What stands on the run's members and would enter a keep-out where they go (a window's zone starts at the
 // sill: a counter under it is low enough, the kettle on it is not): each such thing slid along its member's
-// top, the nearest first, to where it stays clear of the keep-outs and of the things beside it; the shifts,
-// as poses in the member's present frame (made before the member moves, which carries them). Nullopt when
-// one finds no such place: the layout would lose it, so it is not tried.
+// top, the nearest first, to where it stays clear of the keep-outs and of the things beside it, else onto an
+// open shelf of the member; the shifts, as poses in the member's present frame (made before the member
+// moves, which carries them). A decorative thing with no such place is taken out (issue 27: never into a
+// closed cell behind a door, and optional pieces go first); nullopt when another finds none: the layout
+// would lose it, so it is not tried.
 std::optional<std::vector<std::pair<int, Candidate>>> ShiftsOffKeepOuts(const Room& room,
                                                                         const std::vector<std::pair<int, Candidate>>& members) {
   std::vector<std::pair<int, Candidate>> shifts;
@@ -880,6 +885,11 @@ std::optional<std::vector<std::pair<int, Candidate>>> ShiftsOffKeepOuts(const Ro
         // Down onto a shelf of the member (below the sill), where the solver may put it (not pinned to
         // its surface, not a sink: a sink belongs on the worktop).
         const auto shelf = OnLowerShelf(room, k, ch, top, boxes, s);
+        if (!shelf && room.solution.objects[ch].priority == solver::Priority::kDecorative) {
+          shift.remove = true;
+          shifts.push_back({ch, shift});
+          continue;
+        }
         if (!shelf) return std::nullopt;
         shift.pose.x = member_now.c.x + member_now.U().x * shelf->x + member_now.V().x * shelf->y;
         shift.pose.y = member_now.c.y + member_now.U().y * shelf->x + member_now.V().y * shelf->y;
@@ -992,7 +1002,7 @@ void AddRunLayout(const Room& room, MemberPoses poses, const std::vector<std::pa
   std::vector<std::pair<int, Candidate>> order;
   if (!MoveOrder(room, poses, clearance, &order, true)) return;
   for (const auto& [k, c] : *before)
-    if (!std::count(movers.begin(), movers.end(), k)) placements[k].pose = c.pose;
+    if (!c.remove && !std::count(movers.begin(), movers.end(), k)) placements[k].pose = c.pose;
   double moved = 0.0;
   for (const auto& [k, c] : poses) {
     placements = room.Moved(placements, k, c.pose, c.wall);
@@ -1162,6 +1172,14 @@ std::vector<std::vector<Step>> RunMoves(const Room& room, int s, int t, const Un
     if (static_cast<int>(out.size()) >= options.alternatives) break;
     std::vector<Step> steps;
     for (const auto& [k, c] : l.before) {
+      if (c.remove) {
+        solver::Action drop;
+        drop.kind = solver::ActionKind::kRemoveEntity;
+        drop.id = room.solution.objects[k].id;
+        drop.reason = "critic: " + why + " (no open place on the run for it)";
+        steps.push_back({std::move(drop), false});
+        continue;
+      }
       const std::vector<Step> more = Steps(ActionsFor(room, k, c, why + " (making room for the run)"));
       steps.insert(steps.end(), more.begin(), more.end());
     }

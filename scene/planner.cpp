@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -222,6 +223,7 @@ class Planning {
     }
     Settings();
     Grow();
+    CompleteGroups();
     Trim();
     if (room_.category == Category::kBathroom && BathroomFixtures()) {
       Grow();  // what the fixtures left: towel racks, bottles on the basin instead of the cabinet's things
@@ -510,7 +512,31 @@ class Planning {
   int MaxOf(const ItemPrior& item) const {
     int max = item.max;
     if (item.mount == Mount::kCeiling) max = std::clamp(1 + static_cast<int>(room_.furnishable_area / 20.0), 1, item.max);
-    return max;
+    return std::min(max, SeatCap(item));
+  }
+
+  // Issue 27: the chairs of a table are as many as its sides seat with room to pull them out (the template
+  // of solver/place.cpp: one every 0.6 m along a long side, one at each end of a table 1.5 m long and 0.7 m
+  // wide, 0.75 m clear behind each chair): across the room's free floor, a long side seats when the floor is
+  // wide enough for the table, a chair and 0.75 m behind it on that side; an end likewise along the table.
+  // Unlimited for what is not a table's seat.
+  int SeatCap(const ItemPrior& item) const {
+    const std::string_view table = item.requires_category;
+    if (table != "dining-table" && table != "conference-table" && table != "play-table" && table != "outdoor-table")
+      return std::numeric_limits<int>::max();
+    int node = -1;
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i)
+      if (!nodes_[i].removed && nodes_[i].info->name == table) node = i;
+    if (node < 0 || room_.free_floor.empty()) return std::numeric_limits<int>::max();
+    const Vec3& t = nodes_[node].size;
+    const double L = std::max(t.x, t.y), S = std::min(t.x, t.y);
+    const Box2 box = BoundingBox(room_.free_floor.front());
+    const double D = std::min(box.max_x - box.min_x, box.max_y - box.min_y), E = std::max(box.max_x - box.min_x, box.max_y - box.min_y);
+    const double seat = 0.05 + 0.5 + 0.75;  // gap, chair depth, clear behind
+    const int along = std::max(1, static_cast<int>(std::floor(L / 0.6 + 1e-9)));
+    const int sides = D >= S + 2.0 * seat ? 2 : D >= S + seat ? 1 : 0;
+    const int ends = L >= 1.5 && S >= 0.7 ? (E >= L + 2.0 * seat ? 2 : E >= L + seat ? 1 : 0) : 0;
+    return std::max(2, sides * along + ends);
   }
 
   bool AddPrior(const ItemPrior& item) {
@@ -605,6 +631,18 @@ class Planning {
     }
   }
 
+  // Issue 27: a group's members come with its hub whatever the count aimed at: the chair of a desk drawn
+  // last, the table's minimum of chairs (Draw and Grow stop at the target; Mandatory ran before the hub was
+  // drawn).
+  void CompleteGroups() {
+    for (const ItemPrior& item : priors_.items) {
+      if (item.requires_category.empty() || item.mount == Mount::kParent) continue;
+      const int want = std::min(item.min, SeatCap(item));
+      while (CountOf(&item) < want && Allowed(item))
+        if (!AddPrior(item)) break;
+    }
+  }
+
   // Place settings follow the seats: one per chair around their table, within the item's range.
   int SettingsWanted(const ItemPrior& item) const {
     int seats = 0;
@@ -624,7 +662,7 @@ class Planning {
   void Mandatory(bool small) {
     for (const ItemPrior& item : priors_.items) {
       if ((item.mount == Mount::kParent) != small) continue;
-      int want = item.per_seat ? SettingsWanted(item) : item.min;
+      int want = item.per_seat ? SettingsWanted(item) : std::min(item.min, SeatCap(item));
       while (CountOf(&item) < want && Allowed(item))
         if (!AddPrior(item)) {
           notes_.push_back("no room for " + std::string(item.category) + " (" + std::to_string(CountOf(&item)) + " of " +
@@ -676,7 +714,8 @@ class Planning {
         int victim = -1, surplus = -1000;
         for (int i = static_cast<int>(nodes_.size()) - 1; i >= 0; --i) {
           const Node& n = nodes_[i];
-          if (n.removed || n.origin == Origin::kPrompt || !n.item || (n.mount == Mount::kParent) != small || HasChildren(i))
+          if (n.removed || n.origin == Origin::kPrompt || !n.item || (n.mount == Mount::kParent) != small || HasChildren(i) ||
+              HasMembers(i))
             continue;
           int over = CountOf(n.item) - n.item->min;
           if (pass < 2 && over <= 0) continue;
@@ -687,6 +726,15 @@ class Planning {
         nodes_[victim].removed = true;
       }
     }
+  }
+
+  // Whether node i is the last of its category and the group's hub of other nodes (the desk of a chair, the
+  // table of its chairs): trimmed, it would leave them without their group.
+  bool HasMembers(int i) const {
+    if (CountOfCategory(nodes_[i].info->name) > 1) return false;
+    for (const Node& n : nodes_)
+      if (!n.removed && n.item && n.item->requires_category == nodes_[i].info->name) return true;
+    return false;
   }
 
   bool HasChildren(int i) const {
@@ -866,6 +914,10 @@ class Planning {
       o.hints = n.hints;
       if (n.info->zone && (o.affordances & kInteractor)) {
         InteractionZone zone{n.info->zone->side, n.info->zone->depth, {}};
+        // A table's chair keeps the floor behind it free to be pulled out and sat on (issue 27: 0.75 m); its
+        // front is under the table.
+        if (n.item && (n.item->requires_category == "dining-table" || n.item->requires_category == "conference-table"))
+          zone = InteractionZone{"back", 0.75, {}};
         if (n.item)
           for (std::string_view c : n.item->exempt)
             for (int j : by_category[std::string(c)]) zone.exempt.push_back(ids[j]);

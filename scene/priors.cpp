@@ -80,6 +80,13 @@ EdgeParams Gap(double min_gap, double max_gap) {
   p.max_gap = max_gap;
   return p;
 }
+// A seat at a table faces the side it sits at, not the table's centre: the chair at the end of a long side
+// of a 3 m table turns 60 degrees off its centre (issue 27's template seats every chair square to its side).
+EdgeParams Seat() {
+  EdgeParams p;
+  p.max_deg = 75.0;
+  return p;
+}
 EdgeParams MaxGap(double max_gap) {
   EdgeParams p;
   p.max_gap = max_gap;
@@ -124,7 +131,8 @@ std::vector<RoomPriors> MakeTable() {
       Wall("wardrobe", 1, 1).Key().Exempt({"rug"}),
       Wall("dresser", 0, 1).Exempt({"rug"}),
       Wall("desk", 0, 1).Hint(kHintNearWindow).Exempt({"chair"}).MinArea(11.0),
-      Free("chair", 0, 1).Requires("desk").Edge(R::kFaceTo, "desk").Edge(R::kFrontOf, "desk", MaxGap(0.3)).Exempt({"desk"}),
+      // A desk comes with its chair (issue 27: 6 of 39 bedroom desks had one).
+      Free("chair", 1, 1).Requires("desk").Edge(R::kFaceTo, "desk").Edge(R::kFrontOf, "desk", MaxGap(0.3)).Exempt({"desk"}),
       Free("rug", 0, 1).Edge(R::kNextTo, "bed"),
       Free("floor-lamp", 0, 1).Hint(kHintCorner),
       OnWall("painting", 1, 1).Edge(R::kBehind, "bed").Edge(R::kCentered, "bed"),
@@ -155,9 +163,9 @@ std::vector<RoomPriors> MakeTable() {
       OnWall("upper-cabinet", 1, 3).Edge(R::kBehind, "counter", {}, Pick::kSame).Edge(R::kAlign, "counter", {}, Pick::kSame),
       OnWall("range-hood", 0, 1).Edge(R::kBehind, "cooker").Edge(R::kCentered, "cooker"),
       Free("island", 0, 1).Edge(R::kFrontOf, "counter", Gap(0.9, 3.0)).Hint(kHintMiddle).MinArea(14.0),
-      Free("stool", 0, 4).Requires("island").Edge(R::kFaceTo, "island").Edge(R::kNextTo, "island", MaxGap(0.2)),
+      Free("stool", 0, 4).Requires("island").Edge(R::kFaceTo, "island", Seat()).Edge(R::kNextTo, "island", MaxGap(0.2)),
       Free("dining-table", 0, 1).When(Condition::kNoDiningRoomOnLevel).Hint(kHintMiddle).MinArea(10.0),
-      Free("chair", 0, 4).Requires("dining-table").Edge(R::kFaceTo, "dining-table").Edge(R::kNextTo, "dining-table", MaxGap(0.3)).Exempt({"dining-table"}),
+      Free("chair", 0, 4).Requires("dining-table").Edge(R::kFaceTo, "dining-table", Seat()).Edge(R::kNextTo, "dining-table", MaxGap(0.3)).Exempt({"dining-table"}),
       Hang("ceiling-lamp", 1, 2),
       On("sink", 1, 1, {"counter"}),
       On("microwave", 1, 1, {"counter"}),
@@ -194,7 +202,7 @@ std::vector<RoomPriors> MakeTable() {
 
   t.push_back({C::kDiningRoom, 30, 16.0, {
       Free("dining-table", 1, 1).Key().Hint(kHintMiddle),
-      Free("chair", 4, 8).Requires("dining-table").Edge(R::kFaceTo, "dining-table").Edge(R::kNextTo, "dining-table", MaxGap(0.3)).Exempt({"dining-table", "rug"}),
+      Free("chair", 4, 8).Requires("dining-table").Edge(R::kFaceTo, "dining-table", Seat()).Edge(R::kNextTo, "dining-table", MaxGap(0.3)).Exempt({"dining-table", "rug"}),
       Wall("sideboard", 1, 1).Exempt({"rug"}),
       Wall("glass-cabinet", 1, 1).Exempt({"rug"}),
       Hang("ceiling-lamp", 1, 1).Edge(R::kCentered, "dining-table"),
@@ -221,7 +229,7 @@ std::vector<RoomPriors> MakeTable() {
       Wall("toy-chest", 1, 1),
       Free("rug", 1, 1).Hint(kHintMiddle),
       Free("play-table", 0, 1).MinArea(12.0),
-      Free("child-chair", 0, 2).Requires("play-table").Edge(R::kFaceTo, "play-table").Edge(R::kNextTo, "play-table", MaxGap(0.3)).Exempt({"play-table"}),
+      Free("child-chair", 0, 2).Requires("play-table").Edge(R::kFaceTo, "play-table", Seat()).Edge(R::kNextTo, "play-table", MaxGap(0.3)).Exempt({"play-table"}),
       OnWall("painting", 1, 1),
       Hang("ceiling-lamp", 1, 1),  // (ours) every room gets a ceiling light (PRIORS.md clearances)
       In("toy", 3, 6, {"bookcase", "toy-chest"}),
@@ -253,7 +261,7 @@ std::vector<RoomPriors> MakeTable() {
 
   t.push_back({C::kMeetingRoom, 22, 20.0, {
       Free("conference-table", 1, 1).Key().Hint(kHintMiddle),
-      Free("chair", 6, 10).Requires("conference-table").Edge(R::kFaceTo, "conference-table").Edge(R::kNextTo, "conference-table", MaxGap(0.3)).Exempt({"conference-table"}),
+      Free("chair", 6, 10).Requires("conference-table").Edge(R::kFaceTo, "conference-table", Seat()).Edge(R::kNextTo, "conference-table", MaxGap(0.3)).Exempt({"conference-table"}),
       OnWall("whiteboard", 1, 1).Edge(R::kFaceTo, "conference-table"),
       Wall("sideboard", 1, 1),
       Free("plant", 1, 2).Hint(kHintCorner),
@@ -268,7 +276,7 @@ std::vector<RoomPriors> MakeTable() {
 
   t.push_back({C::kBalcony, 10, 5.0, {
       Free("outdoor-table", 1, 1).Key().MinArea(2.0),
-      Free("outdoor-chair", 2, 2).Requires("outdoor-table").Edge(R::kFaceTo, "outdoor-table").Edge(R::kNextTo, "outdoor-table", MaxGap(0.3)).Exempt({"outdoor-table"}),
+      Free("outdoor-chair", 2, 2).Requires("outdoor-table").Edge(R::kFaceTo, "outdoor-table", Seat()).Edge(R::kNextTo, "outdoor-table", MaxGap(0.3)).Exempt({"outdoor-table"}),
       Free("deck-chair", 0, 1).MinArea(6.0),
       Free("plant", 2, 4).Hint(kHintCorner),
       Wall("flower-box", 1, 2),

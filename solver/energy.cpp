@@ -76,7 +76,7 @@ EnergyTerms StateEnergy(const RoomState& st) {
   std::vector<std::pair<std::string, Prism>> building;
   for (const KeepOut& k : problem.keep_outs) {
     building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name,
-                        {k.polygon, k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway}});
+                        {k.polygon, k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway, k.kind != KeepOutKind::kWalkway}});
   }
   const Layer openings = RoomLayer(st, {}, {});
   for (const Prism& p : openings.prisms) {
@@ -123,6 +123,8 @@ EnergyTerms StateEnergy(const RoomState& st) {
     for (int p : prisms) {
       const auto& [name, prism] = building[p];
       if (st.IsFloorCovering(i) && !prism.binds_coverings) continue;
+      // Walkways move what stands on the floor (what stands on it goes with it).
+      if (!prism.binds_protected && st.parent[i] >= 0) continue;
       const double w = PrismOverlap(b, prism.polygon, prism.z0, prism.z1);
       if (w <= 1e-12) continue;
       v += w;

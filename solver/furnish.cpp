@@ -1,5 +1,7 @@
 #include "solver/furnish.h"
 
+#include "scene/request.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -16,6 +18,7 @@
 #include "layout/validate.h"
 #include "scene/file_digest.h"
 #include "scene/random.h"
+#include "scene/request.h"
 #include "scene/validate.h"
 #include "solver/room_view.h"
 #include "solver/scene_problem.h"
@@ -366,6 +369,7 @@ Json RoomJson(const RoomReport& r, const std::optional<ReachFigures>& reach, con
     metrics["ACC"] = nullptr;
   }
   j["metrics"] = std::move(metrics);
+  if (r.functional) j["functional"] = FunctionalJson(*r.functional);
   if (r.critic) j["critic"] = CriticJson(*r.critic);
   j["seconds"] = {{"plan", Round4(r.seconds_plan)}, {"acquire", Round4(r.seconds_acquire)}, {"solve", Round4(r.seconds_solve)},
                   {"total", Round4(r.seconds)}, {"cpu", Round4(r.cpu_seconds)}};
@@ -377,6 +381,7 @@ Json ByRoomType(const std::vector<RoomReport>& rooms) {
   struct Sum {
     int rooms = 0, converged = 0, objects = 0, colliding = 0, floating = 0, consumers = 0, out = 0, inside = 0, contained = 0;
     double seconds = 0;
+    FunctionalTally functional;
   };
   std::map<std::string, Sum> by;
   for (const RoomReport& r : rooms) {
@@ -388,6 +393,7 @@ Json ByRoomType(const std::vector<RoomReport>& rooms) {
     s.objects += m.objects, s.colliding += m.colliding, s.floating += m.floating, s.consumers += m.consumers;
     s.out += m.out_of_bounds, s.inside += m.inside_edges, s.contained += m.contained;
     s.seconds += r.seconds;
+    if (r.functional) s.functional.Add(*r.functional);
   }
   Json out = Json::object();
   for (const auto& [type, s] : by)
@@ -398,8 +404,30 @@ Json ByRoomType(const std::vector<RoomReport>& rooms) {
                  {"FR", Round4(s.consumers ? double(s.floating) / s.consumers : 0.0)},
                  {"OBR", Round4(s.objects ? double(s.out) / s.objects : 0.0)},
                  {"CSR", Round4(s.inside ? double(s.contained) / s.inside : 1.0)},
-                 {"seconds_mean", Round4(s.seconds / s.rooms)}};
+                 {"seconds_mean", Round4(s.seconds / s.rooms)},
+                 {"functional", s.functional.ToJson()}};
   return out;
+}
+
+// Issue 27's checks of one furnished room: its objects as placed, the request's wishes for it, and what the
+// planner and the solver said (why something asked for or needed is not there).
+FunctionalCheck RoomFunction(const FurnishedVilla& villa, const scene::RoomContext& context, const RoomReport& rep,
+                             const std::string& text) {
+  FunctionalInput in;
+  in.context = &context;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.room == context.name) in.objects.push_back(&o);
+  in.assets = [&](std::string_view id) { return villa.assets->Find(id); };
+  if (!text.empty())
+    for (const scene::Wish& w : scene::ParseRoomRequest(text, context.category).wishes)
+      in.wishes.push_back({std::string(w.category->name), w.count, w.fill, w.phrase});
+  in.notes = rep.plan_notes;
+  for (const std::string& d : rep.dropped) in.notes.push_back("left out before solving: " + d);
+  if (rep.solve)
+    for (const ActionResult& a : rep.solve->actions)
+      if (a.action.kind == ActionKind::kRemoveEntity && a.status != ActionStatus::kRefused)
+        in.notes.push_back("removed " + a.action.id + ": " + a.action.reason);
+  return CheckRoomFunction(in);
 }
 
 std::vector<std::string> OutputNames(const Layout& layout, bool pictures) {
@@ -457,6 +485,7 @@ std::string FurnishSummary::BriefReport() const {
   std::snprintf(time, sizeof time, "%.2f s (%.2f s of room work, %.3f s a room)\n", seconds, room_seconds,
                 furnished ? room_seconds / furnished : 0.0);
   out += "time: " + std::string(time);
+  if (functional.rooms > 0) out += "rooms as rooms: " + functional.Line() + "\n";
   if (reach_checked) {
     char line[256];
     std::snprintf(line, sizeof line,
@@ -577,6 +606,13 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
     sum.consumers += m.consumers, sum.inside_edges += m.inside_edges, sum.contained += m.contained;
   }
   if (auto metrics = BuildingMetrics(villa.rooms); !metrics.values.empty()) s.metrics = metrics;
+  // Issue 27: does each furnished room work as a room, on its final arrangement.
+  for (size_t i = 0; i < villa.rooms.size(); ++i) {
+    RoomReport& rep = villa.rooms[i];
+    if (!rep.asked) continue;
+    rep.functional = RoomFunction(villa, villa.contexts[i], rep, options.text);
+    sum.functional.Add(*rep.functional);
+  }
 
   // The scene must pass its own validator before anyone reads it.
   const scene::AssetLookup lookup = [&](std::string_view id) { return villa.assets->Find(id); };
@@ -618,7 +654,8 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
                  {"RCH", s.reach_checked ? Json(Round4(s.rch())) : Json(nullptr)},
                  {"ACC", s.reach_checked ? Json(Round4(s.acc())) : Json(nullptr)},
                  {"seconds", Round4(s.seconds)},
-                 {"room_seconds", Round4(s.room_seconds)}};
+                 {"room_seconds", Round4(s.room_seconds)},
+                 {"functional", s.functional.ToJson()}};
   j["by_room_type"] = ByRoomType(villa.rooms);
   // The critic's cost over the rooms: questions, answers from the cache, tokens, time.
   CriticFigures critic;

@@ -33,6 +33,7 @@
 #include "scene/room_context.h"
 #include "scene/scene.h"
 #include "solver/exact_check.h"
+#include "solver/functional.h"
 #include "solver/options.h"
 #include "solver/reach_feedback.h"
 #include "solver/solve.h"
@@ -150,6 +151,9 @@ struct RoomReport {
   std::string outcome;               // "converged" / "budget" / "infeasible"
   std::string reason;                // why, in words
   int objects = 0;                   // NO: objects placed
+  // Issue 27: does the room work as a room (essentials, groups, floor use, wishes, support semantics),
+  // measured on the final arrangement (after the critic and the reachability feedback).
+  std::optional<FunctionalCheck> functional;
   double seconds_plan = 0.0, seconds_acquire = 0.0, seconds_solve = 0.0, seconds = 0.0;  // wall
   double cpu_seconds = 0.0;  // the room's thread CPU time (a room runs on one thread): load-independent
 };
@@ -181,6 +185,7 @@ struct FurnishSummary {
   double csr() const { return inside_edges ? double(contained) / inside_edges : 1.0; }
   double rch() const { return reach_rooms ? double(rooms_reachable) / reach_rooms : 1.0; }
   double reach_acc = 1.0;    // ACC: the mean share of the V_int zones reachable
+  FunctionalTally functional;  // issue 27's checks over the furnished rooms
   double acc() const { return reach_acc; }
   std::string BriefReport() const;  // a few lines for people
 };

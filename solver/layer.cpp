@@ -196,7 +196,8 @@ Layer RoomLayer(const RoomState& state, const std::vector<int>& movable, const s
   layer.reflex = ReflexVertices(problem.free_floor);
   for (const KeepOut& k : problem.keep_outs) {
     for (Ring& piece : ConvexPieces(k.polygon)) {
-      layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway});
+      layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway,
+                              k.kind != KeepOutKind::kWalkway});
     }
   }
   AddOpeningPrisms(problem, layer);
@@ -254,8 +255,9 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     Ring local;
     for (Point v : k.polygon) local.push_back(layer.frame.ToLocal(v));
     for (Ring& piece : ConvexPieces(local)) {
-      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, true, true,
-                              k.kind != KeepOutKind::kWalkway});
+      // A walkway moves what stands on the floor; what stands on it goes with it.
+      const bool walkway = k.kind == KeepOutKind::kWalkway;
+      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, !walkway, !walkway, !walkway});
     }
   }
   return layer;
@@ -382,6 +384,7 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     for (const Prism& prism : layer.prisms) {
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
       if (body.covering && !prism.binds_coverings) continue;
+      if (!prism.binds_protected && !layer.walkways_bind_all && IsProtected(state.objects[body.object].priority)) continue;
       if (slack >= 0.0 && !PointInRing({body.p[0], body.p[1]}, prism.polygon, 0) &&
           DistanceToBoundary({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
         continue;

@@ -52,6 +52,10 @@ struct Prism {
   bool binds_floor = true;  // floor and ceiling bodies
   bool binds_hung = true;   // on_wall bodies
   bool binds_coverings = true;  // floor coverings (a rug may lie on a walkway)
+  // Protected objects (essential or named, problem.h): a walkway the reachability feedback lays does not
+  // push a bedroom's bed through its walls in a polish; the agent moves it out of the way where a free slot
+  // is (Layer::walkways_bind_all), else the way goes round it or the zone is reported unreachable.
+  bool binds_protected = true;
 };
 
 struct Layer {
@@ -67,6 +71,9 @@ struct Layer {
   std::vector<Point> reflex;   // reflex vertices of a non-convex region
   std::vector<Prism> prisms;   // keep-outs and wall openings (room)
   Box3 cavity;                 // scaled cavity box (cavity layer), parent frame
+  // Walkways bind protected bodies too: true where the agent looks for a slot out of the way (FindSlot),
+  // false in the polishes (a walkway must not push a bed through its wall).
+  bool walkways_bind_all = false;
   double clear_height = std::numeric_limits<double>::infinity();  // room above a surface (m)
 
   int Movable() const;  // active bodies that are not fixed

@@ -330,6 +330,143 @@ std::vector<std::pair<int, std::vector<SemanticEdge>>> Related(const Layer& laye
   return out;
 }
 
+// ---- functional groups (issue 27): where a member stands relative to its hub
+
+bool OneOf(const std::string& category, std::initializer_list<std::string_view> names) {
+  return std::find(names.begin(), names.end(), category) != names.end();
+}
+
+// The clear strip behind a seat (its back edge outwards, its width, `depth` m) lies on the free floor.
+bool BehindOnFloor(const Ring& region, Point centre, Point out, Point along, double half_width, double half_depth, double depth) {
+  for (double s : {-0.9, 0.0, 0.9})
+    for (double d : {0.5 * depth, depth}) {
+      const Point p = geo::Add(geo::Add(centre, geo::Scale(out, half_depth + d)), geo::Scale(along, s * half_width));
+      if (!PointInRing(p, region, 0.0)) return false;
+    }
+  return true;
+}
+
+// Template poses of a member of a functional group around its hub as the hub stands now; false when the body
+// is no member or its hub is not placed in this layer (the generic candidates apply).
+bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, const SolveOptions& o, std::vector<Candidate>& out) {
+  if (!o.functional_groups) return false;
+  const Membership m = GroupMembership(state, layer.bodies[self].object);
+  if (m.role == GroupRole::kNone || layer.body_of[m.hub] < 0) return false;
+  const Body& hub = layer.bodies[layer.body_of[m.hub]];
+  if (!hub.active) return false;
+  const Body& b = layer.bodies[self];
+  const OrientedBox box = LayerBox(hub);
+  const Point u = box.U(), v = box.V();  // the hub's +x and +y (its back); its front is -v
+  const double cx = b.hx * b.s[0], cy = b.hy * b.s[0];
+  const bool protect = IsProtected(state.objects[b.object].priority);
+  const double gap = o.object_gap + 0.03;
+  auto add = [&](Point c, double yaw, double pref, int wall = -1) { out.push_back({c.x, c.y, b.p[2], WrapAngle(yaw), wall, pref}); };
+  switch (m.role) {
+    case GroupRole::kTableSeat: {
+      // Seats along both long sides, evenly spaced (one per 0.55 m or the chair's width and 10 cm), and one at
+      // each end of a table long enough; each faces the table, its front 5 cm from the edge, with 0.75 m clear
+      // behind it on the free floor (a cramped seat only for a chair the room cannot do without).
+      const bool long_x = box.hx >= box.hy;
+      const Point la = long_x ? u : v, sa = long_x ? v : u;
+      const double L = long_x ? box.hx : box.hy, S = long_x ? box.hy : box.hx;
+      const double pitch = std::max(0.55, 2.0 * cx + 0.1);
+      const int n = std::max(1, static_cast<int>(std::floor(2.0 * L / pitch + 1e-9)));
+      // The 0.75 m to pull a chair out is a dining and meeting table's rule; a play table's or a balcony's
+      // chairs make do with less.
+      const bool dining = OneOf(state.objects[m.hub].category, {"dining-table", "conference-table"});
+      auto seat = [&](Point normal, Point along, double offset, double extent, double pref) {
+        const Point c = geo::Add(geo::Add(box.c, geo::Scale(normal, extent + gap + cy)), geo::Scale(along, offset));
+        const bool roomy = BehindOnFloor(layer.region, c, normal, along, cx, cy, dining ? 0.75 : 0.3);
+        if (!roomy && !protect && dining) return;
+        add(c, YawFacing(geo::Scale(normal, -1.0)), pref + (roomy ? 0.0 : 3.0));
+      };
+      for (double side : {1.0, -1.0})
+        for (int k = 0; k < n; ++k) {
+          const double t = -L + 2.0 * L * (k + 0.5) / n;
+          seat(geo::Scale(sa, side), la, t, S, 0.02 * std::abs(t) + (side < 0 ? 0.01 : 0.0));
+        }
+      if (2.0 * S >= 2.0 * cx + 0.1 && 2.0 * L >= 1.2)
+        for (double side : {1.0, -1.0}) seat(geo::Scale(la, side), sa, 0.0, L, 0.3);
+      return true;
+    }
+    case GroupRole::kDeskSeat: {
+      // Before the desk, facing it, pulled in.
+      for (double g : {gap, gap + 0.1})
+        for (double lateral : {0.0, 0.15, -0.15}) {
+          const Point c = geo::Add(geo::Add(box.c, geo::Scale(v, -(box.hy + g + cy))), geo::Scale(u, lateral));
+          add(c, box.yaw + kPi, 0.2 * std::abs(lateral) + (g - gap));
+        }
+      return true;
+    }
+    case GroupRole::kCoffeeTable: {
+      // Centred before the sofa, 0.3-0.6 m from its front, turned like it.
+      for (double g : {0.42, 0.35, 0.5, 0.3, 0.6}) {
+        const Point c = geo::Add(box.c, geo::Scale(v, -(box.hy + g + cy)));
+        add(c, box.yaw, 0.05 * std::abs(g - 0.42));
+        add(c, box.yaw + kPi, 0.05 * std::abs(g - 0.42) + 0.01);
+      }
+      return true;
+    }
+    case GroupRole::kSideTable: {
+      // At either end of the sofa, flush with its back half.
+      for (double side : {1.0, -1.0})
+        for (double g : {gap, gap + 0.1}) {
+          const Point c = geo::Add(geo::Add(box.c, geo::Scale(u, side * (box.hx + g + cx))), geo::Scale(v, std::max(0.0, box.hy - cy)));
+          add(c, box.yaw, g - gap);
+        }
+      return true;
+    }
+    case GroupRole::kArmchair: {
+      // At the ends of the coffee table (the sofa across the table's long side), facing its centre.
+      for (double side : {1.0, -1.0})
+        for (double g : {0.35, 0.5, 0.7})
+          for (double lateral : {0.0, 0.25, -0.25}) {
+            const Point n = geo::Scale(u, side);
+            const Point c = geo::Add(geo::Add(box.c, geo::Scale(n, box.hx + g + cy)), geo::Scale(v, lateral));
+            add(c, YawFacing(geo::Sub(box.c, c)), 0.05 * std::abs(g - 0.5) + 0.05 * std::abs(lateral));
+          }
+      return true;
+    }
+    case GroupRole::kBedside: {
+      // Against the bed's wall at its head, one each side, backs to the wall like the bed's.
+      if (hub.wall < 0 || b.motion != Motion::kAlongWall) return false;
+      const WallEdge& wall = state.problem->walls[hub.wall];
+      const WallFrame wf = FrameOfWall(wall);
+      const double t_bed = geo::Dot(geo::Sub(box.c, wf.a), wf.d);
+      const double wall_gap = state.objects[b.object].wall_gap;
+      for (double side : {1.0, -1.0})
+        for (double g : {gap, gap + 0.05}) {
+          const double t = t_bed + side * (box.hx + g + cx);
+          if (t < cx + 0.02 || t > wf.length - cx - 0.02) continue;
+          const Point c = geo::Add(geo::Add(wf.a, geo::Scale(wf.d, t)), geo::Scale(wf.n, wall_gap + cy));
+          add(c, wf.yaw_in, g - gap, hub.wall);
+        }
+      return true;
+    }
+    case GroupRole::kTvStand: {
+      // On a wall across from the sofa: where the sofa faces it within 20 degrees, 1.8-3.5 m away.
+      if (b.motion != Motion::kAlongWall) return false;
+      const Point front = geo::Scale(v, -1.0);
+      for (size_t w = 0; w < state.problem->walls.size(); ++w) {
+        std::vector<Candidate> slots;
+        WallSlots(layer, self, state, static_cast<int>(w), state.objects[b.object].wall_gap, o.object_gap, 0.0, 0.0, slots);
+        for (Candidate& c : slots) {
+          const Point to = geo::Sub({c.x, c.y}, box.c);
+          const double dist = geo::Len(to);
+          if (dist < 1.8 || dist > 3.5) continue;
+          const double angle = std::acos(std::clamp(geo::Dot(geo::Unit(to), front), -1.0, 1.0));
+          if (angle > 20.0 * kPi / 180.0) continue;
+          c.pref += angle + 0.1 * std::abs(dist - 2.6);
+          out.push_back(c);
+        }
+      }
+      return !out.empty();
+    }
+    case GroupRole::kNone: break;
+  }
+  return false;
+}
+
 int IncomingEdges(const RoomState& state, int object) {
   int n = 0;
   for (const SemanticEdge& e : state.edges) n += e.target == state.objects[object].id;
@@ -350,6 +487,11 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   std::vector<int> targets;
   for (const auto& r : related) targets.push_back(r.first);
 
+  // A member of a functional group goes where its group's template puts it (issue 27).
+  if (TemplateCandidates(layer, self, state, o, out)) {
+    *around_count = out.size();
+    return out;
+  }
   if (b.motion == Motion::kAlongWall) {
     for (size_t w = 0; w < problem.walls.size(); ++w) {
       if (obj.wall >= 0 && obj.wall != static_cast<int>(w)) continue;
@@ -398,7 +540,7 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   return out;
 }
 
-std::vector<Candidate> ChildCandidates(const Layer& layer, int self) {
+std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomState& state) {
   std::vector<Candidate> out;
   const Body& b = layer.bodies[self];
   const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
@@ -420,6 +562,8 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self) {
   const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
   Point centroid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
   const double step = std::clamp(0.5 * std::min(hx, hy), 0.01, 0.05);
+  // Pillows lie at the head of a bed and against the back of a sofa: the parent's back (+y of its frame).
+  const bool at_back = state.objects[b.object].category == "pillow";
   for (double yaw : {0.0, kHalfPi, kPi, -kHalfPi}) {
     for (double x = x0; x <= x1 + 1e-9; x += step) {
       for (double y = y0; y <= y1 + 1e-9; y += step) {
@@ -429,7 +573,10 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self) {
           if (&q == &b || !q.active || q.motion == Motion::kFixed) continue;
           nearest = std::min(nearest, std::hypot(q.p[0] - x, q.p[1] - y));
         }
-        const double pref = 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0);
+        double pref = 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0);
+        // Side by side along the back, from one end: a first pillow in the middle leaves the second no room
+        // beside it, and it lay mid-bed.
+        if (at_back) pref = 1.0 * (y1 - y) + 0.1 * (x - x0) + (yaw != 0.0 ? 0.5 : 0.0);
         out.push_back({x, y, b.p[2], yaw, -1, pref});
       }
     }
@@ -456,7 +603,7 @@ std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& stat
   b.active = true;
   size_t around_count = 0;
   const std::vector<Candidate> candidates = layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o, &around_count)
-                                                                             : ChildCandidates(layer, self);
+                                                                             : ChildCandidates(layer, self, state);
   const double saved[4] = {b.p[0], b.p[1], b.p[2], b.p[3]};
   const int saved_wall = b.wall;
   const Point saved_dir = b.wall_dir;
@@ -633,7 +780,10 @@ std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state) {
     double r = 0.0;
     if (b.covering) r -= 1000.0;
     if (b.motion == Motion::kAlongWall) r += 100.0;
-    r += 10.0 * static_cast<int>(o.priority);
+    // Essential pieces rank as priors here (they are big, against walls and hubs: they come early anyway, and
+    // a kitchen's run is laid in its chain's order); the agent makes room for them when they find none.
+    const Priority ranked = o.priority == Priority::kEssential ? Priority::kPrior : o.priority;
+    r += 10.0 * static_cast<int>(ranked);
     r += 4.0 * b.hx * b.hy * b.s[0] * b.s[0];
     return r;
   };
@@ -691,6 +841,7 @@ void AssignSupports(RoomState& state) {
         int best = -1;
         for (size_t k = 0; k < pa.support_surfaces.size(); ++k) {
           if (!fits(h, pa.support_surfaces[k].clear_height * sp)) continue;
+          if (pa.ClosedCellFloor(static_cast<int>(k))) continue;  // behind a door: not a top
           if (best < 0 || surface_room[p][k] > surface_room[p][best] + 1e-12) best = static_cast<int>(k);
         }
         pl.surface = best >= 0 ? best : 0;
@@ -709,6 +860,31 @@ void AssignSupports(RoomState& state) {
       cavity_room[p][pl.cavity] -= std::min(o.asset.size.x, o.asset.size.y) + 0.01;
     }
   }
+}
+
+Membership GroupMembership(const RoomState& state, int object) {
+  const ProblemObject& o = state.objects[object];
+  if (state.parent[object] >= 0) return {};
+  for (const SemanticEdge& e : state.edges) {
+    if (e.source != o.id) continue;
+    const int t = state.Find(e.target);
+    if (t < 0 || state.parent[t] >= 0) continue;
+    const std::string& hub = state.objects[t].category;
+    const SemanticRelation r = e.relation;
+    if (OneOf(o.category, {"chair", "office-chair", "child-chair", "outdoor-chair"}) &&
+        OneOf(hub, {"dining-table", "conference-table", "play-table", "outdoor-table"}) &&
+        (r == SemanticRelation::kNextTo || r == SemanticRelation::kFaceTo))
+      return {GroupRole::kTableSeat, t};
+    if (OneOf(o.category, {"chair", "office-chair", "child-chair"}) && hub == "desk" && r == SemanticRelation::kFrontOf &&
+        e.max_gap <= 0.5 + 1e-9)
+      return {GroupRole::kDeskSeat, t};
+    if (o.category == "nightstand" && OneOf(hub, {"bed", "child-bed"})) return {GroupRole::kBedside, t};
+    if (o.category == "coffee-table" && hub == "sofa" && r == SemanticRelation::kFrontOf) return {GroupRole::kCoffeeTable, t};
+    if (o.category == "side-table" && hub == "sofa") return {GroupRole::kSideTable, t};
+    if (o.category == "armchair" && hub == "coffee-table") return {GroupRole::kArmchair, t};
+    if (o.category == "tv-stand" && hub == "sofa" && r == SemanticRelation::kFrontOf) return {GroupRole::kTvStand, t};
+  }
+  return {};
 }
 
 }  // namespace villa::solver

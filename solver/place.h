@@ -40,6 +40,22 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& option
 // against a wall, higher priority and bigger footprints first; floor coverings last.
 std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state);
 
+// Issue 27: functional groups. A member of a group stands where its group's template puts it relative to
+// its hub as the hub stands: a chair at a side of its dining, meeting or play table (evenly spaced along the
+// long sides, one at each end of a long table, facing it, 0.75 m clear behind it), a desk's chair before it,
+// a nightstand at the head of its bed on the bed's wall, the coffee table centred before the sofa, side
+// tables at the sofa's ends, armchairs at the coffee table's ends facing it, the TV stand on a wall the sofa
+// faces within 20 degrees at 1.8-3.5 m. The constructive start, the agent's moves (FindSlot) and every
+// repair draw a member's candidates from its template only, so a member is never carried away from its
+// group; where no template pose is free it is shrunk, and an optional member then removed.
+enum class GroupRole { kNone, kTableSeat, kDeskSeat, kBedside, kCoffeeTable, kSideTable, kArmchair, kTvStand };
+struct Membership {
+  GroupRole role = GroupRole::kNone;
+  int hub = -1;  // object index of the hub
+};
+// The group role of an object standing on the floor, read from its category and its edges to the hub.
+Membership GroupMembership(const RoomState& state, int object);
+
 // Children without a chosen surface or cavity get one: the surface or cavity with the most room left
 // that is tall enough (asset height x scale_min within its clear height), in a deterministic order.
 void AssignSupports(RoomState& state);

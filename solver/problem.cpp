@@ -15,7 +15,7 @@ constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip",  "open
                                               "staircase",  "stair_hole", "stair_arrival", "other",
                                               "walkway"};
 constexpr std::string_view kRelationNames[] = {"ontop", "inside", "against_wall", "on_wall", "hanging"};
-constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named"};
+constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named", "essential"};
 constexpr std::string_view kSemanticNames[] = {"face_to", "front_of", "behind", "left_of", "right_of",
                                                "next_to", "near",     "far",    "align",   "centered"};
 

@@ -74,10 +74,15 @@ enum class Relation { kOnTop, kInside, kAgainstWall, kOnWall, kHanging };
 std::string_view RelationName(Relation relation);  // "ontop", "inside", "against_wall", "on_wall", "hanging"
 std::optional<Relation> ParseRelation(std::string_view name);
 
-// Which object gives way when not everything fits: the lowest priority first (SCENE.md `origin`: named in
-// the request > room prior > decorative, e.g. added by a critic).
-enum class Priority { kDecorative = 0, kPrior = 1, kNamed = 2 };
-std::string_view PriorityName(Priority priority);  // "decorative", "prior", "named"
+// Which object gives way when not everything fits: the lowest priority first (SCENE.md `origin`: the room
+// type's essential pieces and what carries them (issue 27: a bedroom's bed, a kitchen's sink and the counter
+// under it) > named in the request > room prior > decorative, e.g. added by a critic). Essential and named
+// objects are protected: the agent, the critic and the reachability feedback move, turn or shrink them and
+// remove other objects to make room for them; one is removed only when nothing else is left to try, and
+// the report says so.
+enum class Priority { kDecorative = 0, kPrior = 1, kNamed = 2, kEssential = 3 };
+std::string_view PriorityName(Priority priority);  // "decorative", "prior", "named", "essential"
+inline bool IsProtected(Priority priority) { return priority >= Priority::kNamed; }
 std::optional<Priority> ParsePriority(std::string_view name);
 
 // The box kept free in front of (or beside) a V_int object: `depth` m deep, the object's full width (or

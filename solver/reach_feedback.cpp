@@ -212,11 +212,21 @@ std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::s
       "a person can step up to");
 }
 
+// Removes object `id`, unless it is protected (an essential piece of its room, or named in the request:
+// issue 27): then the action is refused with why, and the zone or way it closes is reported instead.
 ActionResult Remove(RoomSolver& solver, const std::string& id, const std::string& why) {
   Action a;
   a.kind = ActionKind::kRemoveEntity;
   a.id = id;
   a.reason = "reachability: " + why;
+  const RoomProblem& problem = solver.Problem();
+  if (const int i = problem.Find(id); i >= 0 && IsProtected(problem.objects[i].priority)) {
+    ActionResult r;
+    r.action = a;
+    r.status = ActionStatus::kRefused;
+    r.message = "kept: " + std::string(PriorityName(problem.objects[i].priority)) + " objects are not removed to clear a way";
+    return r;
+  }
   return solver.Apply(a);
 }
 

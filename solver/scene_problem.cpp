@@ -1,5 +1,7 @@
 #include "solver/scene_problem.h"
 
+#include "solver/functional.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -7,6 +9,7 @@
 #include <set>
 
 #include "layout/geometry.h"
+#include "solver/functional.h"
 
 namespace villa::solver {
 namespace {
@@ -203,7 +206,28 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
     if (dropped.count(e.source) || dropped.count(e.target) || !by_id.count(e.source) || !by_id.count(e.target)) continue;
     for (SemanticEdge& s : EdgesOf(e)) p.edges.push_back(std::move(s));
   }
+  MarkEssentials(context.category, p);
   return out;
+}
+
+void MarkEssentials(Category room, RoomProblem& problem) {
+  std::set<std::string> essential;
+  for (const Essential& e : EssentialsOf(room)) {
+    int n = 0;
+    for (const ProblemObject& o : problem.objects)
+      if (n < e.count && std::find(e.categories.begin(), e.categories.end(), o.category) != e.categories.end()) {
+        essential.insert(o.id);
+        ++n;
+      }
+  }
+  // What carries an essential piece is essential too (the counter under the sink).
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const ProblemObject& o : problem.objects)
+      if (essential.count(o.id) && !scene::IsRootParent(o.parent) && essential.insert(o.parent).second) grew = true;
+  }
+  for (ProblemObject& o : problem.objects)
+    if (essential.count(o.id)) o.priority = Priority::kEssential;
 }
 
 std::vector<scene::SceneObject> SolvedSceneObjects(const RoomProblem& problem, const RoomSolution& solution,

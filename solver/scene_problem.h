@@ -43,6 +43,11 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
                                        const std::vector<scene::SceneObject>& objects,
                                        const std::vector<scene::SemanticEdge>& edges, const AssetResolver& resolve);
 
+// Issue 27: the room type's essential pieces (solver/functional.h EssentialsOf: the first of each needed
+// category, as many as it needs) and what carries them get Priority::kEssential, so that the agent, the
+// critic and the reachability feedback make room for them rather than remove them.
+void MarkEssentials(Category room, RoomProblem& problem);
+
 // The scene's objects after solving: every object of `solution` posed (pose, uniform scale, size = asset
 // size x scale, wall edge and gap, surface or cavity), in the planned order; objects the solver removed
 // are left out, and so are their ids in other objects' zone exemptions. `planned` supplies what the

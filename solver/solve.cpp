@@ -9,6 +9,7 @@
 #include <set>
 
 #include "mesh/geometry2d.h"
+#include "solver/group_rules.h"
 #include "solver/layer.h"
 #include "solver/place.h"
 #include "solver/rng.h"
@@ -281,7 +282,10 @@ struct RoomSolver::Impl {
     const int p = state.parent[i];
     const ProblemObject& o = state.objects[i];
     if (p >= 0 && o.relation == Relation::kOnTop && o.surface < 0) {
-      for (size_t k = 0; k < state.objects[p].asset.support_surfaces.size(); ++k) groups.push_back(static_cast<int>(k));
+      // Tops and open shelves; the floor of a closed cell (behind a door or drawer front) is for what goes
+      // inside, not 'ontop'.
+      for (size_t k = 0; k < state.objects[p].asset.support_surfaces.size(); ++k)
+        if (!state.objects[p].asset.ClosedCellFloor(static_cast<int>(k))) groups.push_back(static_cast<int>(k));
     }
     if (p >= 0 && o.relation == Relation::kInside && o.cavity < 0) {
       for (size_t k = 0; k < state.objects[p].asset.cavities.size(); ++k) groups.push_back(static_cast<int>(k));
@@ -295,6 +299,7 @@ struct RoomSolver::Impl {
         state.placements[i].pose.z = state.SupportHeight(i);
       }
       Layer layer = LayerFor(i);
+      layer.walkways_bind_all = true;  // a slot out of the reachability feedback's way, for everything
       if (TooTall(layer, i)) continue;
       // Its best candidate polished; when the polish does not end clean (a hair of overlap left), the next
       // best, up to four.
@@ -460,16 +465,93 @@ struct RoomSolver::Impl {
         pl.wall = *action.wall;
       }
     }
+    // A hub carries its group's members (issue 27): the chairs go with their table, the nightstands with
+    // their bed; a member that lands in trouble is seated again from its template.
+    const std::vector<int> members = options.functional_groups ? MembersOf(i) : std::vector<int>{};
+    const Pose from = state.placements[i].pose;
     state.SetPose(i, Snap(i, want));
+    if (!members.empty()) Carry(members, from, state.placements[i].pose);
     std::string how;
+    const Pose snapped = state.placements[i].pose;
     if (!Repair(i, &how)) {
       state = saved;
       return Refuse(r, "no free pose for \"" + action.id + "\" there or elsewhere: it would collide or leave its support");
+    }
+    if (!members.empty()) {
+      Carry(members, snapped, state.placements[i].pose);
+      Reseat(members);
+    }
+    // A member stays in its group: a move that would carry it out of its template is refused.
+    if (const std::string problem = options.functional_groups ? GroupProblem(i) : ""; !problem.empty()) {
+      state = saved;
+      return Refuse(r, "\"" + action.id + "\" would leave its group: " + problem);
     }
     r.status = how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
     r.message = how.empty() ? "done" : how;
     r.final_pose = state.placements[i].pose;
     return r;
+  }
+
+  // ---- functional groups (issue 27; the rules of solver/group_rules.h, the templates of place.h)
+
+  PlanBox PlanBoxOf(int i) const {
+    const Pose& p = state.placements[i].pose;
+    const ProblemObject& o = state.objects[i];
+    return {{p.x, p.y}, p.yaw, 0.5 * o.asset.size.x * p.scale, 0.5 * o.asset.size.y * p.scale};
+  }
+
+  // What is wrong with member i's place in its group ("" when it holds, or when i is no member).
+  std::string GroupProblem(int i) const {
+    const Membership m = GroupMembership(state, i);
+    if (m.role == GroupRole::kNone) return "";
+    const PlanBox self = PlanBoxOf(i), hub = PlanBoxOf(m.hub);
+    switch (m.role) {
+      case GroupRole::kTableSeat: return TableSeatProblem(self, hub);
+      case GroupRole::kDeskSeat: return DeskSeatProblem(self, hub);
+      case GroupRole::kBedside: return BedsideProblem(self, hub);
+      case GroupRole::kCoffeeTable: return CoffeeTableProblem(self, hub);
+      case GroupRole::kSideTable: return SideTableProblem(self, hub);
+      case GroupRole::kArmchair: return ArmchairProblem(self, hub.c);
+      case GroupRole::kTvStand: return TvProblem(hub, self.c);
+      case GroupRole::kNone: break;
+    }
+    return "";
+  }
+
+  // The members of hub i's group (objects whose GroupMembership names it).
+  std::vector<int> MembersOf(int i) const {
+    std::vector<int> out;
+    for (size_t k = 0; k < state.objects.size(); ++k)
+      if (state.parent[k] < 0 && static_cast<int>(k) != i && GroupMembership(state, static_cast<int>(k)).hub == i)
+        out.push_back(static_cast<int>(k));
+    return out;
+  }
+
+  // Moves `members` rigidly with their hub from pose `from` to pose `to` (plan turn and shift; heights from
+  // their support, wall-bound ones onto their wall).
+  void Carry(const std::vector<int>& members, const Pose& from, const Pose& to) {
+    const double turn = WrapAngle(to.yaw - from.yaw);
+    const double c = std::cos(turn), s = std::sin(turn);
+    for (int j : members) {
+      Pose p = state.placements[j].pose;
+      const double dx = p.x - from.x, dy = p.y - from.y;
+      p.x = to.x + c * dx - s * dy;
+      p.y = to.y + s * dx + c * dy;
+      p.yaw = WrapAngle(p.yaw + turn);
+      state.SetPose(j, Snap(j, p));
+    }
+  }
+
+  // Members in hard trouble or out of their template after their hub moved take their best template pose.
+  void Reseat(const std::vector<int>& members) {
+    for (int j : members) {
+      if (CostAt(j).hard <= kFeasible && GroupProblem(j).empty()) continue;
+      if (auto slot = FindSlot(j)) {
+        ObjectPlacement& pl = state.placements[j];
+        pl.wall = slot->wall;
+        state.SetPose(j, slot->pose);
+      }
+    }
   }
 
   ActionResult AddEntity(const Action& action, ActionResult r) {
@@ -611,11 +693,85 @@ struct RoomSolver::Impl {
     return pick;
   }
 
+  // An unprotected object whose removal lets protected object i find a free slot: among the objects of
+  // i's layer (the room's floor for what stands on it, i's siblings for what stands on a parent), the least
+  // important first, then the biggest; each tried on a copy of the state (at most eight). -1 when none does.
+  int MakeWayFor(int i) {
+    std::vector<int> pool;
+    const int p = state.parent[i];
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int kk = static_cast<int>(k);
+      if (kk == i || IsProtected(state.objects[k].priority) || state.parent[k] != p) continue;
+      if (p < 0 && state.Hung(kk) != state.Hung(i)) continue;
+      // Nothing protected stands on it (the counter under the sink stays).
+      const std::vector<int> below = state.Descendants(kk);
+      if (std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); })) continue;
+      pool.push_back(kk);
+    }
+    std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) {
+      const ProblemObject& A = state.objects[a];
+      const ProblemObject& B = state.objects[b];
+      if (A.priority != B.priority) return A.priority < B.priority;
+      return Volume(A, state.placements[a].pose.scale) > Volume(B, state.placements[b].pose.scale);
+    });
+    if (pool.size() > 8) pool.resize(8);
+    const std::string id = state.objects[i].id;
+    for (int k : pool) {
+      const RoomState saved = state;
+      state.Remove(k);
+      const int j = state.Find(id);
+      const bool frees = j >= 0 && FindSlot(j).has_value();
+      state = saved;
+      if (frees) return k;
+    }
+    return -1;
+  }
+
+  // The protected objects standing in walkways, when every proxy overlap left is such a one (else empty).
+  std::vector<std::string> ProtectedInWalkways() const {
+    std::set<std::string> ids;
+    for (const auto& [a, b] : energy.overlaps) {
+      const int i = state.Find(a);
+      if (i < 0 || b.rfind("walkway ", 0) != 0 || !IsProtected(state.objects[i].priority)) return {};
+      ids.insert(a);
+    }
+    return {ids.begin(), ids.end()};
+  }
+
+  // The removal that lets protected object i find a slot (MakeWayFor), as an action; none when none does.
+  std::optional<Action> MakeWayAction(int i) {
+    const int k = MakeWayFor(i);
+    if (k < 0) return std::nullopt;
+    Action a;
+    a.kind = ActionKind::kRemoveEntity;
+    a.id = state.objects[k].id;
+    a.reason = "make room for " + state.objects[i].id + " (" + std::string(PriorityName(state.objects[i].priority)) +
+               "): remove " + std::string(PriorityName(state.objects[k].priority)) + " " + state.objects[k].category;
+    return a;
+  }
+
+  // Whether object i's only hard trouble is the reachability feedback's walkways (its meshes clean, its
+  // support right, its box overlapping nothing but walkway zones).
+  bool OnlyInWalkways(int i) const {
+    const ObjectCheck& c = metrics.per_object[i];
+    if (c.colliding || c.floating || c.out_of_bounds || (c.inside_edge && !c.contained) || energy.object_support[i] > 0.0)
+      return false;
+    const std::string& id = state.objects[i].id;
+    bool any = false;
+    for (const auto& [a, b] : energy.overlaps) {
+      if (a != id && b != id) continue;
+      if (b.rfind("walkway ", 0) != 0) return false;
+      any = true;
+    }
+    return any;
+  }
+
   std::optional<Action> NextAction() {
     for (int i : Culprits()) {
-      const std::string& id = state.objects[i].id;
+      // Copies: MakeWayFor tries removals on the state and puts it back.
+      const std::string id = state.objects[i].id;
       int& n = tries[id];
-      const ProblemObject& o = state.objects[i];
+      const ProblemObject o = state.objects[i];
       if (n == 0) {
         ++n;
         if (auto slot = FindSlot(i)) {
@@ -643,7 +799,22 @@ struct RoomSolver::Impl {
       }
       if (n == 2) {
         ++n;
-        const int victim = LeastImportant(i);
+        int victim = LeastImportant(i);
+        // A protected object (essential, or named in the request) that would go itself: an unprotected one
+        // whose removal frees a slot for it goes instead, and it tries again (issue 27: a bedroom keeps its
+        // bed and loses its dresser).
+        if (victim == i && IsProtected(o.priority)) {
+          if (std::optional<Action> a = MakeWayAction(i)) {
+            n = 0;
+            return a;
+          }
+          // Only in the reachability feedback's walkways: it stays where it stands (the way it closes is
+          // reported) rather than leave the room without it.
+          if (OnlyInWalkways(i)) {
+            n = 4;
+            continue;
+          }
+        }
         Action a;
         a.kind = ActionKind::kRemoveEntity;
         a.id = state.objects[victim].id;
@@ -654,8 +825,16 @@ struct RoomSolver::Impl {
       }
       if (n == 3) {
         // Its conflict gave way and it is still in trouble (a thing on a surface its shrunk parent no longer
-        // holds): it goes itself, so the room ends physically valid.
+        // holds): it goes itself, so the room ends physically valid; a protected one first has an
+        // unprotected object make room for it.
         ++n;
+        if (IsProtected(o.priority)) {
+          if (std::optional<Action> a = MakeWayAction(i)) {
+            n = 0;
+            return a;
+          }
+          if (OnlyInWalkways(i)) continue;
+        }
         Action a;
         a.kind = ActionKind::kRemoveEntity;
         a.id = id;
@@ -732,6 +911,12 @@ struct RoomSolver::Impl {
       summary.reason = "physically valid, but E = " + Fixed(energy.total) + " (semantic " + Fixed(energy.semantic) +
                        ") stays above " + Fixed(options.energy_threshold, 2) +
                        (stuck ? ": no move lowers it further" : ": iterations spent");
+    } else if (std::vector<std::string> kept = ProtectedInWalkways(); metrics.Clean() && energy.support == 0.0 && !kept.empty()) {
+      // Only the reachability feedback's walkways are entered, by objects the room keeps (issue 27).
+      summary.outcome = Outcome::kBudget;
+      std::string ids;
+      for (const std::string& id : kept) ids += (ids.empty() ? "" : ", ") + id;
+      summary.reason = "physically valid; kept in a walkway the reachability check laid (essential or named): " + ids;
     } else if (stuck) {
       summary.outcome = Outcome::kInfeasible;
       summary.reason = std::to_string(Violations(metrics)) + " exact violation(s) left after every remedy (move, shrink, remove)";

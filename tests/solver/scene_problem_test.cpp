@@ -115,7 +115,9 @@ TEST_CASE("A room's context, objects and building become the solver's problem", 
   CHECK(mapped->dropped[2].find("vase-0: its parent living-room_0/0/books-0 is left out") != std::string::npos);
   const solver::ProblemObject& sofa = p.objects[0];
   CHECK(sofa.relation == solver::Relation::kAgainstWall);
-  CHECK(sofa.priority == solver::Priority::kNamed);
+  // Named by the request, and the living room's essential piece (issue 27): essential ranks higher.
+  CHECK(sofa.priority == solver::Priority::kEssential);
+  CHECK(solver::IsProtected(sofa.priority));
   CHECK(p.objects[2].priority == solver::Priority::kDecorative);  // a small prior object on furniture
   CHECK(p.objects[3].priority == solver::Priority::kPrior);
   CHECK(sofa.scale_min == Approx(solver::kSceneScaleMin));
