@@ -113,6 +113,7 @@ ObjectBox BoxAt(const Room& room, int k, const solver::Pose& pose) {
 bool InKeepOut(const Room& room, const ObjectBox& box) {
   const Ring footprint = box.Footprint();
   for (const solver::KeepOut& k : room.problem.keep_outs) {
+    if (k.kind == solver::KeepOutKind::kCirculation) continue;  // a preference of the placement (issue 27)
     if (std::min(box.z1, k.z_max) - std::max(box.z0, k.z_min) <= 0.0) continue;
     if (solver::ClippedArea(footprint, k.polygon) > 1e-6) return true;
   }

@@ -509,6 +509,12 @@ class Planning {
     return true;
   }
 
+  // The count an item is planned at least: its minimum, and one in a room big enough for its zone.
+  int MinOf(const ItemPrior& item) const {
+    const bool zone = item.from_area > 0.0 && room_.furnishable_area >= item.from_area;
+    return std::max(item.min, zone ? 1 : 0);
+  }
+
   int MaxOf(const ItemPrior& item) const {
     int max = item.max;
     if (item.mount == Mount::kCeiling) max = std::clamp(1 + static_cast<int>(room_.furnishable_area / 20.0), 1, item.max);
@@ -636,8 +642,8 @@ class Planning {
   // drawn).
   void CompleteGroups() {
     for (const ItemPrior& item : priors_.items) {
-      if (item.requires_category.empty() || item.mount == Mount::kParent) continue;
-      const int want = std::min(item.min, SeatCap(item));
+      if ((item.requires_category.empty() && item.from_area <= 0.0) || item.mount == Mount::kParent) continue;
+      const int want = std::min(MinOf(item), SeatCap(item));
       while (CountOf(&item) < want && Allowed(item))
         if (!AddPrior(item)) break;
     }
@@ -662,7 +668,7 @@ class Planning {
   void Mandatory(bool small) {
     for (const ItemPrior& item : priors_.items) {
       if ((item.mount == Mount::kParent) != small) continue;
-      int want = item.per_seat ? SettingsWanted(item) : std::min(item.min, SeatCap(item));
+      int want = item.per_seat ? SettingsWanted(item) : std::min(MinOf(item), SeatCap(item));
       while (CountOf(&item) < want && Allowed(item))
         if (!AddPrior(item)) {
           notes_.push_back("no room for " + std::string(item.category) + " (" + std::to_string(CountOf(&item)) + " of " +
@@ -677,7 +683,7 @@ class Planning {
   void Draw(bool small) {
     for (const ItemPrior& item : priors_.items) {
       if ((item.mount == Mount::kParent) != small || item.per_seat) continue;
-      int cap = rng_.Int(item.min, MaxOf(item));
+      int cap = rng_.Int(std::min(MinOf(item), MaxOf(item)), MaxOf(item));
       while (CountOf(&item) < cap && Total() < target_)
         if (!AddPrior(item)) break;
     }
@@ -717,7 +723,7 @@ class Planning {
           if (n.removed || n.origin == Origin::kPrompt || !n.item || (n.mount == Mount::kParent) != small || HasChildren(i) ||
               HasMembers(i))
             continue;
-          int over = CountOf(n.item) - n.item->min;
+          int over = CountOf(n.item) - MinOf(*n.item);
           if (pass < 2 && over <= 0) continue;
           if (over > surplus) victim = i, surplus = over;
         }
@@ -918,6 +924,11 @@ class Planning {
         // front is under the table.
         if (n.item && (n.item->requires_category == "dining-table" || n.item->requires_category == "conference-table"))
           zone = InteractionZone{"back", 0.75, {}};
+        // A desk's chair is pulled in under the desk: it is reached, and pulled out, from behind.
+        if (n.item && n.item->requires_category == "desk" && n.item->edges.size() >= 2 &&
+            n.item->edges[1].relation == SemanticRelation::kFrontOf && n.item->edges[1].params.max_gap &&
+            *n.item->edges[1].params.max_gap <= 0.5)
+          zone = InteractionZone{"back", 0.6, {}};
         if (n.item)
           for (std::string_view c : n.item->exempt)
             for (int j : by_category[std::string(c)]) zone.exempt.push_back(ids[j]);

@@ -52,6 +52,10 @@ struct Item {
     p.min_area = m2;
     return *this;
   }
+  Item& From(double m2) {
+    p.from_area = m2;
+    return *this;
+  }
   Item& Key() {
     p.key = true;
     return *this;
@@ -111,7 +115,12 @@ std::vector<RoomPriors> MakeTable() {
       Free("floor-lamp", 1, 1).Edge(R::kNextTo, "sofa"),
       Free("plant", 0, 1).Hint(kHintFarFromDoor).Hint(kHintCorner),
       Free("rug", 1, 1).Edge(R::kCentered, "coffee-table"),
-      OnWall("painting", 1, 2).Edge(R::kBehind, "sofa").Edge(R::kCentered, "sofa"),
+      // (ours, issue 27) a big living room's further zone: a reading corner where the floor is emptiest.
+      Free("armchair", 0, 1).Hint(kHintOpenFloor).MinArea(20.0).From(24.0),
+      Free("side-table", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", MaxGap(0.1), Pick::kLast).MinArea(20.0).From(24.0),
+      Free("floor-lamp", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", {}, Pick::kLast).MinArea(30.0).From(32.0),
+      OnWall("painting", 1, 1).Edge(R::kBehind, "sofa").Edge(R::kCentered, "sofa"),
+      OnWall("painting", 0, 1),  // (ours) a second picture elsewhere: two cannot both hang centred over the sofa
       Hang("ceiling-lamp", 1, 2),
       On("tv", 1, 1, {"tv-stand"}).Edge(R::kFaceTo, "sofa"),
       In("books", 4, 8, {"bookcase"}),
@@ -134,6 +143,10 @@ std::vector<RoomPriors> MakeTable() {
       // A desk comes with its chair (issue 27: 6 of 39 bedroom desks had one).
       Free("chair", 1, 1).Requires("desk").Edge(R::kFaceTo, "desk").Edge(R::kFrontOf, "desk", MaxGap(0.3)).Exempt({"desk"}),
       Free("rug", 0, 1).Edge(R::kNextTo, "bed"),
+      // (ours, issue 27) a big bedroom's further zones: a bench at the bed's foot, a reading corner.
+      Free("bench", 0, 1).Edge(R::kFrontOf, "bed", MaxGap(0.3)).Edge(R::kCentered, "bed").MinArea(18.0).From(24.0),
+      Free("armchair", 0, 1).Hint(kHintOpenFloor).MinArea(16.0).From(20.0),
+      Free("side-table", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", MaxGap(0.1), Pick::kLast).MinArea(16.0).From(20.0),
       Free("floor-lamp", 0, 1).Hint(kHintCorner),
       OnWall("painting", 1, 1).Edge(R::kBehind, "bed").Edge(R::kCentered, "bed"),
       OnWall("mirror", 0, 1),
@@ -162,8 +175,8 @@ std::vector<RoomPriors> MakeTable() {
       Wall("dishwasher", 0, 1).Edge(R::kNextTo, "cooker", MaxGap(0.05)),
       OnWall("upper-cabinet", 1, 3).Edge(R::kBehind, "counter", {}, Pick::kSame).Edge(R::kAlign, "counter", {}, Pick::kSame),
       OnWall("range-hood", 0, 1).Edge(R::kBehind, "cooker").Edge(R::kCentered, "cooker"),
-      Free("island", 0, 1).Edge(R::kFrontOf, "counter", Gap(0.9, 3.0)).Hint(kHintMiddle).MinArea(14.0),
-      Free("stool", 0, 4).Requires("island").Edge(R::kFaceTo, "island", Seat()).Edge(R::kNextTo, "island", MaxGap(0.2)),
+      Free("island", 0, 1).Edge(R::kFrontOf, "counter", Gap(0.9, 3.0)).Hint(kHintMiddle).MinArea(14.0).From(17.0),
+      Free("stool", 2, 4).Requires("island").Edge(R::kFaceTo, "island", Seat()).Edge(R::kNextTo, "island", MaxGap(0.2)),
       Free("dining-table", 0, 1).When(Condition::kNoDiningRoomOnLevel).Hint(kHintMiddle).MinArea(10.0),
       Free("chair", 0, 4).Requires("dining-table").Edge(R::kFaceTo, "dining-table", Seat()).Edge(R::kNextTo, "dining-table", MaxGap(0.3)).Exempt({"dining-table"}),
       Hang("ceiling-lamp", 1, 2),
@@ -206,9 +219,12 @@ std::vector<RoomPriors> MakeTable() {
       Wall("sideboard", 1, 1).Exempt({"rug"}),
       Wall("glass-cabinet", 1, 1).Exempt({"rug"}),
       Hang("ceiling-lamp", 1, 1).Edge(R::kCentered, "dining-table"),
-      Free("plant", 0, 1).Hint(kHintCorner),
+      Free("plant", 0, 1).Hint(kHintCorner).From(18.0),
       OnWall("painting", 1, 2),
       Free("rug", 0, 1).Edge(R::kCentered, "dining-table"),
+      // (ours, issue 27) a big dining room's further zone: a lounge chair with its side table.
+      Free("armchair", 0, 1).Hint(kHintOpenFloor).MinArea(22.0).From(24.0),
+      Free("side-table", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", MaxGap(0.1), Pick::kLast).MinArea(22.0).From(24.0),
       On("plate", 4, 8, {"dining-table"}).PerSeat(),
       On("glass", 4, 8, {"dining-table"}).PerSeat(),
       On("fruit-bowl", 1, 1, {"dining-table"}),
@@ -228,8 +244,8 @@ std::vector<RoomPriors> MakeTable() {
       Wall("wardrobe", 1, 1),
       Wall("toy-chest", 1, 1),
       Free("rug", 1, 1).Hint(kHintMiddle),
-      Free("play-table", 0, 1).MinArea(12.0),
-      Free("child-chair", 0, 2).Requires("play-table").Edge(R::kFaceTo, "play-table", Seat()).Edge(R::kNextTo, "play-table", MaxGap(0.3)).Exempt({"play-table"}),
+      Free("play-table", 0, 1).MinArea(12.0).From(15.0),
+      Free("child-chair", 1, 2).Requires("play-table").Edge(R::kFaceTo, "play-table", Seat()).Edge(R::kNextTo, "play-table", MaxGap(0.3)).Exempt({"play-table"}),
       OnWall("painting", 1, 1),
       Hang("ceiling-lamp", 1, 1),  // (ours) every room gets a ceiling light (PRIORS.md clearances)
       In("toy", 3, 6, {"bookcase", "toy-chest"}),
@@ -248,6 +264,9 @@ std::vector<RoomPriors> MakeTable() {
       Free("chair", 0, 2).Requires("desk").Edge(R::kFaceTo, "desk").Edge(R::kFrontOf, "desk", Gap(0.5, 1.5)).MinArea(10.0),
       Free("plant", 1, 1).Hint(kHintCorner),
       Free("floor-lamp", 0, 1),
+      // (ours, issue 27) a big office's further zone: an armchair with its side table.
+      Free("armchair", 0, 1).Hint(kHintOpenFloor).MinArea(14.0).From(16.0),
+      Free("side-table", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", MaxGap(0.1), Pick::kLast).MinArea(14.0).From(16.0),
       OnWall("whiteboard", 0, 1),
       Hang("ceiling-lamp", 1, 1),
       On("monitor", 1, 1, {"desk"}).Edge(R::kFaceTo, "office-chair"),
@@ -266,6 +285,9 @@ std::vector<RoomPriors> MakeTable() {
       Wall("sideboard", 1, 1),
       Free("plant", 1, 2).Hint(kHintCorner),
       Wall("water-cooler", 0, 1),
+      // (ours, issue 27) a big meeting room's further zone: a lounge corner.
+      Free("armchair", 0, 2).Hint(kHintOpenFloor).MinArea(28.0).From(30.0),
+      Free("side-table", 0, 1).Requires("armchair").Edge(R::kNextTo, "armchair", MaxGap(0.1), Pick::kLast).MinArea(28.0).From(30.0),
       Hang("ceiling-lamp", 1, 2).Edge(R::kCentered, "conference-table"),
       On("laptop", 2, 4, {"conference-table"}).PerSeat(),
       On("cup", 2, 6, {"conference-table"}).PerSeat(),

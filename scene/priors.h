@@ -65,6 +65,9 @@ struct ItemPrior {
   std::string_view group;                // at most one item of a group is planned (bath or shower)
   Condition condition = Condition::kAlways;
   double min_area = 0.0;                 // m2 of furnishable floor the room needs for this item
+  // Issue 27: planned at least once in a room with this much furnishable floor (m2; 0: only as drawn): the
+  // further zones of big rooms (a reading corner, a bench at the bed's foot, an island).
+  double from_area = 0.0;
   // The room's defining furniture (the bed of a bedroom, the toilet of a bathroom): its first `min` may
   // cover floor beyond the priors' share, up to the share a request may use (PlannerOptions).
   bool key = false;

@@ -32,7 +32,7 @@ constexpr std::array<std::string_view, kSemanticRelationCount> kSemanticNames = 
 constexpr std::array<std::string_view, 3> kOriginNames = {"prompt", "prior", "critic"};
 constexpr std::array<std::string_view, 3> kOutcomeNames = {"converged", "budget", "infeasible"};
 constexpr std::array<std::string_view, 9> kMetricNames = {"CR", "FR", "OBR", "CSR", "NO", "NAV", "ACC", "OPC", "RCH"};
-constexpr std::array<std::string_view, 4> kHints = {kHintFarFromDoor, kHintNearWindow, kHintMiddle, kHintCorner};
+constexpr std::array<std::string_view, 5> kHints = {kHintFarFromDoor, kHintNearWindow, kHintMiddle, kHintCorner, kHintOpenFloor};
 constexpr std::array<std::string_view, 5> kZoneSides = {"front", "back", "left", "right", "sides"};
 
 // ---------------------------------------------------------------------------------------------------

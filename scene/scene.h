@@ -106,6 +106,8 @@ inline constexpr std::string_view kHintFarFromDoor = "far_from_door";  // >= 1.5
 inline constexpr std::string_view kHintNearWindow = "near_window";     // within 1.5 m of a window
 inline constexpr std::string_view kHintMiddle = "middle";              // free-standing, >= 0.8 m from walls
 inline constexpr std::string_view kHintCorner = "corner";              // in a corner of the free floor
+// Issue 27: a further zone of a big room (a reading corner, a nook) goes where the floor is emptiest.
+inline constexpr std::string_view kHintOpenFloor = "open_floor";
 bool IsKnownHint(std::string_view hint);
 
 inline constexpr std::string_view kParentFloor = "floor";

@@ -50,7 +50,9 @@ struct ActionResult {
   ActionStatus status = ActionStatus::kRefused;
   std::string message;               // what happened and why ("moved 0.12 m to clear sofa-0")
   std::optional<Pose> final_pose;    // where the object ended up
-  std::vector<std::string> removed;  // remove_entity: the object and its descendants
+  // remove_entity: the object and its descendants; update_pose of a group's hub (issue 27): the optional
+  // members that found no place by it where it went, left out
+  std::vector<std::string> removed;
 };
 
 nlohmann::ordered_json ActionToJson(const Action& action);

@@ -273,10 +273,14 @@ class Checker {
         g.measures["coffee_offset_m"] = Round3(sofa.Local(table->box.c).x);
         if (std::string p = CoffeeTableProblem(table->plan, sofa.plan); !p.empty()) g.problems.push_back(p), core = false;
       }
-      // Armchairs face the group (the coffee table, else the sofa), within 45 degrees.
+      // Armchairs of the group (an edge to its coffee table or sofa, else within 1.5 m of it; a reading chair
+      // elsewhere is a zone of its own) face it within 45 degrees.
       for (const Item* a : All({"armchair"})) {
         const Item& focus = table ? *table : sofa;
-        if (geo::Dist(a->box.c, focus.box.c) > 3.0) continue;
+        const bool tied = std::any_of(in_.edges.begin(), in_.edges.end(), [&](const scene::SemanticEdge& e) {
+          return e.source == a->o->id && (e.target == sofa.o->id || (table && e.target == table->o->id));
+        });
+        if (in_.edges.empty() ? Gap(*a, focus) > 1.5 : !tied) continue;
         g.members.push_back(a->o->id);
         if (std::string p = ArmchairProblem(a->plan, focus.box.c); !p.empty()) g.problems.push_back(Name(*a) + ": " + p);
       }

@@ -107,6 +107,9 @@ struct FunctionalInput {
   std::function<const AssetRecord*(std::string_view id)> assets;
   std::vector<FunctionalWish> wishes;
   std::vector<std::string> notes;                    // the planner's and solver's account (for `why`)
+  // The room's semantic edges, when known: an armchair is the seating group's when it has an edge to its
+  // coffee table or sofa (a reading chair elsewhere is a zone of its own); without them, when within 1.5 m.
+  std::vector<scene::SemanticEdge> edges;
 };
 
 FunctionalCheck CheckRoomFunction(const FunctionalInput& input);

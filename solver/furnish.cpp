@@ -243,7 +243,13 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
     for (const RoomAction& a : round.actions) changed.insert(a.room);
     f.actions += static_cast<int>(round.actions.size());
   }
-  for (const std::string& room : changed) TakeSolution(*by_room.at(room));
+  // The feedback's last moves and restores act one object at a time: a room it leaves physically wrong (a
+  // chair carried into its desk) gets the rule agent once more, so no room ends colliding.
+  for (const std::string& room : changed) {
+    RoomSolver& solver = *by_room.at(room)->solver;
+    if (!solver.Solution().summary.metrics.Clean()) solver.RunAgent();
+    TakeSolution(*by_room.at(room));
+  }
 
   const ReachReport& last = loop->last;
   f.outcome = loop->reason;
@@ -422,6 +428,7 @@ FunctionalCheck RoomFunction(const FurnishedVilla& villa, const scene::RoomConte
     for (const scene::Wish& w : scene::ParseRoomRequest(text, context.category).wishes)
       in.wishes.push_back({std::string(w.category->name), w.count, w.fill, w.phrase});
   in.notes = rep.plan_notes;
+  if (const scene::RoomEntry* entry = villa.scene.FindRoom(context.name)) in.edges = entry->edges_sem;
   for (const std::string& d : rep.dropped) in.notes.push_back("left out before solving: " + d);
   if (rep.solve)
     for (const ActionResult& a : rep.solve->actions)

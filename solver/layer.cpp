@@ -196,8 +196,9 @@ Layer RoomLayer(const RoomState& state, const std::vector<int>& movable, const s
   layer.reflex = ReflexVertices(problem.free_floor);
   for (const KeepOut& k : problem.keep_outs) {
     for (Ring& piece : ConvexPieces(k.polygon)) {
-      layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway,
-                              k.kind != KeepOutKind::kWalkway});
+      const bool circulation = k.kind == KeepOutKind::kCirculation;
+      const bool walked = k.kind == KeepOutKind::kWalkway || circulation;
+      layer.prisms.push_back({std::move(piece), k.z_min, k.z_max, true, true, !walked, k.kind != KeepOutKind::kWalkway, circulation});
     }
   }
   AddOpeningPrisms(problem, layer);
@@ -256,7 +257,7 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     for (Point v : k.polygon) local.push_back(layer.frame.ToLocal(v));
     for (Ring& piece : ConvexPieces(local)) {
       // A walkway moves what stands on the floor; what stands on it goes with it.
-      const bool walkway = k.kind == KeepOutKind::kWalkway;
+      const bool walkway = k.kind == KeepOutKind::kWalkway || k.kind == KeepOutKind::kCirculation;
       layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, !walkway, !walkway, !walkway});
     }
   }
@@ -385,11 +386,13 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
       if (!(body.ZFree() ? prism.binds_hung : prism.binds_floor)) continue;
       if (body.covering && !prism.binds_coverings) continue;
       if (!prism.binds_protected && !layer.walkways_bind_all && IsProtected(state.objects[body.object].priority)) continue;
+      if (prism.soft && !o.functional_groups) continue;  // circulation: issue 27's, with the groups
       if (slack >= 0.0 && !PointInRing({body.p[0], body.p[1]}, prism.polygon, 0) &&
           DistanceToBoundary({body.p[0], body.p[1]}, prism.polygon) > Radius(body) + slack)
         continue;
-      add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), o.object_gap, o.weight_keep_out),
-          {b}, true);
+      add(KeepOutResidual::Create(shape, prism.polygon, prism.z0, prism.z1, body.ZFree(), prism.soft ? 0.0 : o.object_gap,
+                                  prism.soft ? o.weight_zone : o.weight_keep_out),
+          {b}, !prism.soft);
     }
   }
 

@@ -56,6 +56,9 @@ struct Prism {
   // push a bedroom's bed through its walls in a polish; the agent moves it out of the way where a free slot
   // is (Layer::walkways_bind_all), else the way goes round it or the zone is reported unreachable.
   bool binds_protected = true;
+  // A preference, not a constraint (issue 27's circulation through a room): a soft term of the zones'
+  // weight, so furniture keeps off the way through a room where it can.
+  bool soft = false;
 };
 
 struct Layer {

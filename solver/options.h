@@ -43,7 +43,8 @@ struct SolveOptions {
   // Issue 27: functional groups are the unit of placement and repair. A member (a chair of a table, a desk's
   // chair, a nightstand, the coffee table, side tables, armchairs, the TV stand) takes its poses from its
   // group's template around its hub (solver/place.h), a hub moved by an action carries its members, and an
-  // action that would carry a member out of its group's rules (solver/group_rules.h) is refused. Off: the
+  // action that would carry a member out of its group's rules (solver/group_rules.h) is refused; and the
+  // way through a room between its doors (KeepOutKind::kCirculation) is kept clear where it can be. Off: the
   // semantic relations alone, as before issue 27 (to measure, or to test the critic on its own).
   bool functional_groups = true;
 

@@ -51,7 +51,8 @@ std::vector<int> PlacementOrder(const Layer& layer, const RoomState& state);
 enum class GroupRole { kNone, kTableSeat, kDeskSeat, kBedside, kCoffeeTable, kSideTable, kArmchair, kTvStand };
 struct Membership {
   GroupRole role = GroupRole::kNone;
-  int hub = -1;  // object index of the hub
+  int hub = -1;   // object index of the hub
+  int side = 0;   // nightstands and side tables: +1 the hub's left (+x, its left_of edge), -1 its right, 0 either
 };
 // The group role of an object standing on the floor, read from its category and its edges to the hub.
 Membership GroupMembership(const RoomState& state, int object);

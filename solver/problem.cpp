@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::string_view kKeepOutNames[] = {"door_sweep", "door_strip",  "open_passage",  "window_zone",
                                               "staircase",  "stair_hole", "stair_arrival", "other",
-                                              "walkway"};
+                                              "walkway",    "circulation"};
 constexpr std::string_view kRelationNames[] = {"ontop", "inside", "against_wall", "on_wall", "hanging"};
 constexpr std::string_view kPriorityNames[] = {"decorative", "prior", "named", "essential"};
 constexpr std::string_view kSemanticNames[] = {"face_to", "front_of", "behind", "left_of", "right_of",

@@ -28,7 +28,10 @@ namespace villa::solver {
 // the furnish pipeline maps them one to one, and the walkway the reachability feedback keeps free for a
 // person (solver/reach_feedback.h; floor coverings may lie on it). Names in messages depend on it.
 enum class KeepOutKind {
-  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther, kWalkway
+  kDoorSweep, kDoorStrip, kOpenPassage, kWindowZone, kStaircase, kStairHole, kStairArrival, kOther, kWalkway,
+  // Issue 27: the way through a room between its doors (a room others are reached through keeps a path
+  // free, as a designer leaves circulation); floor coverings may lie on it.
+  kCirculation
 };
 std::string_view KeepOutKindName(KeepOutKind kind);  // "door_sweep", "door_strip", "open_passage", ...
 
@@ -114,6 +117,9 @@ struct ProblemObject {
   double scale_max = 1.0;
   Priority priority = Priority::kPrior;
   std::optional<InteractionZone> zone;  // V_int only; nullopt: none kept free
+  // Placement wishes of the planner (scene/scene.h kHint*: far_from_door, near_window, middle, corner,
+  // open_floor), read as preferences by the constructive start (solver/place.cpp).
+  std::vector<std::string> hints;
 };
 
 // SCENE.md's semantic relations; params as SceneEval's (face_to within max_deg; next_to gap 0-0.5,

@@ -1,7 +1,5 @@
 #include "solver/scene_problem.h"
 
-#include "solver/functional.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -9,6 +7,8 @@
 #include <set>
 
 #include "layout/geometry.h"
+#include "mesh/geometry2d.h"
+#include "solver/box.h"
 #include "solver/functional.h"
 
 namespace villa::solver {
@@ -69,6 +69,69 @@ std::vector<SemanticEdge> EdgesOf(const scene::SemanticEdge& e) {
   return edges;
 }
 
+// A room with two or more doors or opens is walked through: between every two of them a corridor 0.7 m wide
+// stays free of furniture (rugs may lie on it), from a point 0.45 m inside each doorway, straight where the
+// straight way stays on the free floor, else through the free floor's inner corner that joins them; none
+// where neither does (the reachability check still walks the room). Heights: the floor to 2 m.
+std::vector<KeepOut> CirculationOf(const scene::RoomContext& context, const Ring& free_floor, double floor_z, double clear_height) {
+  constexpr double kInward = 0.45, kHalfWidth = 0.35;
+  std::vector<std::pair<std::string, Point>> ends;
+  for (const scene::ContextOpening& o : context.openings) {
+    if (o.kind == ElementKind::kWindow) continue;
+    const Point a = o.shape.a, b = o.shape.b;
+    const Point mid = geo::Scale(geo::Add(a, b), 0.5), n = geo::Left(geo::Unit(geo::Sub(b, a)));
+    for (double side : {1.0, -1.0}) {
+      const Point in = geo::Add(mid, geo::Scale(n, side * (kInward + 0.3)));  // past the wall's thickness
+      if (!PointInRing(in, free_floor, 0.0)) continue;
+      ends.push_back({o.name, geo::Add(mid, geo::Scale(n, side * kInward))});
+      break;
+    }
+  }
+  std::vector<KeepOut> out;
+  if (ends.size() < 2) return out;
+  auto clear = [&](Point p, Point q) {  // the segment stays on the free floor, kHalfWidth from its edge
+    const double length = geo::Dist(p, q);
+    for (double t = 0.0; t <= length; t += 0.1) {
+      const Point s = geo::Lerp(p, q, length > 0 ? t / length : 0.0);
+      if (!PointInRing(s, free_floor, 0.0) || DistanceToBoundary(s, free_floor) < kHalfWidth - 0.05) return false;
+    }
+    return true;
+  };
+  auto corridor = [&](Point p, Point q, const std::string& name) {
+    if (geo::Dist(p, q) < 1e-6) return;
+    const Point d = geo::Unit(geo::Sub(q, p)), n = geo::Scale(geo::Left(d), kHalfWidth);
+    Ring rect{geo::Sub(p, n), geo::Sub(q, n), geo::Add(q, n), geo::Add(p, n)};
+    out.push_back({std::move(rect), floor_z, floor_z + std::min(2.0, clear_height), KeepOutKind::kCirculation, name});
+  };
+  // Inner corners pushed off the walls to the corridor's middle: where a bent way turns.
+  std::vector<Point> turns;
+  for (Point v : ReflexVertices(free_floor)) {
+    Point best = v;
+    for (double dx : {-1.0, 1.0})
+      for (double dy : {-1.0, 1.0}) {
+        const Point t{v.x + dx * (kHalfWidth + 0.05), v.y + dy * (kHalfWidth + 0.05)};
+        if (PointInRing(t, free_floor, 0.0) && DistanceToBoundary(t, free_floor) > DistanceToBoundary(best, free_floor)) best = t;
+      }
+    turns.push_back(best);
+  }
+  for (size_t i = 0; i < ends.size(); ++i)
+    for (size_t j = i + 1; j < ends.size(); ++j) {
+      const std::string name = ends[i].first + " <-> " + ends[j].first;
+      const Point p = ends[i].second, q = ends[j].second;
+      if (clear(p, q)) {
+        corridor(p, q, name);
+        continue;
+      }
+      for (Point t : turns)
+        if (clear(p, t) && clear(t, q)) {
+          corridor(p, t, name);
+          corridor(t, q, name);
+          break;
+        }
+    }
+  return out;
+}
+
 Priority PriorityOf(const scene::SceneObject& o) {
   if (o.origin == scene::Origin::kPrompt) return Priority::kNamed;
   // Small things the priors put on or in furniture give way first.
@@ -112,6 +175,9 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
     if (k.polygon.size() < 3 || Area(k.polygon) <= 1e-9 || !(k.z_max > k.z_min)) continue;
     p.keep_outs.push_back({k.polygon, k.z_min, k.z_max, KindOf(k.kind), std::string(scene::KeepOutKindName(k.kind)) + " " + k.element});
   }
+
+  // The way through the room between its doors and opens (issue 27).
+  for (KeepOut& k : CirculationOf(context, p.free_floor, p.floor_z, p.clear_height)) p.keep_outs.push_back(std::move(k));
 
   // Building parts near the room on its level (and the staircase arriving from below).
   Box2 near = BoundingBox(context.polygon);
@@ -169,6 +235,7 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
     po.scale_min = kSceneScaleMin;
     po.scale_max = kSceneScaleMax;
     po.priority = PriorityOf(o);
+    po.hints = o.hints;
     if (o.interaction_zone) po.zone = InteractionZone{o.interaction_zone->side, o.interaction_zone->depth, o.interaction_zone->exempt};
     records[o.id] = po.asset;
     p.objects.push_back(std::move(po));
@@ -228,6 +295,23 @@ void MarkEssentials(Category room, RoomProblem& problem) {
   }
   for (ProblemObject& o : problem.objects)
     if (essential.count(o.id)) o.priority = Priority::kEssential;
+  // A desk's own chair (pulled in before it) goes with its desk: the room gives way to it like to what the
+  // request names.
+  for (ProblemObject& o : problem.objects)
+    for (const SemanticEdge& e : problem.edges)
+      if (e.source == o.id && e.relation == SemanticRelation::kNextTo && e.max_gap <= 0.5 &&
+          (o.category == "chair" || o.category == "office-chair" || o.category == "child-chair"))
+        if (const int d = problem.Find(e.target); d >= 0 && problem.objects[d].category == "desk")
+          o.priority = std::max(o.priority, Priority::kNamed);
+  // The rest of a living room's seating group (what its functional check asks for) is protected like what
+  // the request names: the first coffee table, TV stand and TV.
+  if (room == Category::kLivingRoom)
+    for (std::string_view core : {"coffee-table", "tv-stand", "tv"})
+      for (ProblemObject& o : problem.objects)
+        if (o.category == core) {
+          o.priority = std::max(o.priority, Priority::kNamed);
+          break;
+        }
 }
 
 std::vector<scene::SceneObject> SolvedSceneObjects(const RoomProblem& problem, const RoomSolution& solution,

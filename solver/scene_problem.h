@@ -45,7 +45,8 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
 
 // Issue 27: the room type's essential pieces (solver/functional.h EssentialsOf: the first of each needed
 // category, as many as it needs) and what carries them get Priority::kEssential, so that the agent, the
-// critic and the reachability feedback make room for them rather than remove them.
+// critic and the reachability feedback make room for them rather than remove them; a living room's coffee
+// table, TV stand and TV (the rest of its seating group) are protected as named ones.
 void MarkEssentials(Category room, RoomProblem& problem);
 
 // The scene's objects after solving: every object of `solution` posed (pose, uniform scale, size = asset

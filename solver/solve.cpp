@@ -118,7 +118,21 @@ struct RoomSolver::Impl {
     PlaceLayer(layer, state, options, rng, jitter, &stats);
     summary.candidates += stats.candidates;
     summary.seconds_place += Since(t);
+    // Issue 27: functional groups stand as their templates put them; the polish moves the rest around them
+    // (polished body by body, a member drifts off its group: a coffee table turned off its sofa's axis).
+    std::vector<Motion> motions;
+    if (options.functional_groups && layer.kind == Layer::Kind::kRoom) {
+      for (Body& b : layer.bodies) {
+        motions.push_back(b.motion);
+        const Membership m = GroupMembership(state, b.object);
+        const bool hub = m.role == GroupRole::kNone && !MembersOf(b.object).empty();
+        if (b.active && (m.role != GroupRole::kNone || hub) &&
+            Evaluate(MakeTerms(layer, state, options, static_cast<int>(&b - layer.bodies.data()), -1.0)).hard <= kFeasible)
+          b.motion = Motion::kFixed;
+      }
+    }
     const PolishStats polish = Polish(layer, state, options);
+    for (size_t k = 0; k < motions.size(); ++k) layer.bodies[k].motion = motions[k];
     Account(polish);
     return polish.cost;
   }
@@ -153,6 +167,7 @@ struct RoomSolver::Impl {
       if (best_cost.hard <= kFeasible) break;
     }
     if (best_layer) WriteLayer(*best_layer);
+    if (options.functional_groups) Regroup();
     // Walls and ceiling, the floor fixed.
     if (!hung.empty()) {
       Layer layer = RoomLayer(state, hung, floor);
@@ -181,6 +196,20 @@ struct RoomSolver::Impl {
         Rng rng(options.seed ^ (0xB00Cull + static_cast<uint64_t>(p) * 131 + key.second));
         Construct(layer, rng, 0.0);
         WriteLayer(layer);
+      }
+    }
+  }
+
+  // Issue 27: a polish moves every body on its own, and can draw a member out of its group (a coffee table
+  // turned and pulled off its sofa's axis by its other terms): such a member takes its best template pose
+  // again where one is free.
+  void Regroup() {
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int j = static_cast<int>(k);
+      if (state.parent[j] >= 0 || GroupProblem(j).empty()) continue;
+      if (auto slot = FindSlot(j)) {
+        state.placements[j].wall = slot->wall;
+        state.SetPose(j, slot->pose);
       }
     }
   }
@@ -240,12 +269,16 @@ struct RoomSolver::Impl {
 
   // ---- one object in its own layer, everything else fixed
 
-  Layer LayerFor(int i) const {
+  // Object i's layer with everything else fixed (`without`: objects left out of it, a hub's members that
+  // move with it).
+  Layer LayerFor(int i, const std::vector<int>& without = {}) const {
     const int p = state.parent[i];
     if (p < 0) {
       std::vector<int> others;
       for (size_t k = 0; k < state.objects.size(); ++k) {
-        if (static_cast<int>(k) != i && state.parent[k] < 0 && state.placements[k].placed) others.push_back(static_cast<int>(k));
+        if (static_cast<int>(k) != i && state.parent[k] < 0 && state.placements[k].placed &&
+            std::find(without.begin(), without.end(), static_cast<int>(k)) == without.end())
+          others.push_back(static_cast<int>(k));
       }
       return RoomLayer(state, {i}, others);
     }
@@ -298,30 +331,36 @@ struct RoomSolver::Impl {
         (o.relation == Relation::kInside ? state.placements[i].cavity : state.placements[i].surface) = g;
         state.placements[i].pose.z = state.SupportHeight(i);
       }
-      Layer layer = LayerFor(i);
-      layer.walkways_bind_all = true;  // a slot out of the reachability feedback's way, for everything
-      if (TooTall(layer, i)) continue;
-      // Its best candidate polished; when the polish does not end clean (a hair of overlap left), the next
-      // best, up to four.
-      Rng rng(options.seed ^ (0x5107ull + i));
-      const auto t = Clock::now();
-      PlaceStats stats;
-      double polishing = 0.0;  // s of the above spent polishing (Account counts it as polish time)
-      PlaceBodyAmong(layer, 0, state, options, rng, 4, &stats, [&] {
-        const auto p = Clock::now();
-        const PolishStats polish = Polish(layer, state, options);
-        polishing += Since(p);
-        Account(polish);
-        if (polish.cost.hard > kFeasible) return false;
-        RoomState probe = state;
-        WriteBack(layer, 0, probe);
-        const ObjectPlacement& found = probe.placements[i];
-        const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
-        if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
-        return true;
-      });
-      summary.candidates += stats.candidates;
-      summary.seconds_place += Since(t) - polishing;
+      // A hub's members move with it (issue 27): they are no obstacles to its new slot, and a slot where one
+      // of them finds no place by it is passed over while another has room for the whole group.
+      const std::vector<int> members = p < 0 && options.functional_groups ? MembersOf(i) : std::vector<int>{};
+      for (int pass = members.empty() ? 1 : 0; pass < 2 && !best; ++pass) {
+        Layer layer = LayerFor(i, members);
+        layer.walkways_bind_all = true;  // a slot out of the reachability feedback's way, for everything
+        if (TooTall(layer, i)) continue;
+        // Its best candidate polished; when the polish does not end clean (a hair of overlap left), the next
+        // best, up to four (twelve for a hub whose group must come along).
+        Rng rng(options.seed ^ (0x5107ull + i));
+        const auto t = Clock::now();
+        PlaceStats stats;
+        double polishing = 0.0;  // s of the above spent polishing (Account counts it as polish time)
+        PlaceBodyAmong(layer, 0, state, options, rng, pass == 0 ? 12 : 4, &stats, [&] {
+          const auto p = Clock::now();
+          const PolishStats polish = Polish(layer, state, options);
+          polishing += Since(p);
+          Account(polish);
+          if (polish.cost.hard > kFeasible) return false;
+          RoomState probe = state;
+          WriteBack(layer, 0, probe);
+          const ObjectPlacement& found = probe.placements[i];
+          if (pass == 0 && !GroupFitsAt(i, members, found)) return false;
+          const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
+          if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
+          return true;
+        });
+        summary.candidates += stats.candidates;
+        summary.seconds_place += Since(t) - polishing;
+      }
     }
     state.placements[i] = saved;
     return best;
@@ -427,7 +466,14 @@ struct RoomSolver::Impl {
           if (state.parent[k] < 0) room_level.push_back(static_cast<int>(k));
         }
         Layer layer = RoomLayer(state, room_level, {});
-        PolishInto(layer);
+        // Undone when it ends in harder trouble than it started (a walkway's push can leave a chair in its
+        // desk where the room is tight).
+        const double hard_before = Evaluate(MakeTerms(layer, state, options, -1, -1.0)).hard;
+        const RoomState unpolished = state;
+        const PolishStats polish = Polish(layer, state, options);
+        Account(polish);
+        if (polish.cost.hard <= hard_before + kFeasible) WriteLayer(layer);
+        else state = unpolished;
       }
       return r;
     }
@@ -468,6 +514,10 @@ struct RoomSolver::Impl {
     // A hub carries its group's members (issue 27): the chairs go with their table, the nightstands with
     // their bed; a member that lands in trouble is seated again from its template.
     const std::vector<int> members = options.functional_groups ? MembersOf(i) : std::vector<int>{};
+    std::set<std::string> troubled;  // members in hard trouble already: theirs to mend, no reason to refuse
+    for (int j : members)
+      if (CostAt(j).hard > kFeasible) troubled.insert(state.objects[j].id);
+    const bool in_group = options.functional_groups && GroupProblem(i).empty();
     const Pose from = state.placements[i].pose;
     state.SetPose(i, Snap(i, want));
     if (!members.empty()) Carry(members, from, state.placements[i].pose);
@@ -477,18 +527,45 @@ struct RoomSolver::Impl {
       state = saved;
       return Refuse(r, "no free pose for \"" + action.id + "\" there or elsewhere: it would collide or leave its support");
     }
+    std::vector<std::string> dropped;
     if (!members.empty()) {
       Carry(members, snapped, state.placements[i].pose);
-      Reseat(members);
+      // The group moves as a unit: a member with no free pose at its hub's new place is dropped when it is
+      // optional and the agent or the reachability feedback moves the hub (to mend a hard violation or clear
+      // a way); a protected one, or any for a critic's move (semantics never cost a member), keeps the hub
+      // where it was.
+      const bool critic = action.reason.rfind("critic:", 0) == 0;
+      std::vector<std::string> stuck;
+      for (int j : Reseat(members)) {
+        if (troubled.count(state.objects[j].id)) continue;
+        if (critic || IsProtected(state.objects[j].priority)) {
+          state = saved;
+          return Refuse(r, "\"" + action.id + "\" cannot take its group along there: " + state.objects[j].id +
+                               " finds no free place by it");
+        }
+        stuck.push_back(state.objects[j].id);
+      }
+      for (const std::string& id : stuck)
+        if (const int j = state.Find(id); j >= 0) {
+          const std::vector<std::string> gone = state.Remove(j);
+          dropped.insert(dropped.end(), gone.begin(), gone.end());
+        }
     }
-    // A member stays in its group: a move that would carry it out of its template is refused.
-    if (const std::string problem = options.functional_groups ? GroupProblem(i) : ""; !problem.empty()) {
+    // A member stays in its group: a move that would carry it out of its group's rules is refused (one
+    // already out of them may move, towards them or not).
+    if (const std::string problem = in_group ? GroupProblem(i) : ""; !problem.empty()) {
       state = saved;
       return Refuse(r, "\"" + action.id + "\" would leave its group: " + problem);
     }
     r.status = how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
     r.message = how.empty() ? "done" : how;
-    r.final_pose = state.placements[i].pose;
+    if (!dropped.empty()) {
+      r.removed = dropped;
+      summary.removed.insert(summary.removed.end(), dropped.begin(), dropped.end());
+      r.message += "; its group came along, " + std::to_string(dropped.size()) + " optional object(s) with no place by it left out";
+    }
+    const int at = state.Find(action.id);
+    r.final_pose = state.placements[at].pose;
     return r;
   }
 
@@ -542,16 +619,34 @@ struct RoomSolver::Impl {
     }
   }
 
-  // Members in hard trouble or out of their template after their hub moved take their best template pose.
-  void Reseat(const std::vector<int>& members) {
+  // Whether hub i at `at` takes its members along: carried rigidly, each free there or re-seated from its
+  // template. The state is left as it was.
+  bool GroupFitsAt(int i, const std::vector<int>& members, const ObjectPlacement& at) {
+    const RoomState before = state;
+    const Pose from = state.placements[i].pose;
+    state.placements[i].wall = at.wall;
+    state.SetPose(i, at.pose);
+    Carry(members, from, at.pose);
+    const bool fits = Reseat(members).empty();
+    state = before;
+    return fits;
+  }
+
+  // Members in hard trouble or out of their template after their hub moved take their best template pose;
+  // the ones in hard trouble that find none.
+  std::vector<int> Reseat(const std::vector<int>& members) {
+    std::vector<int> stuck;
     for (int j : members) {
       if (CostAt(j).hard <= kFeasible && GroupProblem(j).empty()) continue;
       if (auto slot = FindSlot(j)) {
         ObjectPlacement& pl = state.placements[j];
         pl.wall = slot->wall;
         state.SetPose(j, slot->pose);
+      } else if (CostAt(j).hard > kFeasible) {
+        stuck.push_back(j);
       }
     }
+    return stuck;
   }
 
   ActionResult AddEntity(const Action& action, ActionResult r) {
@@ -610,6 +705,7 @@ struct RoomSolver::Impl {
       const ProblemObject& A = state.objects[a];
       const ProblemObject& B = state.objects[b];
       if (A.priority != B.priority) return A.priority < B.priority ? a : b;
+      if (const int m = MemberOfOther(a, b); m >= 0) return m;  // a group's member yields to its hub
       return Volume(A, state.placements[a].pose.scale) <= Volume(B, state.placements[b].pose.scale) ? a : b;
     };
     // Objects in trouble with the building (a wall, a door leaf or sweep, the stairs): a child there because
@@ -652,6 +748,14 @@ struct RoomSolver::Impl {
     return out;
   }
 
+  // Of objects a and b, the one that is a member of the other's functional group (issue 27), else -1.
+  int MemberOfOther(int a, int b) const {
+    if (a == b || !options.functional_groups) return -1;
+    if (GroupMembership(state, a).hub == b) return a;
+    if (GroupMembership(state, b).hub == a) return b;
+    return -1;
+  }
+
   // Who goes when nothing else helps: the least important of the object and those it conflicts with
   // (its collision partners, its siblings on the same surface or in the same cavity).
   int LeastImportant(int i) const {
@@ -686,8 +790,9 @@ struct RoomSolver::Impl {
       if (k < 0) continue;
       const ProblemObject& K = state.objects[k];
       const ProblemObject& P = state.objects[pick];
-      if (K.priority < P.priority ||
-          (K.priority == P.priority && Volume(K, state.placements[k].pose.scale) < Volume(P, state.placements[pick].pose.scale) - 1e-12))
+      if (K.priority < P.priority || (K.priority == P.priority && MemberOfOther(k, pick) == k) ||
+          (K.priority == P.priority && MemberOfOther(k, pick) < 0 &&
+           Volume(K, state.placements[k].pose.scale) < Volume(P, state.placements[pick].pose.scale) - 1e-12))
         pick = k;
     }
     return pick;
@@ -702,6 +807,8 @@ struct RoomSolver::Impl {
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);
       if (kk == i || IsProtected(state.objects[k].priority) || state.parent[k] != p) continue;
+      // Its own group goes with it, not for it (its members, its hub).
+      if (GroupMembership(state, kk).hub == i || GroupMembership(state, i).hub == kk) continue;
       if (p < 0 && state.Hung(kk) != state.Hung(i)) continue;
       // Nothing protected stands on it (the counter under the sink stays).
       const std::vector<int> below = state.Descendants(kk);
@@ -736,6 +843,31 @@ struct RoomSolver::Impl {
       ids.insert(a);
     }
     return {ids.begin(), ids.end()};
+  }
+
+  // A member of i's group whose box overlaps i's (a chair pulled into its shrunk table): moved to its best
+  // template slot, else removed; none when no member is in i's way.
+  std::optional<Action> MemberOutOfTheWay(int i) {
+    if (!options.functional_groups) return std::nullopt;
+    const std::string& id = state.objects[i].id;
+    for (const auto& [a_id, b_id] : energy.overlaps) {
+      const std::string other = a_id == id ? b_id : b_id == id ? a_id : "";
+      const int j = other.empty() ? -1 : state.Find(other);
+      if (j < 0 || GroupMembership(state, j).hub != i) continue;
+      Action a;
+      a.id = other;
+      if (auto slot = FindSlot(j)) {
+        a.kind = ActionKind::kUpdatePose;
+        a.pose = slot->pose;
+        if (slot->wall >= 0 && slot->wall != state.placements[j].wall) a.wall = slot->wall;
+        a.reason = "in the way of its group's " + state.objects[i].category + ": re-seated";
+      } else {
+        a.kind = ActionKind::kRemoveEntity;
+        a.reason = "in the way of its group's " + state.objects[i].category + " and no seat free by it: remove it";
+      }
+      return a;
+    }
+    return std::nullopt;
   }
 
   // The removal that lets protected object i find a slot (MakeWayFor), as an action; none when none does.
@@ -829,6 +961,11 @@ struct RoomSolver::Impl {
         // unprotected object make room for it.
         ++n;
         if (IsProtected(o.priority)) {
+          // Its own group's member in its way yields to it: re-seated from its template, else taken out.
+          if (std::optional<Action> a = MemberOutOfTheWay(i)) {
+            n = 0;
+            return a;
+          }
           if (std::optional<Action> a = MakeWayAction(i)) {
             n = 0;
             return a;

@@ -152,16 +152,20 @@ TEST_CASE("The model critic's requests carry five PNG views as data URIs, the st
 
 TEST_CASE("An answer that removes an object removes it (and what stands on it), the room stays physically valid", "[critic][mllm]") {
   auto room = testing::MakeCriticRoom("living-room_0/0");
-  const std::string lamp = "living-room_0/0/floor-lamp-0", table = "living-room_0/0/coffee-table-0";
+  // (The coffee table is the seating group's and protected, issue 27: a side table carries its lamp.)
+  const std::string lamp = "living-room_0/0/floor-lamp-0", table = "living-room_0/0/side-table-0";
   REQUIRE(room->mapped.problem.Find(lamp) >= 0);
+  REQUIRE(room->mapped.problem.Find(table) >= 0);
+  REQUIRE(std::any_of(room->mapped.problem.objects.begin(), room->mapped.problem.objects.end(),
+                      [&](const solver::ProblemObject& o) { return o.parent == table; }));
   ScriptedServer server({Answer(Evaluation(5, {{{"floor-lamp-0"}, "the lamp blocks the way"}})),
-                         Answer(Json{{"actions", Json::array({Action("remove_entity", "floor-lamp-0"), Action("remove_entity", "coffee-table-0")})}})});
+                         Answer(Json{{"actions", Json::array({Action("remove_entity", "floor-lamp-0"), Action("remove_entity", "side-table-0")})}})});
   auto result = critic::CritiqueRoom(room->input, ModelCritic(server));
   REQUIRE(result.ok());
   const solver::RoomSolution& s = result->solution;
   CHECK(PlacementOf(s, lamp) == nullptr);
   CHECK(PlacementOf(s, table) == nullptr);
-  // What stood on the coffee table went with it.
+  // What stood on the side table went with it.
   for (const solver::ProblemObject& o : s.objects) CHECK(o.parent != table);
   CHECK(s.summary.metrics.Clean());
   CHECK(s.summary.metrics.colliding == 0);

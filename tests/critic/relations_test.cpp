@@ -167,6 +167,7 @@ TEST_CASE("The critic's measure agrees with the solver's energy on every edge of
         CHECK(e.edge_violation[k] > 1e-9);
       ++measured;
     }
+    INFO(name << ": " << s.objects.size() << " objects, " << s.edges.size() << " edges; " << s.summary.BriefReport());
     CHECK(measured > 0);
   }
 }

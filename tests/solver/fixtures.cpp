@@ -1,6 +1,7 @@
 #include "fixtures.h"
 
 #include <cmath>
+#include <numbers>
 #include <map>
 
 #include "mesh/geometry2d.h"
@@ -292,11 +293,13 @@ class Builder {
     ProblemObject& o = Get(owner);
     if (o.zone) o.zone->exempt.push_back(other);
   }
-  // Chairs around a table: facing it, next to it, in its zone's exemption list when it has one.
+  // Chairs around a table: facing it (the side they sit at: within 75 degrees of its centre, as the priors'
+  // seats), next to it, in its zone's exemption list when it has one.
   void ChairsAround(const std::string& table, int n, const std::string& category, double w, double d, double h) {
     for (int k = 0; k < n; ++k) {
       const std::string chair = Free(category, w, d, h);
       Edge(chair, SemanticRelation::kFaceTo, table);
+      room_.edges.back().max_angle = 75.0 * std::numbers::pi / 180.0;
       Edge(chair, SemanticRelation::kNextTo, table);
     }
   }

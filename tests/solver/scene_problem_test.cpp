@@ -2,6 +2,9 @@
 // objects and the building become a RoomProblem; the solution becomes posed scene objects again.
 #include <catch2/catch.hpp>
 
+#include "layout/geometry.h"
+#include "mesh/geometry2d.h"
+
 #include <map>
 #include <numbers>
 
@@ -95,7 +98,21 @@ TEST_CASE("A room's context, objects and building become the solver's problem", 
     for (const solver::WallOpening& o : w.openings)
       window = window || (o.z0 == Approx(p.floor_z + 0.9) && o.z1 == Approx(p.floor_z + 2.1));
   CHECK(window);
-  CHECK(p.keep_outs.size() == h.living.keep_outs.size());
+  // The context's keep-outs one to one, and the way through the room between its doors (issue 27): every
+  // corridor 0.7 m wide, on the free floor.
+  size_t circulation = 0;
+  for (const solver::KeepOut& k : p.keep_outs) {
+    if (k.kind != solver::KeepOutKind::kCirculation) continue;
+    ++circulation;
+    REQUIRE(k.polygon.size() == 4);
+    CHECK(geo::Dist(k.polygon[0], k.polygon[3]) == Approx(0.7));
+    CHECK(PointInRing(geo::Lerp(geo::Lerp(k.polygon[0], k.polygon[3], 0.5), geo::Lerp(k.polygon[1], k.polygon[2], 0.5), 0.5),
+                      p.free_floor, 0.0));
+  }
+  CHECK(p.keep_outs.size() - circulation == h.living.keep_outs.size());
+  int doors = 0;
+  for (const scene::ContextOpening& o : h.living.openings) doors += o.kind != ElementKind::kWindow;
+  CHECK((doors >= 2) == (circulation > 0));
   // Building parts: walls and door leaves of level 0 near the room, nothing else.
   CHECK(p.building.size() >= 4);
   for (const solver::BuildingPart& b : p.building) {
