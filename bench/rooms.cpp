@@ -40,27 +40,21 @@ struct Row {
     out += m.out_of_bounds, inside += m.inside_edges, contained += m.contained;
   }
   std::vector<std::string> Cells(const std::string& label) const {
-    auto frac = [](int ok, int n) { return n ? std::to_string(ok) + "/" + std::to_string(n) : std::string("-"); };
     auto pct = [](int n, int d) { return d ? FormatFixed(100.0 * n / d, 1) : std::string("-"); };
-    return {label,
-            std::to_string(rooms),
-            FormatFixed(rooms ? double(objects) / rooms : 0.0, 1),
-            frac(f.rooms_essential, f.with_essentials),
-            frac(f.chairs_ok, f.chairs) + (f.chairs_far ? " (" + std::to_string(f.chairs_far) + " far)" : ""),
-            frac(f.seating_ok, f.seating),
-            frac(f.desks_ok, f.desks),
-            frac(f.nightstands_ok, f.nightstands),
-            frac(f.pillows_ok, f.pillows),
-            frac(f.floor_ok, f.floor_rooms),
-            frac(f.wishes_ok, f.wishes),
-            std::to_string(f.odd),
-            pct(colliding, objects) + "/" + pct(floating, consumers) + "/" + pct(out, objects),
-            inside ? pct(contained, inside) : "-",
-            FormatFixed(rooms ? cpu / rooms : 0.0, 3)};
+    std::vector<std::string> cells{label, std::to_string(rooms), FormatFixed(rooms ? double(objects) / rooms : 0.0, 1)};
+    for (std::string& c : f.Cells()) cells.push_back(std::move(c));
+    for (std::string c : {pct(colliding, objects) + "/" + pct(floating, consumers) + "/" + pct(out, objects),
+                          inside ? pct(contained, inside) : std::string("-"), FormatFixed(rooms ? cpu / rooms : 0.0, 3)})
+      cells.push_back(std::move(c));
+    return cells;
   }
 };
-const std::vector<std::string> kHeader{"room type", "rooms", "NO", "essentials", "table chairs", "seating", "desks",
-                                       "nightstands", "pillows", "floor", "wishes", "odd", "CR/FR/OBR %", "CSR %", "s a room"};
+std::vector<std::string> Header() {
+  std::vector<std::string> h{"room type", "rooms", "NO"};
+  for (const std::string& c : solver::FunctionalTally::Header()) h.push_back(c);
+  for (const char* c : {"CR/FR/OBR %", "CSR %", "s a room"}) h.push_back(c);
+  return h;
+}
 
 }  // namespace
 
@@ -137,26 +131,12 @@ int main(int argc, char** argv) {
       total.Add(r);
       const solver::FunctionalCheck& c = *r.functional;
       if (!failing || c.ok()) continue;
-      std::string line = v.name + " " + r.room + " (" + FormatFixed(r.area, 1) + " m2):";
-      if (!c.missing.empty()) {
-        line += " missing";
-        for (const std::string& m : c.missing) line += " " + m;
-        line += c.missing_why.empty() ? ";" : " (" + c.missing_why + ");";
-      }
-      for (const solver::GroupCheck& g : c.groups)
-        for (const std::string& p : g.problems) line += " [" + g.kind + "] " + p + ";";
-      if (c.floor_measured && !c.floor_ok)
-        line += " floor: bare disc r " + FormatFixed(c.bare_radius, 2) + " m (<= " + FormatFixed(c.bare_limit, 2) + ") at (" +
-                FormatFixed(c.bare_centre.x, 1) + ", " + FormatFixed(c.bare_centre.y, 1) + "), far " +
-                FormatFixed(100.0 * c.far_share, 0) + " %;";
-      for (const solver::FunctionalCheck::Wish& w : c.wishes)
-        if (!w.ok) line += " wish " + w.category + " " + std::to_string(w.present) + "/" + std::to_string(w.asked) + " (" + w.why + ");";
-      for (const std::string& o : c.odd) line += " odd: " + o + ";";
+      const std::string line = v.name + " " + r.room + " (" + FormatFixed(r.area, 1) + " m2): " + solver::FailingLine(c);
       lines.push_back(line);
     }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  TextTable table(kHeader);
+  TextTable table(Header());
   for (const auto& [name, row] : by_type) table.AddRow(row.Cells(name));
   table.AddRow(total.Cells("all"));
   std::printf("%zu villas, %d rooms; seconds are thread CPU seconds a room (plan, assets, solve, critic; reach not included)\n%s",

@@ -306,6 +306,7 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
   summary.jobs = options.furnish.jobs > 0 ? options.furnish.jobs : static_cast<int>(hardware);
   if (options.on_start) options.on_start(requests.size() * k);
   std::vector<double> adherence;
+  std::map<Category, solver::FunctionalTally> functional;
 
   for (size_t i = 0; i < requests.size(); ++i) {
     const SceneRequest& request = requests[i];
@@ -357,6 +358,14 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
           scene.summary = villa->summary;
           std::vector<RoomScore> rooms = RoomScoresOf(*villa, scene.layout, s);
           summary.rooms.insert(summary.rooms.end(), rooms.begin(), rooms.end());
+          for (const solver::RoomReport& r : villa->rooms) {
+            if (!r.asked || !r.functional) continue;
+            functional[r.category].Add(*r.functional);
+            summary.functional_all.Add(*r.functional);
+            if (!r.functional->ok())
+              summary.functional_failing.push_back(request.id + " scene " + std::to_string(s + 1) + " " + r.room + ": " +
+                                                   solver::FailingLine(*r.functional));
+          }
           summary.room_seconds += villa->summary.room_seconds;
           summary.furnished_rooms += villa->summary.furnished;
           if (villa->reach) {
@@ -378,6 +387,10 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
   }
   summary.adherence = Mean(adherence);
   summary.micro = MicroTableOf(summary.rooms);
+  for (Category c : kPaperOrder)
+    if (functional.count(c)) summary.functional.emplace_back(TypeName(c), functional[c]);
+  for (Category c : {Category::kBalcony, Category::kRoom})
+    if (functional.count(c)) summary.functional.emplace_back(TypeName(c), functional[c]);
   summary.seconds = Since(start);
   return summary;
 }
@@ -460,6 +473,54 @@ std::string TimesLine(const SceneEvalSummary& s) {
   return out;
 }
 
+// Issue 27's checks per room type: a table (text or Markdown), the summary line and the failing rooms.
+std::vector<std::vector<std::string>> FunctionalRows(const SceneEvalSummary& s) {
+  std::vector<std::vector<std::string>> rows;
+  auto add = [&](const std::string& name, const solver::FunctionalTally& t) {
+    std::vector<std::string> row{name, std::to_string(t.rooms)};
+    for (std::string& c : t.Cells()) row.push_back(std::move(c));
+    rows.push_back(std::move(row));
+  };
+  for (const auto& [type, tally] : s.functional) add(type, tally);
+  add("All", s.functional_all);
+  return rows;
+}
+
+std::vector<std::string> FunctionalHeader() {
+  std::vector<std::string> h{"room type", "rooms"};
+  for (const std::string& c : solver::FunctionalTally::Header()) h.push_back(c);
+  return h;
+}
+
+std::string FunctionalText(const SceneEvalSummary& s) {
+  if (s.functional_all.rooms == 0) return "";
+  TextTable t(FunctionalHeader());
+  for (auto& row : FunctionalRows(s)) t.AddRow(row);
+  std::string out = "Rooms as rooms (functional checks, docs/METRICS.md), per room type:\n" + t.Render();
+  out += "all: " + s.functional_all.Line() + "\n";
+  if (!s.functional_failing.empty()) {
+    out += "rooms whose functional check fails (" + std::to_string(s.functional_failing.size()) + "):\n";
+    for (const std::string& line : s.functional_failing) out += "  " + line + "\n";
+  }
+  return out;
+}
+
+std::string FunctionalMarkdown(const SceneEvalSummary& s) {
+  if (s.functional_all.rooms == 0) return "";
+  std::string out = "|";
+  const std::vector<std::string> header = FunctionalHeader();
+  for (const std::string& h : header) out += " " + h + " |";
+  out += "\n| --- |";
+  for (size_t i = 1; i < header.size(); ++i) out += " ---: |";
+  out += "\n";
+  for (const auto& row : FunctionalRows(s)) {
+    out += "|";
+    for (const std::string& c : row) out += " " + c + " |";
+    out += "\n";
+  }
+  return out;
+}
+
 std::string MacroLine(const SceneEvalSummary& s, bool markdown) {
   const MetricsSummary& m = s.macro;
   auto pct = [](std::optional<double> r) { return r ? FormatFixed(100.0 * *r, 1) : std::string("-"); };
@@ -509,10 +570,25 @@ std::string SceneEvalText(const SceneEvalSummary& s) {
   out << "Micro level, per room type (mean of " << (s.scenes.empty() ? 0 : s.scenes.size() / std::max<size_t>(1, s.layouts.size()))
       << " scenes per layout, then over layouts):\n";
   out << MicroTableText(s.micro) << "\n";
+  out << FunctionalText(s) << "\n";
   out << "Macro level:\n" << MacroLine(s, false) << "\n";
   out << TimesLine(s);
   return out.str();
 }
+
+namespace {
+Json FunctionalJsonOf(const SceneEvalSummary& s) {
+  Json by_type = Json::object();
+  for (const auto& [type, tally] : s.functional) {
+    Json t = tally.ToJson();
+    t["rooms"] = tally.rooms;
+    by_type[type] = std::move(t);
+  }
+  Json all = s.functional_all.ToJson();
+  all["rooms"] = s.functional_all.rooms;
+  return {{"by_room_type", std::move(by_type)}, {"all", std::move(all)}, {"failing", s.functional_failing}};
+}
+}  // namespace
 
 Json SceneEvalJson(const SceneEvalSummary& s) {
   Json layouts = Json::array();
@@ -552,6 +628,7 @@ Json SceneEvalJson(const SceneEvalSummary& s) {
           {"layouts", std::move(layouts)},
           {"scenes", std::move(scenes)},
           {"micro", MicroTableJson(s.micro)},
+          {"functional", FunctionalJsonOf(s)},
           {"macro", {{"layouts", s.layouts.size()}, {"FSR", ratio(s.macro.fsr())}, {"RR", ratio(s.macro.rr())},
                      {"RR_entrance", ratio(s.macro.rr_entrance())}, {"VCR", ratio(s.macro.vcr())},
                      {"brief_adherence", ratio(s.adherence)}}},
@@ -565,7 +642,9 @@ Json SceneEvalJson(const SceneEvalSummary& s) {
 }
 
 std::string SceneEvalMarkdown(const SceneEvalSummary& s) {
-  std::string out = "Micro level, per room type:\n\n" + MicroTableMarkdown(s.micro) + "\nMacro level:\n\n" + MacroLine(s, true) + "\n";
+  std::string out = "Micro level, per room type:\n\n" + MicroTableMarkdown(s.micro);
+  if (const std::string f = FunctionalMarkdown(s); !f.empty()) out += "\nRooms as rooms (functional checks), per room type:\n\n" + f;
+  out += "\nMacro level:\n\n" + MacroLine(s, true) + "\n";
   return out + TimesLine(s);
 }
 

@@ -120,6 +120,11 @@ struct SceneEvalSummary {
   std::vector<SceneResult> scenes;
   std::vector<RoomScore> rooms;
   MicroTable micro;
+  // Issue 27's functional checks (solver/functional.h) summed per room type (TypeName order: the paper's
+  // nine, then balconies and others) and over every furnished room.
+  std::vector<std::pair<std::string, solver::FunctionalTally>> functional;
+  solver::FunctionalTally functional_all;
+  std::vector<std::string> functional_failing;  // "<request id> scene k <room>: what fails", one a room
   MetricsSummary macro;             // over every layout
   std::optional<double> adherence;  // mean over the planned requests
   bool reach_measured = false;
@@ -143,8 +148,9 @@ std::string KeptLayoutName(size_t index, const std::string& id);
 // cannot be opened; a request that gives no valid layout is reported in its LayoutResult.
 Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& requests, const SceneEvalOptions& options);
 
-// The outputs of `villa eval --scenes`: a text report (a row per scene, the micro table, the macro table,
-// times and the ratio to the paper's ~15 min a room and ~225 min a villa), JSON, and Markdown tables.
+// The outputs of `villa eval --scenes`: a text report (a row per scene, the micro table, the functional
+// checks per room type with the failing rooms, the macro table, times and the ratio to the paper's ~15 min
+// a room and ~225 min a villa), JSON, and Markdown tables.
 std::string SceneEvalText(const SceneEvalSummary& summary);
 nlohmann::ordered_json SceneEvalJson(const SceneEvalSummary& summary);
 std::string SceneEvalMarkdown(const SceneEvalSummary& summary);

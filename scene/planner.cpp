@@ -447,6 +447,11 @@ class Planning {
         }
         if (n.parent < 0) return -1;
       }
+      // Pillows lie side by side at a bed's head: each at most half the bed's width (at the smallest scale
+      // the solver may give the bed) less a hand's breadth, else the second lies mid-bed (issue 27).
+      const Node& carrier = nodes_[n.parent];
+      if (info.name == "pillow" && (carrier.info->name == "bed" || carrier.info->name == "child-bed") && carrier.size.x >= 1.2)
+        n.size.x = std::max(info.size_min.x, Round2(std::min(n.size.x, 0.5 * (0.8 * carrier.size.x - 0.15))));
       nodes_.push_back(n);
       return static_cast<int>(nodes_.size()) - 1;
     }

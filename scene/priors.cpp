@@ -151,7 +151,7 @@ std::vector<RoomPriors> MakeTable() {
       OnWall("painting", 1, 1).Edge(R::kBehind, "bed").Edge(R::kCentered, "bed"),
       OnWall("mirror", 0, 1),
       Hang("ceiling-lamp", 1, 1),
-      On("pillow", 2, 2, {"bed"}),
+      On("pillow", 2, 2, {"bed"}).Edge(R::kBehind, "bed"),  // (ours, issue 27) at the head: the bed's back half
       On("table-lamp", 1, 2, {"nightstand"}).PerParent(1),
       On("alarm-clock", 1, 1, {"nightstand"}),
       On("books", 1, 4, {"nightstand", "dresser", "desk"}),  // PRIORS.md 2-4: one nightstand holds one pile
@@ -252,7 +252,7 @@ std::vector<RoomPriors> MakeTable() {
       On("toy", 1, 2, {"play-table", "child-bed"}),
       In("books", 3, 5, {"bookcase"}),
       On("table-lamp", 1, 1, {"nightstand"}),
-      On("pillow", 1, 1, {"child-bed"}),  // (ours)
+      On("pillow", 1, 1, {"child-bed"}).Edge(R::kBehind, "child-bed"),  // (ours) at the head
       In("folded-clothes", 0, 2, {"wardrobe"}),  // (ours)
   }});
 

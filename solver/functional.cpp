@@ -603,4 +603,42 @@ std::string FunctionalTally::Line() const {
          frac(floor_ok, floor_rooms) + " rooms, wishes " + frac(wishes_ok, wishes) + ", odd " + std::to_string(odd);
 }
 
+std::vector<std::string> FunctionalTally::Cells() const {
+  auto frac = [](int ok, int n) { return n ? std::to_string(ok) + "/" + std::to_string(n) : std::string("-"); };
+  return {frac(rooms_essential, with_essentials),
+          frac(chairs_ok, chairs) + (chairs_far ? " (" + std::to_string(chairs_far) + " far)" : ""),
+          frac(seating_ok, seating),
+          frac(desks_ok, desks),
+          frac(nightstands_ok, nightstands),
+          frac(pillows_ok, pillows),
+          frac(floor_ok, floor_rooms),
+          frac(wishes_ok, wishes),
+          std::to_string(odd)};
+}
+
+const std::vector<std::string>& FunctionalTally::Header() {
+  static const std::vector<std::string> header{"essentials", "table chairs", "seating", "desks", "nightstands",
+                                               "pillows",    "floor",        "wishes",  "odd"};
+  return header;
+}
+
+std::string FailingLine(const FunctionalCheck& c) {
+  std::string line;
+  const auto add = [&](const std::string& part) { line += (line.empty() ? "" : "; ") + part; };
+  if (!c.missing.empty()) {
+    std::string m = "missing";
+    for (const std::string& e : c.missing) m += " " + e;
+    add(c.missing_why.empty() ? m : m + " (" + c.missing_why + ")");
+  }
+  for (const GroupCheck& g : c.groups)
+    for (const std::string& p : g.problems) add("[" + g.kind + "] " + p);
+  if (c.floor_measured && !c.floor_ok)
+    add("floor: bare disc r " + Fixed(c.bare_radius, 2) + " m (<= " + Fixed(c.bare_limit, 2) + ") at (" + Fixed(c.bare_centre.x, 1) +
+        ", " + Fixed(c.bare_centre.y, 1) + "), " + Fixed(100.0 * c.far_share, 0) + " % of the free floor > 1.5 m from furniture");
+  for (const FunctionalCheck::Wish& w : c.wishes)
+    if (!w.ok) add("wish " + w.category + " " + std::to_string(w.present) + "/" + std::to_string(w.asked) + " (" + w.why + ")");
+  for (const std::string& o : c.odd) add("odd: " + o);
+  return line;
+}
+
 }  // namespace villa::solver

@@ -135,6 +135,14 @@ struct FunctionalTally {
   nlohmann::ordered_json ToJson() const;
   // "essentials 49/49 rooms, chairs 97/97 at their table, ..." for summaries.
   std::string Line() const;
+  // Table columns (ok/n, "-" with none): essentials, table chairs (with the far ones), seating, desks,
+  // nightstands, pillows, floor, wishes, odd; Header() names them.
+  std::vector<std::string> Cells() const;
+  static const std::vector<std::string>& Header();
 };
+
+// What fails in a room, one line ("missing bed (removed ...); [dining] chair-3: ...; floor: bare disc ...");
+// empty when everything holds.
+std::string FailingLine(const FunctionalCheck& check);
 
 }  // namespace villa::solver

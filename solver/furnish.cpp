@@ -812,6 +812,41 @@ PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
   if (villa.reach)
     for (const ReachFigures::Path& p : villa.reach->paths)
       overlay.paths.push_back({p.level, p.points, Rgb{0.07, 0.36, 0.66}, 1.6});
+  // Each functional group (issue 27) in a thin outline: the rectangle, in its hub's frame, around the hub
+  // and its members with 10 cm to spare; green when the group holds, red when its check fails.
+  std::map<std::string, const scene::SceneObject*> by_id;
+  for (const scene::SceneObject& o : villa.scene.objects)
+    if (o.pose) by_id[o.id] = &o;
+  for (const RoomReport& r : villa.rooms) {
+    if (!r.functional) continue;
+    for (const GroupCheck& g : r.functional->groups) {
+      const auto hub = by_id.find(g.anchor);
+      if (hub == by_id.end() || g.members.empty()) continue;
+      const scene::Pose& h = *hub->second->pose;
+      const Point u{std::cos(h.yaw), std::sin(h.yaw)}, v{-u.y, u.x};
+      double x0 = 1e18, x1 = -1e18, y0 = 1e18, y1 = -1e18;
+      auto take = [&](const scene::SceneObject& o) {
+        const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw), hx = o.size.x / 2.0, hy = o.size.y / 2.0;
+        for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}}) {
+          const Point d{o.pose->x + c * x - s * y - h.x, o.pose->y + s * x + c * y - h.y};
+          const double a = d.x * u.x + d.y * u.y, b = d.x * v.x + d.y * v.y;
+          x0 = std::min(x0, a), x1 = std::max(x1, a), y0 = std::min(y0, b), y1 = std::max(y1, b);
+        }
+      };
+      take(*hub->second);
+      for (const std::string& m : g.members)
+        if (const auto it = by_id.find(m); it != by_id.end()) take(*it->second);
+      constexpr double kPad = 0.1;
+      x0 -= kPad, x1 += kPad, y0 -= kPad, y1 += kPad;
+      PlanOverlay::Path outline;
+      outline.level = hub->second->level;
+      for (const auto& [a, b] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}})
+        outline.points.push_back({h.x + a * u.x + b * v.x, h.y + a * u.y + b * v.y});
+      outline.color = g.ok() ? Rgb{0.13, 0.55, 0.13} : Rgb{0.80, 0.10, 0.10};
+      outline.width_px = 1.2;
+      overlay.paths.push_back(std::move(outline));
+    }
+  }
   return overlay;
 }
 

@@ -238,7 +238,8 @@ Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::Roo
 // What plan.png draws over the floor plan: every placed object's oriented box (its size x scale, turned
 // by its yaw) in a muted tone of its room's colour, on its level, lowest objects first so what stands
 // on a table shows over it (objects hung from the ceiling are left out: they would cover the room), and
-// the reachability check's walking paths (villa.reach) as thin lines when it ran.
+// the reachability check's walking paths (villa.reach) as thin lines when it ran, and a thin outline
+// around each functional group of the rooms' checks (green when it holds, red when it fails).
 PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa);
 // plan.png: the floor plans of every level with that overlay.
 Result<std::string> FurnishedPlanPng(const FurnishedVilla& villa);

@@ -337,12 +337,19 @@ bool OneOf(const std::string& category, std::initializer_list<std::string_view> 
   return std::find(names.begin(), names.end(), category) != names.end();
 }
 
-// The clear strip behind a seat (its back edge outwards, its width, `depth` m) lies on the free floor.
-bool BehindOnFloor(const Ring& region, Point centre, Point out, Point along, double half_width, double half_depth, double depth) {
+// The clear strip behind a seat (its back edge outwards, its width, `depth` m) lies on the free floor and
+// outside what stands there already (a sideboard against the wall behind it), but `self` and `hub`.
+bool BehindClear(const Layer& layer, int self, int hub, Point centre, Point out, Point along, double half_width,
+                 double half_depth, double depth) {
   for (double s : {-0.9, 0.0, 0.9})
-    for (double d : {0.5 * depth, depth}) {
+    for (double d : {0.25 * depth, 0.5 * depth, depth}) {
       const Point p = geo::Add(geo::Add(centre, geo::Scale(out, half_depth + d)), geo::Scale(along, s * half_width));
-      if (!PointInRing(p, region, 0.0)) return false;
+      if (!PointInRing(p, layer.region, 0.0)) return false;
+      for (size_t k = 0; k < layer.bodies.size(); ++k) {
+        const Body& q = layer.bodies[k];
+        if (static_cast<int>(k) == self || static_cast<int>(k) == hub || !q.active || q.covering) continue;
+        if (LayerBox(q).ContainsPlan(p)) return false;
+      }
     }
   return true;
 }
@@ -475,7 +482,7 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
       const bool dining = OneOf(state.objects[m.hub].category, {"dining-table", "conference-table"});
       auto seat = [&](Point normal, Point along, double offset, double extent, double pref) {
         const Point c = geo::Add(geo::Add(box.c, geo::Scale(normal, extent + gap + cy)), geo::Scale(along, offset));
-        const bool roomy = BehindOnFloor(layer.region, c, normal, along, cx, cy, dining ? 0.75 : 0.3);
+        const bool roomy = BehindClear(layer, self, layer.body_of[m.hub], c, normal, along, cx, cy, dining ? 0.75 : 0.3);
         if (!roomy && !protect && dining) return;
         add(c, YawFacing(geo::Scale(normal, -1.0)), pref + (roomy ? 0.0 : 3.0));
       };
@@ -668,8 +675,23 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
   Point centroid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
   const double step = std::clamp(0.5 * std::min(hx, hy), 0.01, 0.05);
-  // Pillows lie at the head of a bed and against the back of a sofa: the parent's back (+y of its frame).
+  // Pillows lie at the head of a bed and against the back of a sofa: the parent's back (+y of its frame),
+  // in as many evenly spaced places as the parent has pillows, side by side (issue 27: a first one in the
+  // middle left the second none beside it, and it lay mid-bed), turned a quarter where they are too wide.
   const bool at_back = state.objects[b.object].category == "pillow";
+  if (at_back && layer.parent >= 0) {
+    int n = 0;
+    for (int c : state.children[layer.parent]) n += state.objects[c].category == "pillow";
+    n = std::max(n, 1);
+    for (double yaw : {0.0, kHalfPi}) {
+      const double ex = Extent(hx, hy, yaw, {1, 0}), ey = Extent(hx, hy, yaw, {0, 1});
+      const double pitch = (x1 - x0) / n;
+      for (int k = 0; k < n; ++k) {
+        const double x = std::clamp(x0 + (k + 0.5) * pitch, x0 + ex + 0.006, x1 - ex - 0.006);
+        out.push_back({x, y1 - ey - 0.006, b.p[2], yaw, -1, 0.05 * k + (yaw != 0.0 ? 0.3 : 0.0)});
+      }
+    }
+  }
   for (double yaw : {0.0, kHalfPi, kPi, -kHalfPi}) {
     for (double x = x0; x <= x1 + 1e-9; x += step) {
       for (double y = y0; y <= y1 + 1e-9; y += step) {
@@ -680,9 +702,7 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
           nearest = std::min(nearest, std::hypot(q.p[0] - x, q.p[1] - y));
         }
         double pref = 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0);
-        // Side by side along the back, from one end: a first pillow in the middle leaves the second no room
-        // beside it, and it lay mid-bed.
-        if (at_back) pref = 1.0 * (y1 - y) + 0.1 * (x - x0) + (yaw != 0.0 ? 0.5 : 0.0);
+        if (at_back) pref = 1.0 + 1.0 * (y1 - y) + (yaw != 0.0 ? 0.1 : 0.0);  // behind the places at the back
         out.push_back({x, y, b.p[2], yaw, -1, pref});
       }
     }
@@ -834,7 +854,11 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     // placed after the group: children's rooms on the prompt set lost 1.5 objects each).
     // (FacedFromAfar read the front_of edge's own gap, which the problem carries on a separate gap edge, and
     // so never held before issue 27: kept so without the groups.)
-    const size_t kLookahead = o.functional_groups && FacedFromAfar(state, layer.bodies[b].object) ? 12 : 4;
+    // Issue 27: a table seating chairs tries twelve too (where every chair has 0.75 m behind it).
+    const bool seats = std::any_of(dependents.begin(), dependents.end(), [&](int k) {
+      return GroupMembership(state, layer.bodies[k].object).role == GroupRole::kTableSeat;
+    });
+    const size_t kLookahead = o.functional_groups && (FacedFromAfar(state, layer.bodies[b].object) || seats) ? 12 : 4;
     // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
     std::vector<Scored> tries;
     for (const Scored& t : RankCandidates(layer, b, state, o, rng, jitter, 64, stats)) {

@@ -175,7 +175,7 @@ std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id
   const ProblemObject& o = now.objects[i];
   const std::optional<InteractionZone> zone = ZoneOf(o);
   if (!zone) return std::nullopt;
-  int tries = 0;
+  int tries = 0, refused = 0;
   for (const Slot& slot : FloorSlots(solver.Problem(), o, now.placements[i], options.slot_step)) {
     if (slot.distance > max_move) break;
     const OrientedBox box = StandingBox(o, slot.pose);
@@ -196,6 +196,8 @@ std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id
     if (r.status != ActionStatus::kRefused) {
       if (!keep || keep()) return r;
       solver.Restore(*undo);  // the move costs what `keep` guards: the next slot
+    } else if (++refused >= 3) {
+      break;  // a member its group holds (or a hub its members): farther slots are refused alike
     }
     if (++tries >= options.slot_tries) break;
   }

@@ -312,6 +312,17 @@ void MarkEssentials(Category room, RoomProblem& problem) {
           o.priority = std::max(o.priority, Priority::kNamed);
           break;
         }
+  // What carries a protected piece is protected like it: the TV stand under the TV the request asks for,
+  // the bookcase holding its books.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const ProblemObject& o : problem.objects)
+      if (IsProtected(o.priority) && !scene::IsRootParent(o.parent))
+        if (const int c = problem.Find(o.parent); c >= 0 && problem.objects[c].priority < Priority::kNamed) {
+          problem.objects[c].priority = Priority::kNamed;
+          grew = true;
+        }
+  }
 }
 
 std::vector<scene::SceneObject> SolvedSceneObjects(const RoomProblem& problem, const RoomSolution& solution,

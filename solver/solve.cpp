@@ -800,7 +800,8 @@ struct RoomSolver::Impl {
 
   // An unprotected object whose removal lets protected object i find a free slot: among the objects of
   // i's layer (the room's floor for what stands on it, i's siblings for what stands on a parent), the least
-  // important first, then the biggest; each tried on a copy of the state (at most eight). -1 when none does.
+  // important first, then the biggest, what hangs on a wall after what stands (or the other way round); each
+  // tried on a copy of the state (at most ten). -1 when none does.
   int MakeWayFor(int i) {
     std::vector<int> pool;
     const int p = state.parent[i];
@@ -809,7 +810,9 @@ struct RoomSolver::Impl {
       if (kk == i || IsProtected(state.objects[k].priority) || state.parent[k] != p) continue;
       // Its own group goes with it, not for it (its members, its hub).
       if (GroupMembership(state, kk).hub == i || GroupMembership(state, i).hub == kk) continue;
-      if (p < 0 && state.Hung(kk) != state.Hung(i)) continue;
+      // On the room's floor and walls, what hangs on a wall (a whiteboard above the TV's stand) is tried
+      // after what stands like it.
+
       // Nothing protected stands on it (the counter under the sink stays).
       const std::vector<int> below = state.Descendants(kk);
       if (std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); })) continue;
@@ -818,10 +821,12 @@ struct RoomSolver::Impl {
     std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) {
       const ProblemObject& A = state.objects[a];
       const ProblemObject& B = state.objects[b];
+      const bool a_other = state.Hung(a) != state.Hung(i), b_other = state.Hung(b) != state.Hung(i);
+      if (a_other != b_other) return b_other;
       if (A.priority != B.priority) return A.priority < B.priority;
       return Volume(A, state.placements[a].pose.scale) > Volume(B, state.placements[b].pose.scale);
     });
-    if (pool.size() > 8) pool.resize(8);
+    if (pool.size() > 10) pool.resize(10);
     const std::string id = state.objects[i].id;
     for (int k : pool) {
       const RoomState saved = state;
@@ -831,7 +836,21 @@ struct RoomSolver::Impl {
       state = saved;
       if (frees) return k;
     }
-    return -1;
+    // No one removal frees a slot: the first of the pool goes when removing it and the next ones together
+    // does (a sideboard and a plant along the one wall left for the TV's stand).
+    if (pool.size() < 2) return -1;
+    std::vector<std::string> ids;
+    for (int k : pool) ids.push_back(state.objects[k].id);
+    const RoomState saved = state;
+    bool frees = false;
+    for (const std::string& gone : ids) {
+      if (const int k = state.Find(gone); k >= 0) state.Remove(k);
+      const int j = state.Find(id);
+      if (j < 0) break;
+      if ((frees = FindSlot(j).has_value())) break;
+    }
+    state = saved;
+    return frees ? pool.front() : -1;
   }
 
   // The protected objects standing in walkways, when every proxy overlap left is such a one (else empty).
@@ -932,10 +951,11 @@ struct RoomSolver::Impl {
       if (n == 2) {
         ++n;
         int victim = LeastImportant(i);
-        // A protected object (essential, or named in the request) that would go itself: an unprotected one
-        // whose removal frees a slot for it goes instead, and it tries again (issue 27: a bedroom keeps its
-        // bed and loses its dresser).
-        if (victim == i && IsProtected(o.priority)) {
+        // A protected object (essential, or named in the request) that would go, itself or for another
+        // protected one (the TV the request asks for, in conflict with its stand): an unprotected one whose
+        // removal frees a slot goes instead, and it tries again (issue 27: a bedroom keeps its bed and loses
+        // its dresser).
+        if (IsProtected(state.objects[victim].priority) && (victim == i || IsProtected(o.priority))) {
           if (std::optional<Action> a = MakeWayAction(i)) {
             n = 0;
             return a;

@@ -188,13 +188,31 @@ TEST_CASE("villa eval --scenes furnishes every layout three times and prints the
   CHECK(j["macro"]["FSR"] == 1.0);
   CHECK(j["reach"].is_string());
   CHECK(j["seconds"]["per_room"].get<double>() > 0.0);
+  // Issue 27's functional checks per room type and over all rooms: the rooms counted agree with the
+  // micro table's, every living room's sofa counted in the seating groups, each count within its rooms.
+  const auto& f = j["functional"];
+  int rooms = 0, micro_rooms = 0;
+  for (const auto& [type, t] : f["by_room_type"].items()) {
+    INFO(type);
+    rooms += t["rooms"].get<int>();
+    CHECK(t["essentials"][0].get<int>() <= t["essentials"][1].get<int>());
+    CHECK(t["essentials"][1].get<int>() <= t["rooms"].get<int>());
+  }
+  for (const auto& row : j["micro"]["rows"]) micro_rooms += row["rooms"].get<int>();
+  CHECK(rooms == f["all"]["rooms"].get<int>());
+  CHECK(rooms == micro_rooms);
+  CHECK(f["by_room_type"]["Living Room"]["seating"][1].get<int>() == f["by_room_type"]["Living Room"]["rooms"].get<int>());
+  CHECK(f["by_room_type"]["Bedroom"]["essentials"][1].get<int>() == f["by_room_type"]["Bedroom"]["rooms"].get<int>());
+  CHECK(f["failing"].is_array());
 
   const testing::CliRun text = testing::RunVilla("eval --scenes " + kHouse + " --procedural --scenes-per-layout 1");
   REQUIRE(text.status == 0);
-  for (const char* word : {"Living Room", "Average (the nine)", "FSR", "the paper: ~15 min"}) CHECK(text.out.find(word) != std::string::npos);
+  for (const char* word : {"Living Room", "Average (the nine)", "FSR", "the paper: ~15 min", "Rooms as rooms", "nightstands", "all: essentials "})
+    CHECK(text.out.find(word) != std::string::npos);
   const testing::CliRun md = testing::RunVilla("eval --scenes " + kHouse + " --procedural --scenes-per-layout 1 --markdown");
   REQUIRE(md.status == 0);
   CHECK(md.out.find("| Living Room | 1 | 1 |") != std::string::npos);
+  CHECK(md.out.find("| room type | rooms | essentials | table chairs |") != std::string::npos);
 
   CHECK(testing::RunVilla("eval --scenes").status == 2);
   CHECK(testing::RunVilla("eval --scenes " + kHouse + " --json --markdown").status == 2);
