@@ -9,6 +9,7 @@
 #include <set>
 
 #include "mesh/geometry2d.h"
+#include "solver/group_rules.h"
 #include "layout/geometry.h"
 
 namespace villa::solver {
@@ -482,7 +483,7 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
       const bool dining = OneOf(state.objects[m.hub].category, {"dining-table", "conference-table"});
       auto seat = [&](Point normal, Point along, double offset, double extent, double pref) {
         const Point c = geo::Add(geo::Add(box.c, geo::Scale(normal, extent + gap + cy)), geo::Scale(along, offset));
-        const bool roomy = BehindClear(layer, self, layer.body_of[m.hub], c, normal, along, cx, cy, dining ? 0.75 : 0.3);
+        const bool roomy = BehindClear(layer, self, layer.body_of[m.hub], c, normal, along, cx, cy, dining ? kSeatBehind + 0.05 : 0.3);
         if (!roomy && !protect && dining) return;
         add(c, YawFacing(geo::Scale(normal, -1.0)), pref + (roomy ? 0.0 : 3.0));
       };
