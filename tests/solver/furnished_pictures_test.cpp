@@ -11,6 +11,7 @@
 
 #include "building/building.h"
 #include "building/view_scene.h"
+#include "layout/geometry.h"
 #include "layout/layout_io.h"
 #include "render/palette.h"
 #include "scene/acquire.h"
@@ -49,7 +50,23 @@ TEST_CASE("plan.png's overlay: every standing or hung object's footprint, lowest
     if (o.relation == scene::Relation::kHanging) ++hanging;
   }
   REQUIRE(overlay.shapes.size() == villa.scene.objects.size() - hanging);
-  CHECK(overlay.paths.empty());
+  // No walking paths yet: the paths are the functional groups' outlines, one for each group with members,
+  // closed rectangles around their hub (green when the group holds, red when not).
+  std::vector<const solver::GroupCheck*> groups;
+  for (const solver::RoomReport& r : villa.rooms)
+    if (r.functional)
+      for (const solver::GroupCheck& g : r.functional->groups)
+        if (!g.members.empty() && villa.scene.FindObject(g.anchor)) groups.push_back(&g);
+  CHECK_FALSE(groups.empty());
+  REQUIRE(overlay.paths.size() == groups.size());
+  for (size_t k = 0; k < groups.size(); ++k) {
+    const PlanOverlay::Path& outline = overlay.paths[k];
+    REQUIRE(outline.points.size() == 5);
+    CHECK(outline.points.front().x == Approx(outline.points.back().x));
+    const scene::SceneObject& hub = *villa.scene.FindObject(groups[k]->anchor);
+    CHECK(PointInRing({hub.pose->x, hub.pose->y}, Ring(outline.points.begin(), outline.points.end() - 1), 0.0));
+    CHECK((outline.color.g > outline.color.r) == groups[k]->ok());
+  }
   // Each shape is an object's box: its area is the object's footprint, its fill a darker tone of its room's
   // colour; shapes come lowest first.
   double footprint = 0.0, shapes = 0.0;
@@ -73,7 +90,7 @@ TEST_CASE("plan.png's overlay: every standing or hung object's footprint, lowest
   reach.paths.push_back({0, {{1.0, 1.0}, {3.0, 1.0}, {3.0, 4.0}}});
   villa.reach = reach;
   const PlanOverlay with_paths = solver::FurnishedPlanOverlay(villa);
-  REQUIRE(with_paths.paths.size() == 1);
+  REQUIRE(with_paths.paths.size() == 1 + groups.size());
   CHECK(with_paths.paths[0].points.size() == 3);
   const auto walked = solver::FurnishedPlanPng(villa);
   REQUIRE(walked.ok());
