@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "assets/procedural.h"
+#include "bench/support/furnish_setup.h"
 #include "bench/support/villas.h"
 #include "critic/critic.h"
 #include "critic/relations.h"
@@ -103,23 +104,11 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  auto critic_kind = critic::ParseCriticKind(critic_name);
-  if (!critic_kind || *critic_kind == critic::CriticKind::kMllm) {
-    std::fprintf(stderr, "--critic %s: expected none or offline\n", critic_name.c_str());
-    return 2;
-  }
-  critic::CriticOptions critic_options;
-  critic_options.kind = *critic_kind;
-  auto library = scene::OpenFurnishingLibrary(library_dir, library_dir.empty());
-  if (!library.ok()) {
-    std::fprintf(stderr, "%s\n", library.error().c_str());
-    return 1;
-  }
+  const bench::FurnishSetup setup = bench::SetUpFurnishing(critic_name, library_dir);
   std::printf("furnish: the 4 examples and %llu villas of `villa synth --count %llu --seed %llu`, critic %s, assets: %s\n",
               static_cast<unsigned long long>(villas), static_cast<unsigned long long>(villas),
               static_cast<unsigned long long>(seed), critic_name.c_str(),
-              library_dir.empty() ? "procedural only" : ("library " + library_dir + " (" +
-                                                         std::to_string(library->library->records().size()) + " records)").c_str());
+              setup.assets.c_str());
   const std::vector<bench::BenchVilla> all = bench::BenchVillas(villas, seed);
 
   std::map<std::string, Tally> by_type, by_shape, by_count;
@@ -135,13 +124,13 @@ int main(int argc, char** argv) {
     options.jobs = 1;
     options.seed = seed;
     options.check_reach = false;  // the solver alone; bench/reach.cpp measures reachability and its feedback
-    options.critic = critic::MakeRoomCritic(critic_options);
+    options.critic = critic::MakeRoomCritic(setup.critic);
     if (!only_type.empty()) {
       for (const Room& room : v.layout.rooms)
         if (CategoryName(room.category) == only_type) options.rooms.push_back(room.name());
       if (options.rooms.empty()) continue;
     }
-    auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, library->library, library->file, options);
+    auto furnished = solver::FurnishLayout(v.layout, {v.name, std::string(64, '0')}, setup.library.library, setup.library.file, options);
     if (!furnished.ok()) {
       std::fprintf(stderr, "%s: %s\n", v.name.c_str(), furnished.error().c_str());
       return 1;

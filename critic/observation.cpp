@@ -59,13 +59,17 @@ std::string RoomStateText(const solver::RoomCriticInput& input, const solver::Ro
              Fixed(o.z1 - problem.floor_z, 2);
     out += "\n";
   }
-  if (!problem.keep_outs.empty()) {
-    out += "keep free (no object may enter):\n";
+  // Hard keep-outs, then the corridors a person walks through the room (issue 27's circulation: better
+  // free, not a constraint).
+  for (const bool hard : {true, false}) {
+    std::string lines;
     for (const solver::KeepOut& k : problem.keep_outs) {
-      out += "  " + std::string(solver::KeepOutKindName(k.kind)) + ":";
-      for (const Point& p : k.polygon) out += ' ' + Point2(p);
-      out += "\n";
+      if ((k.kind == solver::KeepOutKind::kCirculation) == hard) continue;
+      lines += "  " + std::string(solver::KeepOutKindName(k.kind)) + ":";
+      for (const Point& p : k.polygon) lines += ' ' + Point2(p);
+      lines += "\n";
     }
+    if (!lines.empty()) out += (hard ? "keep free (no object may enter):\n" : "walked through (better left free):\n") + lines;
   }
   out += "objects (id: category; physical edge; centre x, y and bottom z in m; yaw in degrees, 0 faces -y, 90 faces +x; "
          "size w x d x h in m; scale):\n";

@@ -43,7 +43,6 @@ ObjectBox BoxOf(const solver::ProblemObject& object, const solver::ObjectPlaceme
           p.z + object.asset.size.z * p.scale};
 }
 
-double PlanGap(const ObjectBox& a, const ObjectBox& b) { return -solver::PlanDepth(a, b); }
 
 EdgeCheck CheckEdge(const scene::SemanticEdge& edge, const ObjectBox& s, const ObjectBox& t) {
   EdgeCheck c;

@@ -43,7 +43,7 @@ using ObjectBox = solver::OrientedBox;
 ObjectBox BoxOf(const solver::ProblemObject& object, const solver::ObjectPlacement& placement);
 
 // The plan gap between two boxes: the widest separation along the four face normals (m, < 0: overlap).
-double PlanGap(const ObjectBox& a, const ObjectBox& b);
+using solver::PlanGap;
 
 struct EdgeCheck {
   scene::SemanticEdge edge;

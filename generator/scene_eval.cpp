@@ -361,11 +361,11 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
           for (const solver::RoomReport& r : villa->rooms) {
             if (!r.asked || !r.functional) continue;
             functional[r.category].Add(*r.functional);
-            summary.functional_all.Add(*r.functional);
             if (!r.functional->ok())
               summary.functional_failing.push_back(request.id + " scene " + std::to_string(s + 1) + " " + r.room + ": " +
                                                    solver::FailingLine(*r.functional));
           }
+          summary.functional_all.Add(villa->summary.functional);
           summary.room_seconds += villa->summary.room_seconds;
           summary.furnished_rooms += villa->summary.furnished;
           if (villa->reach) {
@@ -497,7 +497,6 @@ std::string FunctionalText(const SceneEvalSummary& s) {
   TextTable t(FunctionalHeader());
   for (auto& row : FunctionalRows(s)) t.AddRow(row);
   std::string out = "Rooms as rooms (functional checks, docs/METRICS.md), per room type:\n" + t.Render();
-  out += "all: " + s.functional_all.Line() + "\n";
   if (!s.functional_failing.empty()) {
     out += "rooms whose functional check fails (" + std::to_string(s.functional_failing.size()) + "):\n";
     for (const std::string& line : s.functional_failing) out += "  " + line + "\n";
@@ -579,14 +578,8 @@ std::string SceneEvalText(const SceneEvalSummary& s) {
 namespace {
 Json FunctionalJsonOf(const SceneEvalSummary& s) {
   Json by_type = Json::object();
-  for (const auto& [type, tally] : s.functional) {
-    Json t = tally.ToJson();
-    t["rooms"] = tally.rooms;
-    by_type[type] = std::move(t);
-  }
-  Json all = s.functional_all.ToJson();
-  all["rooms"] = s.functional_all.rooms;
-  return {{"by_room_type", std::move(by_type)}, {"all", std::move(all)}, {"failing", s.functional_failing}};
+  for (const auto& [type, tally] : s.functional) by_type[type] = tally.ToJson();
+  return {{"by_room_type", std::move(by_type)}, {"all", s.functional_all.ToJson()}, {"failing", s.functional_failing}};
 }
 }  // namespace
 

@@ -447,10 +447,10 @@ class Planning {
         }
         if (n.parent < 0) return -1;
       }
-      // Pillows lie side by side at a bed's head: each at most half the bed's width (at the smallest scale
+      // Pillows lie side by side at a double bed's head: each at most half the bed's width (at the smallest scale
       // the solver may give the bed) less a hand's breadth, else the second lies mid-bed (issue 27).
       const Node& carrier = nodes_[n.parent];
-      if (info.name == "pillow" && (carrier.info->name == "bed" || carrier.info->name == "child-bed") && carrier.size.x >= 1.2)
+      if (info.name == "pillow" && carrier.info->name == "bed" && carrier.size.x >= 1.2)
         n.size.x = std::max(info.size_min.x, Round2(std::min(n.size.x, 0.5 * (0.8 * carrier.size.x - 0.15))));
       nodes_.push_back(n);
       return static_cast<int>(nodes_.size()) - 1;
@@ -930,9 +930,10 @@ class Planning {
         if (n.item && (n.item->requires_category == "dining-table" || n.item->requires_category == "conference-table"))
           zone = InteractionZone{"back", 0.75, {}};
         // A desk's chair is pulled in under the desk: it is reached, and pulled out, from behind.
-        if (n.item && n.item->requires_category == "desk" && n.item->edges.size() >= 2 &&
-            n.item->edges[1].relation == SemanticRelation::kFrontOf && n.item->edges[1].params.max_gap &&
-            *n.item->edges[1].params.max_gap <= 0.5)
+        if (n.item && n.item->requires_category == "desk" &&
+            std::any_of(n.item->edges.begin(), n.item->edges.end(), [](const auto& e) {
+              return e.relation == SemanticRelation::kFrontOf && e.params.max_gap && *e.params.max_gap <= 0.5;
+            }))
           zone = InteractionZone{"back", 0.6, {}};
         if (n.item)
           for (std::string_view c : n.item->exempt)

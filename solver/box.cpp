@@ -26,6 +26,17 @@ PlacedBox<double> AsPlaced(const OrientedBox& b) {
 
 Point OrientedBox::U() const { return {std::cos(yaw), std::sin(yaw)}; }
 Point OrientedBox::V() const { return {-std::sin(yaw), std::cos(yaw)}; }
+Point OrientedBox::Front() const { return {std::sin(yaw), -std::cos(yaw)}; }
+Point OrientedBox::Local(Point p) const {
+  const Point d = geo::Sub(p, c);
+  return {geo::Dot(d, U()), geo::Dot(d, V())};
+}
+
+double DistanceToBox(const OrientedBox& box, Point p) {
+  const Point d = geo::Sub(p, box.c);
+  const double lx = std::abs(geo::Dot(d, box.U())) - box.hx, ly = std::abs(geo::Dot(d, box.V())) - box.hy;
+  return std::hypot(std::max(lx, 0.0), std::max(ly, 0.0));
+}
 
 Ring OrientedBox::Footprint() const {
   const Point u = geo::Scale(U(), hx);

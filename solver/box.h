@@ -17,7 +17,9 @@ struct OrientedBox {
   double z1 = 0.0;
 
   Point U() const;  // unit x axis
-  Point V() const;  // unit y axis (U turned +90 degrees)
+  Point V() const;  // unit y axis (U turned +90 degrees): an object's back (SCENE.md)
+  Point Front() const;  // -V: the way an object faces
+  Point Local(Point p) const;  // p in the box's frame (x along U, y along V)
   Ring Footprint() const;  // the four corners, CCW
   bool ContainsPlan(Point p, double tolerance = 0.0) const;
 };
@@ -25,6 +27,10 @@ struct OrientedBox {
 // Separating-axis depth in plan: > 0 the footprints overlap by that much along the best axis, < 0 they are
 // apart (minus the widest gap along a face normal).
 double PlanDepth(const OrientedBox& a, const OrientedBox& b);
+// The gap between two footprints (m, > 0 apart, < 0 overlapping): -PlanDepth.
+inline double PlanGap(const OrientedBox& a, const OrientedBox& b) { return -PlanDepth(a, b); }
+// Distance (m) from a point to a footprint, 0 inside.
+double DistanceToBox(const OrientedBox& box, Point p);
 // Overlap of the z ranges (m, negative when apart).
 double HeightOverlap(const OrientedBox& a, const OrientedBox& b);
 // Volume of the intersection of two upright boxes (m3).

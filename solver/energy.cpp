@@ -77,8 +77,7 @@ EnergyTerms StateEnergy(const RoomState& st) {
   for (const KeepOut& k : problem.keep_outs) {
     if (k.kind == KeepOutKind::kCirculation) continue;  // a preference of the placement, not a constraint
     building.push_back({std::string(KeepOutKindName(k.kind)) + " " + k.name,
-                        {k.polygon, k.z_min, k.z_max, true, true,
-                         k.kind != KeepOutKind::kWalkway && k.kind != KeepOutKind::kCirculation, k.kind != KeepOutKind::kWalkway}});
+                        {k.polygon, k.z_min, k.z_max, true, true, k.kind != KeepOutKind::kWalkway, k.kind != KeepOutKind::kWalkway}});
   }
   const Layer openings = RoomLayer(st, {}, {});
   for (const Prism& p : openings.prisms) {

@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "solver/box.h"
 #include "solver/group_rules.h"
+#include "util/text_table.h"
 
 namespace villa::solver {
 namespace {
@@ -23,28 +24,16 @@ constexpr double kFarFromFurniture = 1.5;  // m
 constexpr double kFarShare = 0.3;
 constexpr double kRaster = 0.05;           // m
 
-std::string Fixed(double v, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
 double Round3(double v) { return std::round(v * 1e3) / 1e3; }
 
 // One placed object in the plan: its box, frame and what it is.
 struct Item {
   const scene::SceneObject* o = nullptr;
-  OrientedBox box;
-  PlanBox plan;     // the footprint for the group rules (solver/group_rules.h)
-  Point u, v;       // asset +x and +y (the back) in the world; the front is -v
+  OrientedBox box;  // its footprint and heights (front -V, SCENE.md)
   bool floor = false;      // stands on the floor (free or against a wall)
   bool covering = false;   // a rug: part of the floor
   bool furniture = false;  // floor, not a covering, footprint >= 0.1 m2
 
-  Point Local(Point p) const {
-    const Point d = geo::Sub(p, box.c);
-    return {geo::Dot(d, u), geo::Dot(d, v)};
-  }
-  Point Front() const { return geo::Scale(v, -1.0); }
   const std::string& category() const { return o->category; }
 };
 
@@ -58,9 +47,6 @@ Item MakeItem(const scene::SceneObject& o) {
   it.box.hy = 0.5 * o.size.y;
   it.box.z0 = p.z;
   it.box.z1 = p.z + o.size.z;
-  it.u = it.box.U();
-  it.v = it.box.V();
-  it.plan = {it.box.c, it.box.yaw, it.box.hx, it.box.hy};
   it.floor = o.parent == scene::kParentFloor || o.relation == scene::Relation::kAgainstWall;
   it.covering = it.floor && (o.category == "rug" || o.size.z <= 0.03);
   it.furniture = it.floor && !it.covering && o.size.x * o.size.y >= kFurnitureFootprint;
@@ -68,15 +54,8 @@ Item MakeItem(const scene::SceneObject& o) {
 }
 
 // The gap between two footprints (m, > 0 apart, < 0 overlapping): the widest separation along a face normal.
-double Gap(const Item& a, const Item& b) { return PlanGap(a.plan, b.plan); }
+double Gap(const Item& a, const Item& b) { return PlanGap(a.box, b.box); }
 
-
-// Distance from a point to a footprint (0 inside).
-double DistanceToBox(const OrientedBox& box, Point p) {
-  const Point d = geo::Sub(p, box.c);
-  const double lx = std::abs(geo::Dot(d, box.U())) - box.hx, ly = std::abs(geo::Dot(d, box.V())) - box.hy;
-  return std::hypot(std::max(lx, 0.0), std::max(ly, 0.0));
-}
 
 bool InFreeFloor(const scene::RoomContext& room, Point p) {
   for (const Ring& r : room.free_floor)
@@ -84,8 +63,10 @@ bool InFreeFloor(const scene::RoomContext& room, Point p) {
   return false;
 }
 
+// The staircase's zones: its flights, the hole above, the strip where it arrives (as scene/room_context.cpp
+// counts them out of the furnishable floor).
 bool IsStaircase(const scene::KeepOut& k) {
-  return k.kind == scene::KeepOutKind::kStair || k.kind == scene::KeepOutKind::kStairHole;
+  return k.kind == scene::KeepOutKind::kStair || k.kind == scene::KeepOutKind::kStairHole || k.kind == scene::KeepOutKind::kStairArrival;
 }
 
 bool Is(const Item& it, std::initializer_list<std::string_view> categories) {
@@ -158,17 +139,19 @@ class Checker {
     }
   }
 
-  // Free distance behind a chair's back (m, capped at 2): walls (the free floor's edge) and floor objects
-  // other than rugs stop it, sampled at five points across the chair's width.
+  // Free distance behind a chair's back (m, capped at 2): walls (the free floor's edge), the staircase and
+  // furniture (floor objects of 0.1 m2 and more, rugs not) stop it; sampled at five points across the
+  // chair's width, from edge to edge.
   double Behind(const Item& chair) const {
+    const Point u = chair.box.U(), v = chair.box.V();
     double clear = 2.0;
-    for (double s : {-0.9, -0.45, 0.0, 0.45, 0.9}) {
+    for (double s : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
       for (double d = 0.0; d < clear; d += 0.025) {
-        const Point p = geo::Add(geo::Add(chair.box.c, geo::Scale(chair.v, chair.box.hy + d + 0.01)), geo::Scale(chair.u, s * chair.box.hx));
-        bool blocked = !InFreeFloor(room_, p);
+        const Point p = geo::Add(geo::Add(chair.box.c, geo::Scale(v, chair.box.hy + d + 0.01)), geo::Scale(u, s * chair.box.hx));
+        bool blocked = !InFreeFloor(room_, p) || OnStairs(p);
         for (const Item& it : items_) {
           if (blocked) break;
-          if (&it == &chair || !it.floor || it.covering) continue;
+          if (&it == &chair || !it.furniture) continue;
           blocked = it.box.ContainsPlan(p);
         }
         if (blocked) {
@@ -180,7 +163,12 @@ class Checker {
     return clear;
   }
 
-  // Dining and meeting tables (and a kitchen's table) with the chairs nearest to each.
+  bool OnStairs(Point p) const {
+    for (const scene::KeepOut& k : room_.keep_outs)
+      if (IsStaircase(k) && PointInRing(p, k.polygon, 0.0)) return true;
+    return false;
+  }
+
   void Tables() {
     const bool counted = room_.category == Category::kDiningRoom || room_.category == Category::kMeetingRoom;
     const std::vector<const Item*> tables = All({"dining-table", "conference-table"});
@@ -211,18 +199,19 @@ class Checker {
       if (counted) ++out_.chairs;
       std::string problem;
       if (gap > kSeatLost) {
-        problem = Fixed(gap, 2) + " m from the nearest table (> " + Fixed(kSeatLost, 1) + ")";
+        problem = FormatFixed(gap, 2) + " m from the nearest table (> " + FormatFixed(kSeatLost, 1) + ")";
         if (counted) ++out_.chairs_far;
       } else {
         const double behind = Behind(*c);
         const auto& m = g.measures["min_behind_m"];
         if (m.is_null() || behind < m.get<double>()) g.measures["min_behind_m"] = Round3(behind);
-        problem = TableSeatProblem(c->plan, t->plan);
+        problem = TableSeatProblem(c->box, t->box);
         if (problem.empty() && behind < kSeatBehind - 1e-9)
-          problem = Fixed(behind, 2) + " m free behind it (>= " + Fixed(kSeatBehind, 2) + ")";
+          problem = FormatFixed(behind, 2) + " m free behind it (>= " + FormatFixed(kSeatBehind, 2) + ")";
       }
       g.measures["chairs"] = g.measures["chairs"].get<int>() + 1;
       if (problem.empty()) {
+        seated_.insert(c);
         g.measures["chairs_ok"] = g.measures["chairs_ok"].get<int>() + 1;
         if (counted) ++out_.chairs_ok;
       } else {
@@ -259,9 +248,9 @@ class Checker {
         } else {
           const Item& tv = *screens.front();
           g.members.push_back(tv.o->id);
-          g.measures["tv_angle_deg"] = Round3(AngleDegrees(sofa.Front(), geo::Sub(tv.box.c, sofa.box.c)));
+          g.measures["tv_angle_deg"] = Round3(AngleDegrees(sofa.box.Front(), geo::Sub(tv.box.c, sofa.box.c)));
           g.measures["tv_distance_m"] = Round3(geo::Dist(tv.box.c, sofa.box.c));
-          if (std::string p = TvProblem(sofa.plan, tv.box.c); !p.empty()) g.problems.push_back(p), core = false;
+          if (std::string p = TvProblem(sofa.box, tv.box.c); !p.empty()) g.problems.push_back(p), core = false;
         }
       }
       const Item* table = tables.empty() ? nullptr : Nearest(sofa, tables);
@@ -270,19 +259,19 @@ class Checker {
       } else {
         g.members.push_back(table->o->id);
         g.measures["coffee_gap_m"] = Round3(Gap(sofa, *table));
-        g.measures["coffee_offset_m"] = Round3(sofa.Local(table->box.c).x);
-        if (std::string p = CoffeeTableProblem(table->plan, sofa.plan); !p.empty()) g.problems.push_back(p), core = false;
+        g.measures["coffee_offset_m"] = Round3(sofa.box.Local(table->box.c).x);
+        if (std::string p = CoffeeTableProblem(table->box, sofa.box); !p.empty()) g.problems.push_back(p), core = false;
       }
-      // Armchairs of the group (an edge to its coffee table or sofa, else within 1.5 m of it; a reading chair
+      // Armchairs of the group (an edge to its coffee table or sofa, else within kArmchairNear of it; a reading chair
       // elsewhere is a zone of its own) face it within 45 degrees.
       for (const Item* a : All({"armchair"})) {
         const Item& focus = table ? *table : sofa;
         const bool tied = std::any_of(in_.edges.begin(), in_.edges.end(), [&](const scene::SemanticEdge& e) {
           return e.source == a->o->id && (e.target == sofa.o->id || (table && e.target == table->o->id));
         });
-        if (in_.edges.empty() ? Gap(*a, focus) > 1.5 : !tied) continue;
+        if (in_.edges.empty() ? Gap(*a, focus) > kArmchairNear : !tied) continue;
         g.members.push_back(a->o->id);
-        if (std::string p = ArmchairProblem(a->plan, focus.box.c); !p.empty()) g.problems.push_back(Name(*a) + ": " + p);
+        if (std::string p = ArmchairProblem(a->box, focus.box.c); !p.empty()) g.problems.push_back(Name(*a) + ": " + p);
       }
       if (k == 0 && living) {
         ++out_.seating;
@@ -301,11 +290,13 @@ class Checker {
       const Item* best = nullptr;
       double best_gap = kInf;
       for (const Item* c : chairs) {
-        if (!DeskSeatProblem(c->plan, desk->plan).empty()) continue;
+        // One chair serves one desk or table: a seat already taken does not count again.
+        if (seated_.count(c) || !DeskSeatProblem(c->box, desk->box).empty()) continue;
         if (const double gap = Gap(*desk, *c); gap < best_gap) best_gap = gap, best = c;
       }
       ++out_.desks;
       if (best) {
+        seated_.insert(best);
         g.members.push_back(best->o->id);
         g.measures["chair_gap_m"] = Round3(best_gap);
         ++out_.desks_ok;
@@ -330,7 +321,7 @@ class Checker {
       GroupCheck& g = groups[bed];
       g.members.push_back(n->o->id);
       ++out_.nightstands;
-      const std::string problem = BedsideProblem(n->plan, bed->plan);
+      const std::string problem = BedsideProblem(n->box, bed->box);
       if (problem.empty()) ++out_.nightstands_ok;
       else g.problems.push_back(Name(*n) + ": " + problem);
     }
@@ -341,7 +332,7 @@ class Checker {
       GroupCheck& g = groups[*bed];
       g.members.push_back(p.o->id);
       ++out_.pillows;
-      if (const std::string problem = PillowProblem(p.box.c, (*bed)->plan); problem.empty()) ++out_.pillows_ok;
+      if (const std::string problem = PillowProblem(p.box.c, (*bed)->box); problem.empty()) ++out_.pillows_ok;
       else g.problems.push_back(Name(p) + ": " + problem);
     }
     for (const Item* b : beds) out_.groups.push_back(std::move(groups[b]));
@@ -355,11 +346,10 @@ class Checker {
     if (!counters.empty()) g.anchor = counters.front()->o->id;
     for (size_t k = 1; k < counters.size(); ++k) g.members.push_back(counters[k]->o->id);
     const std::vector<const Item*> cookers = All({"cooker"}), fridges = All({"fridge"});
-    const scene::SceneObject* sink = nullptr;
-    for (const Item& it : items_)
-      if (it.category() == "sink") sink = it.o;
+    const std::vector<const Item*> sinks = All({"sink"});
+    const Item* sink = sinks.empty() ? nullptr : sinks.back();
     auto touches_counter = [&](const Item& it) {
-      return std::any_of(counters.begin(), counters.end(), [&](const Item* c) { return Gap(it, *c) <= 0.1; });
+      return std::any_of(counters.begin(), counters.end(), [&](const Item* c) { return Gap(it, *c) <= kRunGap; });
     };
     for (const Item* c : cookers) {
       g.members.push_back(c->o->id);
@@ -369,13 +359,15 @@ class Checker {
       g.members.push_back(f->o->id);
       if (!touches_counter(*f)) g.problems.push_back(Name(*f) + ": not at the end of a run of counters");
     }
-    if (sink) g.members.push_back(sink->id);
+    if (sink) g.members.push_back(sink->o->id);
     // The work triangle: sink, cooker and fridge centres.
-    if (sink && sink->pose && !cookers.empty() && !fridges.empty()) {
-      const Point s{sink->pose->x, sink->pose->y}, c = cookers.front()->box.c, f = fridges.front()->box.c;
+    if (sink && !cookers.empty() && !fridges.empty()) {
+      const Point s = sink->box.c, c = cookers.front()->box.c, f = fridges.front()->box.c;
       const double perimeter = geo::Dist(s, c) + geo::Dist(c, f) + geo::Dist(f, s);
       g.measures["work_triangle_m"] = Round3(perimeter);
-      if (perimeter > 8.0) g.problems.push_back("work triangle " + Fixed(perimeter, 2) + " m (4-8)");
+      if (perimeter < kTriangleMin - 1e-9 || perimeter > kTriangleMax + 1e-9)
+        g.problems.push_back("work triangle " + FormatFixed(perimeter, 2) + " m (" + FormatFixed(kTriangleMin, 0) + "-" +
+                             FormatFixed(kTriangleMax, 0) + ")");
     }
     out_.groups.push_back(std::move(g));
   }
@@ -390,8 +382,8 @@ class Checker {
       g.anchor = basin.o->id;
       const Item* mirror = nullptr;
       for (const Item* m : All({"mirror"})) {
-        const Point l = basin.Local(m->box.c);
-        if (std::abs(l.x) <= 0.2 && l.y > 0.0 && m->box.z0 > basin.box.z1 - 0.05) mirror = m;
+        const Point l = basin.box.Local(m->box.c);
+        if (std::abs(l.x) <= kMirrorOffset && l.y > 0.0 && m->box.z0 > basin.box.z1 - 0.05) mirror = m;
       }
       if (mirror) g.members.push_back(mirror->o->id);
       else g.problems.push_back("no mirror above the basin");
@@ -415,8 +407,10 @@ class Checker {
     for (const scene::KeepOut& k : room_.keep_outs)
       if (IsStaircase(k)) stairs.push_back(&k.polygon);
     double x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
-    for (const Ring& r : room_.free_floor)
-      for (Point p : r) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    for (const Ring& r : room_.free_floor) {
+      const Box2 b = BoundingBox(r);
+      x0 = std::min(x0, b.min_x), y0 = std::min(y0, b.min_y), x1 = std::max(x1, b.max_x), y1 = std::max(y1, b.max_y);
+    }
     int free = 0, far = 0;
     for (double x = x0 + 0.5 * kRaster; x < x1; x += kRaster) {
       for (double y = y0 + 0.5 * kRaster; y < y1; y += kRaster) {
@@ -424,12 +418,10 @@ class Checker {
         if (!InFreeFloor(room_, p)) continue;
         bool taken = false;
         for (const OrientedBox* b : occupied) taken = taken || b->ContainsPlan(p);
-        double to_furniture = kInf;
-        for (const Ring* s : stairs) {
-          if (PointInRing(p, *s, 0.0)) taken = true;
-          to_furniture = std::min(to_furniture, DistanceToBoundary(p, *s));
-        }
+        for (const Ring* s : stairs) taken = taken || PointInRing(p, *s, 0.0);
         if (taken) continue;
+        double to_furniture = kInf;
+        for (const Ring* s : stairs) to_furniture = std::min(to_furniture, DistanceToBoundary(p, *s));
         for (const OrientedBox* b : furniture) to_furniture = std::min(to_furniture, DistanceToBox(*b, p));
         double to_wall = kInf;
         for (const Ring& r : room_.free_floor) to_wall = std::min(to_wall, DistanceToBoundary(p, r));
@@ -487,6 +479,7 @@ class Checker {
   const FunctionalInput& in_;
   const scene::RoomContext& room_;
   std::vector<Item> items_;
+  std::set<const Item*> seated_;  // chairs already counted at a table or a desk
   FunctionalCheck out_;
 };
 
@@ -582,7 +575,8 @@ void FunctionalTally::Add(const FunctionalTally& o) {
 
 Json FunctionalTally::ToJson() const {
   auto pair = [](int ok, int n) { return nlohmann::ordered_json{ok, n}; };
-  return {{"essentials", pair(rooms_essential, with_essentials)},
+  return {{"rooms", rooms},
+          {"essentials", pair(rooms_essential, with_essentials)},
           {"table_chairs", pair(chairs_ok, chairs)},
           {"chairs_far", chairs_far},
           {"seating", pair(seating_ok, seating)},
@@ -633,8 +627,8 @@ std::string FailingLine(const FunctionalCheck& c) {
   for (const GroupCheck& g : c.groups)
     for (const std::string& p : g.problems) add("[" + g.kind + "] " + p);
   if (c.floor_measured && !c.floor_ok)
-    add("floor: bare disc r " + Fixed(c.bare_radius, 2) + " m (<= " + Fixed(c.bare_limit, 2) + ") at (" + Fixed(c.bare_centre.x, 1) +
-        ", " + Fixed(c.bare_centre.y, 1) + "), " + Fixed(100.0 * c.far_share, 0) + " % of the free floor > 1.5 m from furniture");
+    add("floor: bare disc r " + FormatFixed(c.bare_radius, 2) + " m (<= " + FormatFixed(c.bare_limit, 2) + ") at (" + FormatFixed(c.bare_centre.x, 1) +
+        ", " + FormatFixed(c.bare_centre.y, 1) + "), " + FormatFixed(100.0 * c.far_share, 0) + " % of the free floor > 1.5 m from furniture");
   for (const FunctionalCheck::Wish& w : c.wishes)
     if (!w.ok) add("wish " + w.category + " " + std::to_string(w.present) + "/" + std::to_string(w.asked) + " (" + w.why + ")");
   for (const std::string& o : c.odd) add("odd: " + o);

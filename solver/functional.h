@@ -34,7 +34,6 @@ struct FunctionalWish {
   std::string category;
   int count = 1;        // at least this many wanted
   bool fill = false;    // "full of": any number counts
-  std::string phrase;   // the request's words
 };
 
 // One functional group of the room and how it stands.
@@ -132,7 +131,7 @@ struct FunctionalTally {
   int groups = 0, groups_ok = 0;
   void Add(const FunctionalCheck& check);
   void Add(const FunctionalTally& other);
-  nlohmann::ordered_json ToJson() const;
+  nlohmann::ordered_json ToJson() const;  // {"rooms", "essentials": [ok, n], ...}
   // "essentials 49/49 rooms, chairs 97/97 at their table, ..." for summaries.
   std::string Line() const;
   // Table columns (ok/n, "-" with none): essentials, table chairs (with the far ones), seating, desks,

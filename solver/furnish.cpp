@@ -1,7 +1,5 @@
 #include "solver/furnish.h"
 
-#include "scene/request.h"
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -426,7 +424,7 @@ FunctionalCheck RoomFunction(const FurnishedVilla& villa, const scene::RoomConte
   in.assets = [&](std::string_view id) { return villa.assets->Find(id); };
   if (!text.empty())
     for (const scene::Wish& w : scene::ParseRoomRequest(text, context.category).wishes)
-      in.wishes.push_back({std::string(w.category->name), w.count, w.fill, w.phrase});
+      in.wishes.push_back({std::string(w.category->name), w.count, w.fill});
   in.notes = rep.plan_notes;
   if (const scene::RoomEntry* entry = villa.scene.FindRoom(context.name)) in.edges = entry->edges_sem;
   for (const std::string& d : rep.dropped) in.notes.push_back("left out before solving: " + d);
@@ -782,6 +780,18 @@ Result<std::string> RoomPicturePng(const FurnishedVilla& villa, const scene::Roo
   return EncodePng(*picture);
 }
 
+namespace {
+// A placed object's footprint (its size, turned by its yaw) in the plan.
+Ring FootprintOf(const scene::SceneObject& o) {
+  OrientedBox box;
+  box.c = {o.pose->x, o.pose->y};
+  box.yaw = o.pose->yaw;
+  box.hx = o.size.x / 2.0;
+  box.hy = o.size.y / 2.0;
+  return box.Footprint();
+}
+}  // namespace
+
 PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
   PlanOverlay overlay;
   std::map<std::string, Category> category_of;
@@ -798,12 +808,9 @@ PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
   for (const scene::SceneObject* o : objects) {
     auto it = category_of.find(o->room);
     const Category category = it == category_of.end() ? Category::kRoom : it->second;
-    const double c = std::cos(o->pose->yaw), s = std::sin(o->pose->yaw);
-    const double hx = o->size.x / 2.0, hy = o->size.y / 2.0;
     PlanOverlay::Shape shape;
     shape.level = o->level;
-    for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}})
-      shape.outline.push_back({o->pose->x + c * x - s * y, o->pose->y + s * x + c * y});
+    shape.outline = FootprintOf(*o);
     shape.fill = mix(CategoryColor(category), CategoryInk(category), 0.4);
     shape.fill_alpha = 0.9;
     shape.ink = mix(CategoryInk(category), Rgb{0.1, 0.1, 0.1}, 0.3);
@@ -826,9 +833,8 @@ PlanOverlay FurnishedPlanOverlay(const FurnishedVilla& villa) {
       const Point u{std::cos(h.yaw), std::sin(h.yaw)}, v{-u.y, u.x};
       double x0 = 1e18, x1 = -1e18, y0 = 1e18, y1 = -1e18;
       auto take = [&](const scene::SceneObject& o) {
-        const double c = std::cos(o.pose->yaw), s = std::sin(o.pose->yaw), hx = o.size.x / 2.0, hy = o.size.y / 2.0;
-        for (const auto& [x, y] : {std::pair{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}}) {
-          const Point d{o.pose->x + c * x - s * y - h.x, o.pose->y + s * x + c * y - h.y};
+        for (const Point& corner : FootprintOf(o)) {
+          const Point d{corner.x - h.x, corner.y - h.y};
           const double a = d.x * u.x + d.y * u.y, b = d.x * v.x + d.y * v.y;
           x0 = std::min(x0, a), x1 = std::max(x1, a), y0 = std::min(y0, b), y1 = std::max(y1, b);
         }

@@ -10,23 +10,10 @@
 #include <string>
 
 #include "layout/layout.h"
+#include "solver/box.h"
 
 namespace villa::solver {
 
-// A footprint in the plan: centre, yaw (rad), half width (along its +x) and half depth (along its +y).
-struct PlanBox {
-  Point c;
-  double yaw = 0.0;
-  double hx = 0.0;
-  double hy = 0.0;
-  Point U() const;               // +x
-  Point V() const;               // +y: its back
-  Point Front() const;           // -y
-  Point Local(Point p) const;    // p in the box's frame (x along U, y along V)
-};
-
-// The gap between two footprints (m, > 0 apart, < 0 overlapping): the widest separation along a face normal.
-double PlanGap(const PlanBox& a, const PlanBox& b);
 // Angle (degrees, [0, 180]) between two directions.
 double AngleDegrees(Point a, Point b);
 
@@ -45,25 +32,30 @@ inline constexpr double kBedsideHead = 0.75;      // m from the head's line to i
 inline constexpr double kPillowHead = 0.3;        // share of the bed's length from the head
 inline constexpr double kArmchairFacing = 45.0;   // degrees
 inline constexpr double kSideTableGap = 0.3;      // m
+inline constexpr double kArmchairReach = 3.0;     // m from the group's focus
+inline constexpr double kArmchairNear = 1.5;      // m: without edges, an armchair this near the group is in it
+inline constexpr double kRunGap = 0.1;            // m: a cooker or fridge this near a counter is in its run
+inline constexpr double kTriangleMin = 4.0, kTriangleMax = 8.0;  // m: the kitchen's work triangle (perimeter)
+inline constexpr double kMirrorOffset = 0.2;      // m: a mirror's centre off the basin's axis
 
 // A chair at a table: its centre beyond one side, within that side's length, at most 0.35 m from the table,
 // its front within 30 degrees of facing that side. (The 0.75 m behind it needs the room: checked apart.)
-std::string TableSeatProblem(const PlanBox& chair, const PlanBox& table);
+std::string TableSeatProblem(const OrientedBox& chair, const OrientedBox& table);
 // A desk's chair: in the desk's front half-plane, its centre within the desk's width (+0.1 m), at most 0.5 m
 // from it, facing the desk within 45 degrees.
-std::string DeskSeatProblem(const PlanBox& chair, const PlanBox& desk);
+std::string DeskSeatProblem(const OrientedBox& chair, const OrientedBox& desk);
 // A nightstand: beside its bed (outside the bed's width, at most 0.3 m off its side), its centre within
 // 0.75 m of the head's line (the bed's back).
-std::string BedsideProblem(const PlanBox& nightstand, const PlanBox& bed);
+std::string BedsideProblem(const OrientedBox& nightstand, const OrientedBox& bed);
 // A pillow on a bed: its centre in the head 30 % of the bed's length.
-std::string PillowProblem(Point pillow, const PlanBox& bed);
+std::string PillowProblem(Point pillow, const OrientedBox& bed);
 // The sofa faces the TV (or its stand) within 25 degrees, 1.4-4.0 m centre to centre.
-std::string TvProblem(const PlanBox& sofa, Point tv);
+std::string TvProblem(const OrientedBox& sofa, Point tv);
 // The coffee table's centre in the sofa's front half-plane, within its width, at a 0.25-0.9 m gap.
-std::string CoffeeTableProblem(const PlanBox& table, const PlanBox& sofa);
+std::string CoffeeTableProblem(const OrientedBox& table, const OrientedBox& sofa);
 // A side table at an end of the sofa (outside its width, at most 0.3 m from it).
-std::string SideTableProblem(const PlanBox& side_table, const PlanBox& sofa);
+std::string SideTableProblem(const OrientedBox& side_table, const OrientedBox& sofa);
 // An armchair faces the group's focus (the coffee table) within 45 degrees, at most 3 m from it.
-std::string ArmchairProblem(const PlanBox& armchair, Point focus);
+std::string ArmchairProblem(const OrientedBox& armchair, Point focus);
 
 }  // namespace villa::solver

@@ -253,12 +253,12 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
   Index(layer, state);
   // The room's keep-outs in the parent's frame: a TV on its stand stays out of the window zone.
   for (const KeepOut& k : state.problem->keep_outs) {
+    // A walkway (or a circulation corridor) moves what stands on the floor; what stands on it goes with it.
+    if (k.kind == KeepOutKind::kWalkway || k.kind == KeepOutKind::kCirculation) continue;
     Ring local;
     for (Point v : k.polygon) local.push_back(layer.frame.ToLocal(v));
     for (Ring& piece : ConvexPieces(local)) {
-      // A walkway moves what stands on the floor; what stands on it goes with it.
-      const bool walkway = k.kind == KeepOutKind::kWalkway || k.kind == KeepOutKind::kCirculation;
-      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, !walkway, !walkway, !walkway});
+      layer.prisms.push_back({std::move(piece), k.z_min - layer.frame.z, k.z_max - layer.frame.z, true, true, true});
     }
   }
   return layer;

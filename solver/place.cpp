@@ -442,10 +442,7 @@ double HintPreference(const Layer& layer, int self, const RoomState& state, cons
       for (size_t k = 0; k < layer.bodies.size(); ++k) {
         const Body& q = layer.bodies[k];
         if (static_cast<int>(k) == self || !q.active || q.covering) continue;
-        const OrientedBox box = LayerBox(q);
-        const Point d = geo::Sub(p, box.c);
-        const double lx = std::abs(geo::Dot(d, box.U())) - box.hx, ly = std::abs(geo::Dot(d, box.V())) - box.hy;
-        clear = std::min(clear, std::hypot(std::max(lx, 0.0), std::max(ly, 0.0)));
+        clear = std::min(clear, DistanceToBox(LayerBox(q), p));
       }
       pref -= 0.5 * std::min(std::max(0.0, clear - radius), 2.5);
     }
@@ -686,6 +683,7 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
     n = std::max(n, 1);
     for (double yaw : {0.0, kHalfPi}) {
       const double ex = Extent(hx, hy, yaw, {1, 0}), ey = Extent(hx, hy, yaw, {0, 1});
+      if (x1 - x0 < 2.0 * (ex + 0.006)) continue;  // wider than the surface this way round
       const double pitch = (x1 - x0) / n;
       for (int k = 0; k < n; ++k) {
         const double x = std::clamp(x0 + (k + 0.5) * pitch, x0 + ex + 0.006, x1 - ex - 0.006);
@@ -696,15 +694,17 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   for (double yaw : {0.0, kHalfPi, kPi, -kHalfPi}) {
     for (double x = x0; x <= x1 + 1e-9; x += step) {
       for (double y = y0; y <= y1 + 1e-9; y += step) {
+        if (at_back) {  // behind the places at the back
+          out.push_back({x, y, b.p[2], yaw, -1, 1.0 + 1.0 * (y1 - y) + (yaw != 0.0 ? 0.1 : 0.0)});
+          continue;
+        }
         // Spread out: away from the siblings already there, near the middle for the first.
         double nearest = 0.4;
         for (const Body& q : layer.bodies) {
           if (&q == &b || !q.active || q.motion == Motion::kFixed) continue;
           nearest = std::min(nearest, std::hypot(q.p[0] - x, q.p[1] - y));
         }
-        double pref = 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0);
-        if (at_back) pref = 1.0 + 1.0 * (y1 - y) + (yaw != 0.0 ? 0.1 : 0.0);  // behind the places at the back
-        out.push_back({x, y, b.p[2], yaw, -1, pref});
+        out.push_back({x, y, b.p[2], yaw, -1, 0.05 * std::hypot(x - centroid.x, y - centroid.y) - 0.2 * nearest + (yaw != 0.0 ? 0.02 : 0.0)});
       }
     }
   }
@@ -1028,7 +1028,7 @@ Membership GroupMembership(const RoomState& state, int object) {
         (r == SemanticRelation::kNextTo || r == SemanticRelation::kFaceTo))
       return {GroupRole::kTableSeat, t};
     if (OneOf(o.category, {"chair", "office-chair", "child-chair"}) && hub == "desk" && r == SemanticRelation::kFrontOf &&
-        e.max_gap <= 0.5 + 1e-9)
+        IsDeskSeat(state.edges, o.id, e.target))
       return {GroupRole::kDeskSeat, t};
     if (o.category == "nightstand" && OneOf(hub, {"bed", "child-bed"})) return {GroupRole::kBedside, t, SideNamed(state, object, t)};
     if (o.category == "coffee-table" && hub == "sofa" && r == SemanticRelation::kFrontOf) return {GroupRole::kCoffeeTable, t};
@@ -1037,6 +1037,16 @@ Membership GroupMembership(const RoomState& state, int object) {
     if (o.category == "tv-stand" && hub == "sofa" && r == SemanticRelation::kFrontOf) return {GroupRole::kTvStand, t};
   }
   return {};
+}
+
+bool IsDeskSeat(const std::vector<SemanticEdge>& edges, const std::string& chair, const std::string& desk) {
+  bool front = false, close = false;
+  for (const SemanticEdge& e : edges) {
+    if (e.source != chair || e.target != desk) continue;
+    front = front || e.relation == SemanticRelation::kFrontOf;
+    close = close || (e.relation == SemanticRelation::kNextTo && e.max_gap <= 0.5 + 1e-9);
+  }
+  return front && close;
 }
 
 }  // namespace villa::solver

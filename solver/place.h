@@ -56,6 +56,9 @@ struct Membership {
 };
 // The group role of an object standing on the floor, read from its category and its edges to the hub.
 Membership GroupMembership(const RoomState& state, int object);
+// Whether `chair` is `desk`'s own chair, pulled in: a front_of edge to the desk whose gap (the next_to edge
+// scene_problem.cpp derives from it) is at most 0.5 m; a visitor's chair 0.5-1.5 m before the desk is not.
+bool IsDeskSeat(const std::vector<SemanticEdge>& edges, const std::string& chair, const std::string& desk);
 
 // Children without a chosen surface or cavity get one: the surface or cavity with the most room left
 // that is tall enough (asset height x scale_min within its clear height), in a deterministic order.

@@ -9,6 +9,7 @@
 
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
+#include "scene/scene.h"
 #include "solver/energy.h"
 #include "solver/free_space.h"
 
@@ -161,11 +162,12 @@ double ZoneCover(const ReachedCells& cells, const std::vector<Ring>& zone, const
 
 // Moves object `id` of `solver` to the nearest slot, at most `max_move` m away, where `good` holds for its
 // box and zone there and that keeps the room's hard constraints; the action's result, or nothing when no
-// slot does. `why` ends the action's reason ("... moved 0.40 m to a free slot WHY").
+// slot does. `why` ends the action's reason ("... moved 0.40 m to a free slot WHY"). An object with no
+// interaction zone is moved only when `zoneless` (`good` then sees no zone).
 std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id, const ReachFeedbackOptions& options, double max_move,
                                        const std::string& cause,
                                        const std::function<bool(const OrientedBox&, const std::vector<Ring>&)>& good,
-                                       const std::string& why, const std::function<bool()>& keep = nullptr) {
+                                       const std::string& why, const std::function<bool()>& keep = nullptr, bool zoneless = false) {
   const RoomSolution now = solver.Solution();
   int i = -1;
   for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k) {
@@ -174,12 +176,12 @@ std::optional<ActionResult> MoveToSlot(RoomSolver& solver, const std::string& id
   if (i < 0) return std::nullopt;
   const ProblemObject& o = now.objects[i];
   const std::optional<InteractionZone> zone = ZoneOf(o);
-  if (!zone) return std::nullopt;
+  if (!zone && !zoneless) return std::nullopt;
   int tries = 0, refused = 0;
   for (const Slot& slot : FloorSlots(solver.Problem(), o, now.placements[i], options.slot_step)) {
     if (slot.distance > max_move) break;
     const OrientedBox box = StandingBox(o, slot.pose);
-    if (!good(box, ZoneFootprints(box, zone->side, zone->depth * slot.pose.scale))) continue;
+    if (!good(box, zone ? ZoneFootprints(box, zone->side, zone->depth * slot.pose.scale) : std::vector<Ring>{})) continue;
     const std::optional<int> wall = slot.wall >= 0 ? std::optional<int>(slot.wall) : std::nullopt;
     if (!solver.Fits(id, slot.pose, wall)) {
       if (++tries >= options.slot_tries) break;
@@ -214,15 +216,21 @@ std::optional<ActionResult> MoveToReachableSlot(RoomSolver& solver, const std::s
       "a person can step up to");
 }
 
+bool Protected(const RoomSolver& solver, const std::string& id) {
+  const int i = solver.Problem().Find(id);
+  return i >= 0 && IsProtected(solver.Problem().objects[i].priority);
+}
+
 // Removes object `id`, unless it is protected (an essential piece of its room, or named in the request:
-// issue 27): then the action is refused with why, and the zone or way it closes is reported instead.
-ActionResult Remove(RoomSolver& solver, const std::string& id, const std::string& why) {
+// issue 27) and `even_protected` is false: then the action is refused with why, and the zone or way it
+// closes is reported instead.
+ActionResult Remove(RoomSolver& solver, const std::string& id, const std::string& why, bool even_protected = false) {
   Action a;
   a.kind = ActionKind::kRemoveEntity;
   a.id = id;
   a.reason = "reachability: " + why;
   const RoomProblem& problem = solver.Problem();
-  if (const int i = problem.Find(id); i >= 0 && IsProtected(problem.objects[i].priority)) {
+  if (const int i = problem.Find(id); !even_protected && i >= 0 && IsProtected(problem.objects[i].priority)) {
     ActionResult r;
     r.action = a;
     r.status = ActionStatus::kRefused;
@@ -340,6 +348,38 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
   summary.first = *first;
   ReachReport report = *first;
   const double half = options.reach.radius + options.walkway_margin;
+  // The last resort for a protected piece (essential, or asked for: issue 27) that closes room `target`
+  // after every round (the agent never pushes such a piece through a wall or out of its group): moved, with
+  // its group, to the nearest slot where a person gets into the room, a reachability check for each of at
+  // most eight slots 0.4 m apart. Nothing when it is no protected piece or no slot lets a person in.
+  const auto move_aside = [&](const std::string& target, const std::string& id) -> std::optional<RoomAction> {
+    const auto b = seen.find(id);
+    if (b == seen.end() || !solvers.count(b->second.room)) return std::nullopt;
+    const std::string room = b->second.room;  // (a copy: the checks below rebuild `seen`)
+    RoomSolver& solver = *solvers.at(room);
+    if (!Protected(solver, id)) return std::nullopt;
+    constexpr int kProtectedTries = 8;
+    constexpr double kApart = 0.4;  // m between the slots tried (and from where it stands): nudges do not open a way
+    std::vector<Point> tried{seen.at(id).footprint.empty() ? Point{} : Centroid(seen.at(id).footprint)};
+    const auto spread = [&](const OrientedBox& box, const std::vector<Ring>&) {
+      return std::all_of(tried.begin(), tried.end(), [&](Point p) { return geo::Dist(p, box.c) >= kApart; });
+    };
+    const auto entered = [&] {
+      const RoomSolution now = solver.Solution();
+      for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k)
+        if (now.objects[k].id == id) tried.push_back({now.placements[k].pose.x, now.placements[k].pose.y});
+      if (static_cast<int>(tried.size()) > kProtectedTries + 1) return false;
+      const auto again = check();
+      const TargetResult* after = again.ok() ? again->Find(target) : nullptr;
+      return after && after->reachable;
+    };
+    auto moved = MoveToSlot(solver, id, options, std::numeric_limits<double>::infinity(), "it closes the way into " + target, spread,
+                            "where a person gets into " + target + ", its group along", entered, /*zoneless=*/true);
+    if (!moved) return std::nullopt;
+    return RoomAction{room, *moved};
+  };
+  std::set<std::string> aside_tried;  // protected blockers tried with move_aside (once each)
+  int extra_rounds = 0;               // one more round after a protected blocker moved aside
   for (int round = 0;; ++round) {
     std::vector<std::string> unreachable;
     for (const TargetResult& t : report.targets) {
@@ -350,7 +390,7 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
       summary.reason = round == 0 ? "every room and zone reachable" : "every room and zone reachable after " + std::to_string(round) + " round(s)";
       break;
     }
-    if (round == options.rounds) {
+    if (round == options.rounds + extra_rounds) {
       summary.reason = std::to_string(unreachable.size()) + " target(s) still unreachable after " + std::to_string(round) + " round(s)";
       break;
     }
@@ -361,8 +401,23 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     for (const TargetResult& t : report.targets) {
       if (t.kind == TargetKind::kRoom && !t.reachable) rooms_unreached.insert(t.name);
     }
+    // A room a protected piece still closes after a round of walkways: the piece moves aside (at most once
+    // a piece), and the room's zones get one more round.
+    std::set<std::string> opened;
+    if (round > 0)
+      for (const TargetResult& t : report.targets) {
+        if (t.kind != TargetKind::kRoom || t.reachable || t.structural) continue;
+        for (const std::string& id : t.blockers) {
+          if (!aside_tried.insert(id).second) continue;
+          if (std::optional<RoomAction> a = move_aside(t.name, id)) {
+            fr.actions.push_back(std::move(*a));
+            opened.insert(t.name);
+            extra_rounds = 1;
+          }
+        }
+      }
     for (const TargetResult& t : report.targets) {
-      if (t.reachable || t.structural) continue;
+      if (t.reachable || t.structural || opened.count(t.name)) continue;
       if (t.kind == TargetKind::kZone) {
         // A zone in a room that cannot be entered waits for the room's walkway.
         if (rooms_unreached.count(t.room)) continue;
@@ -400,7 +455,7 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
         list.insert(list.end(), pieces.begin(), pieces.end());
       }
     }
-    if (lay.empty()) {
+    if (lay.empty() && fr.actions.empty()) {
       summary.reason = std::to_string(unreachable.size()) +
                        " target(s) unreachable, none that moving furniture can help (walls, stairs, holes or door leaves close them)";
       summary.rounds.push_back(std::move(fr));
@@ -452,7 +507,19 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
         for (const std::string& id : t.blockers) {
           const auto b = seen.find(id);
           if (gone.count(id) || b == seen.end() || !solvers.count(b->second.room)) continue;
-          act(b->second.room, Remove(*solvers.at(b->second.room), id, "it closes the way into " + t.name + " after every round"));
+          const std::string room = b->second.room;
+          RoomSolver& solver = *solvers.at(room);
+          const std::string why = "it closes the way into " + t.name + " after every round";
+          if (!Protected(solver, id)) {
+            act(room, Remove(solver, id, why));
+          } else if (moving) {
+            if (!aside_tried.insert(id).second) continue;  // tried in the rounds already
+            if (std::optional<RoomAction> a = move_aside(t.name, id)) act(a->room, a->result);
+          } else {
+            // No slot lets a person in: the way wins (a room no one can enter serves no one); the room's
+            // functional check reports the piece missing, with this reason.
+            act(room, Remove(solver, id, why + ", and no slot off the way holds it", /*even_protected=*/true));
+          }
         }
         continue;
       }

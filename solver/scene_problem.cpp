@@ -10,6 +10,7 @@
 #include "mesh/geometry2d.h"
 #include "solver/box.h"
 #include "solver/functional.h"
+#include "solver/place.h"
 
 namespace villa::solver {
 namespace {
@@ -299,9 +300,8 @@ void MarkEssentials(Category room, RoomProblem& problem) {
   // request names.
   for (ProblemObject& o : problem.objects)
     for (const SemanticEdge& e : problem.edges)
-      if (e.source == o.id && e.relation == SemanticRelation::kNextTo && e.max_gap <= 0.5 &&
-          (o.category == "chair" || o.category == "office-chair" || o.category == "child-chair"))
-        if (const int d = problem.Find(e.target); d >= 0 && problem.objects[d].category == "desk")
+      if (e.source == o.id && (o.category == "chair" || o.category == "office-chair" || o.category == "child-chair"))
+        if (const int d = problem.Find(e.target); d >= 0 && problem.objects[d].category == "desk" && IsDeskSeat(problem.edges, o.id, e.target))
           o.priority = std::max(o.priority, Priority::kNamed);
   // The rest of a living room's seating group (what its functional check asks for) is protected like what
   // the request names: the first coffee table, TV stand and TV.

@@ -334,7 +334,8 @@ struct RoomSolver::Impl {
       // A hub's members move with it (issue 27): they are no obstacles to its new slot, and a slot where one
       // of them finds no place by it is passed over while another has room for the whole group.
       const std::vector<int> members = p < 0 && options.functional_groups ? MembersOf(i) : std::vector<int>{};
-      for (int pass = members.empty() ? 1 : 0; pass < 2 && !best; ++pass) {
+      bool found = false;  // in this surface or cavity (the others are tried too: the best of all wins)
+      for (int pass = members.empty() ? 1 : 0; pass < 2 && !found; ++pass) {
         Layer layer = LayerFor(i, members);
         layer.walkways_bind_all = true;  // a slot out of the reachability feedback's way, for everything
         if (TooTall(layer, i)) continue;
@@ -352,10 +353,11 @@ struct RoomSolver::Impl {
           if (polish.cost.hard > kFeasible) return false;
           RoomState probe = state;
           WriteBack(layer, 0, probe);
-          const ObjectPlacement& found = probe.placements[i];
-          if (pass == 0 && !GroupFitsAt(i, members, found)) return false;
-          const Slot slot{found.pose, found.surface, found.cavity, found.wall, polish.cost};
+          const ObjectPlacement& at = probe.placements[i];
+          if (pass == 0 && !GroupFitsAt(i, members, at)) return false;
+          const Slot slot{at.pose, at.surface, at.cavity, at.wall, polish.cost};
           if (!best || slot.cost.soft_linear < best->cost.soft_linear - 1e-12) best = slot;
+          found = true;
           return true;
         });
         summary.candidates += stats.candidates;
@@ -469,11 +471,9 @@ struct RoomSolver::Impl {
         // Undone when it ends in harder trouble than it started (a walkway's push can leave a chair in its
         // desk where the room is tight).
         const double hard_before = Evaluate(MakeTerms(layer, state, options, -1, -1.0)).hard;
-        const RoomState unpolished = state;
-        const PolishStats polish = Polish(layer, state, options);
+        const PolishStats polish = Polish(layer, state, options);  // the state changes only by WriteLayer
         Account(polish);
         if (polish.cost.hard <= hard_before + kFeasible) WriteLayer(layer);
-        else state = unpolished;
       }
       return r;
     }
@@ -553,9 +553,10 @@ struct RoomSolver::Impl {
     }
     // A member stays in its group: a move that would carry it out of its group's rules is refused (one
     // already out of them may move, towards them or not).
-    if (const std::string problem = in_group ? GroupProblem(i) : ""; !problem.empty()) {
+    // (Its index again: dropping members renumbers the objects.)
+    if (const std::string why = in_group ? GroupProblem(state.Find(action.id)) : ""; !why.empty()) {
       state = saved;
-      return Refuse(r, "\"" + action.id + "\" would leave its group: " + problem);
+      return Refuse(r, "\"" + action.id + "\" would leave its group: " + why);
     }
     r.status = how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
     r.message = how.empty() ? "done" : how;
@@ -571,17 +572,11 @@ struct RoomSolver::Impl {
 
   // ---- functional groups (issue 27; the rules of solver/group_rules.h, the templates of place.h)
 
-  PlanBox PlanBoxOf(int i) const {
-    const Pose& p = state.placements[i].pose;
-    const ProblemObject& o = state.objects[i];
-    return {{p.x, p.y}, p.yaw, 0.5 * o.asset.size.x * p.scale, 0.5 * o.asset.size.y * p.scale};
-  }
-
   // What is wrong with member i's place in its group ("" when it holds, or when i is no member).
   std::string GroupProblem(int i) const {
     const Membership m = GroupMembership(state, i);
     if (m.role == GroupRole::kNone) return "";
-    const PlanBox self = PlanBoxOf(i), hub = PlanBoxOf(m.hub);
+    const OrientedBox self = state.WorldBox(i), hub = state.WorldBox(m.hub);
     switch (m.role) {
       case GroupRole::kTableSeat: return TableSeatProblem(self, hub);
       case GroupRole::kDeskSeat: return DeskSeatProblem(self, hub);

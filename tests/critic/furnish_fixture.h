@@ -5,6 +5,7 @@
 // folder is removed afterwards.
 #include <unistd.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -25,14 +26,15 @@ struct FurnishedRoom {
   int Count(const char* when, const char* relation, const char* what) const { return record[when]["by_relation"][relation][what].get<int>(); }
 };
 
-// `layout`: a file under tests/fixtures/layouts/; `reach`: the reachability feedback loop on.
-inline FurnishedRoom FurnishFixtureRoom(const std::string& layout, const std::string& room, bool reach) {
+// `layout`: a file under tests/fixtures/layouts/; `reach`: the reachability feedback loop on; `seed`: the
+// furnishing's seed.
+inline FurnishedRoom FurnishFixtureRoom(const std::string& layout, const std::string& room, bool reach, uint64_t seed = 7) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("villa_critic_fixture_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   solver::FurnishOptions options;
   options.rooms = {room};
-  options.seed = 7;
+  options.seed = seed;
   options.procedural_only = true;
   options.pictures = false;
   options.check_reach = reach;

@@ -22,10 +22,7 @@ int Index(const RoomSolution& s, const std::string& id) {
   return -1;
 }
 
-PlanBox Plan(const RoomSolution& s, int k) {
-  const Pose& p = s.placements[k].pose;
-  return {{p.x, p.y}, p.yaw, 0.5 * s.objects[k].asset.size.x * p.scale, 0.5 * s.objects[k].asset.size.y * p.scale};
-}
+OrientedBox Plan(const RoomSolution& s, int k) { return StandingBox(s.objects[k], s.placements[k].pose); }
 
 TEST_CASE("A bathroom too small for its toilet and a cabinet keeps the toilet, essential, and loses the cabinet",
           "[solver][groups]") {

@@ -207,5 +207,47 @@ TEST_CASE("a small dining room whose table and chairs close the way to its door 
   CHECK(kept >= 2);  // moves first: most chairs keep their place at the table or near it
 }
 
+TEST_CASE("an essential piece that closes the only way in moves off the way, or goes when no slot holds it",
+          "[reach]") {
+  // Issue 27: essentials are kept from removal, but not at the cost of a room nobody can enter. A piece as
+  // wide as the 4.7 x 3.7 m room stands against its south wall, across the door.
+  const Built built = BuildFixture("house_one_floor.json");
+  for (const double depth : {3.0, 3.65}) {
+    DYNAMIC_SECTION("depth " << depth) {
+      RoomProblem problem = WithFloor({{0.25, 5.06}, {4.94, 5.06}, {4.94, 8.75}, {0.25, 8.75}});
+      problem.room = "bedroom_0/0";
+      ProblemObject bed = BoxObject("bed-0", 4.6, depth, 0.5);
+      bed.priority = Priority::kEssential;
+      problem.objects.push_back(bed);
+      RoomSolver solver(problem, {});
+      REQUIRE(solver.Initialise().ok());
+      solver.RunAgent();
+      REQUIRE(Put(solver, "r/bed-0", 2.595, 5.06 + 0.01 + depth / 2, 0.0).status != ActionStatus::kRefused);
+
+      auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
+      REQUIRE(summary.ok());
+      INFO(summary->BriefReport() << summary->first.BriefReport());
+      const TargetResult* before = summary->first.Find("bedroom_0/0");
+      REQUIRE(before);
+      CHECK_FALSE(before->reachable);
+      CHECK(before->blockers == std::vector<std::string>{"r/bed-0"});
+      CHECK(summary->all_reachable);
+      // 3.0 m deep: moved north, the 0.68 m left at the door lets a person in. 3.65 m: no slot leaves room
+      // for a person, so it goes, and the action says why.
+      bool moved = false, removed_why = false;
+      for (const FeedbackRound& round : summary->rounds)
+        for (const RoomAction& a : round.actions) {
+          if (a.result.action.id != "r/bed-0" || a.result.status == ActionStatus::kRefused) continue;
+          moved = moved || a.result.action.kind == ActionKind::kUpdatePose;
+          removed_why = removed_why || (a.result.action.kind == ActionKind::kRemoveEntity &&
+                                        a.result.action.reason.find("no slot off the way holds it") != std::string::npos);
+        }
+      CHECK(Removed(solver.Solution(), "r/bed-0") == (depth > 3.2));
+      CHECK(moved == (depth < 3.2));
+      CHECK(removed_why == (depth > 3.2));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace villa::solver
