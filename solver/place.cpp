@@ -677,6 +677,7 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   // in as many evenly spaced places as the parent has pillows, side by side (issue 27: a first one in the
   // middle left the second none beside it, and it lay mid-bed), turned a quarter where they are too wide.
   const bool at_back = state.objects[b.object].category == "pillow";
+  const bool on_bed = at_back && layer.parent >= 0 && OneOf(state.objects[layer.parent].category, {"bed", "child-bed"});
   if (at_back && layer.parent >= 0) {
     int n = 0;
     for (int c : state.children[layer.parent]) n += state.objects[c].category == "pillow";
@@ -694,8 +695,8 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   for (double yaw : {0.0, kHalfPi, kPi, -kHalfPi}) {
     for (double x = x0; x <= x1 + 1e-9; x += step) {
       for (double y = y0; y <= y1 + 1e-9; y += step) {
-        if (at_back) {  // behind the places at the back
-          out.push_back({x, y, b.p[2], yaw, -1, 1.0 + 1.0 * (y1 - y) + (yaw != 0.0 ? 0.1 : 0.0)});
+        if (at_back) {  // behind the places at the back; on a bed, nowhere else (shrunk, else left out)
+          if (!on_bed) out.push_back({x, y, b.p[2], yaw, -1, 1.0 + 1.0 * (y1 - y) + (yaw != 0.0 ? 0.1 : 0.0)});
           continue;
         }
         // Spread out: away from the siblings already there, near the middle for the first.

@@ -207,11 +207,17 @@ struct RoomSolver::Impl {
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int j = static_cast<int>(k);
       if (state.parent[j] >= 0 || GroupProblem(j).empty()) continue;
-      if (auto slot = FindSlot(j)) {
-        state.placements[j].wall = slot->wall;
-        state.SetPose(j, slot->pose);
-      }
+      if (auto slot = FindSlot(j)) MoveWithGroup(j, slot->pose, slot->wall);
     }
+  }
+
+  // Object j to a free slot, its own members (if it is a hub too) carried along.
+  void MoveWithGroup(int j, const Pose& pose, int wall) {
+    const Pose from = state.placements[j].pose;
+    state.placements[j].wall = wall;
+    state.SetPose(j, pose);
+    if (options.functional_groups)
+      if (const std::vector<int> members = MembersOf(j); !members.empty()) Carry(members, from, state.placements[j].pose);
   }
 
   // Places a surface's or cavity's children again from scratch (after a removal freed room there); the
@@ -604,7 +610,12 @@ struct RoomSolver::Impl {
   void Carry(const std::vector<int>& members, const Pose& from, const Pose& to) {
     const double turn = WrapAngle(to.yaw - from.yaw);
     const double c = std::cos(turn), s = std::sin(turn);
-    for (int j : members) {
+    // A member that is a hub itself (the coffee table of the sofa, with its armchairs) takes its own along.
+    std::vector<int> all = members;
+    for (size_t k = 0; k < all.size(); ++k)
+      for (int m : MembersOf(all[k]))
+        if (std::find(all.begin(), all.end(), m) == all.end()) all.push_back(m);
+    for (int j : all) {
       Pose p = state.placements[j].pose;
       const double dx = p.x - from.x, dy = p.y - from.y;
       p.x = to.x + c * dx - s * dy;
@@ -634,9 +645,7 @@ struct RoomSolver::Impl {
     for (int j : members) {
       if (CostAt(j).hard <= kFeasible && GroupProblem(j).empty()) continue;
       if (auto slot = FindSlot(j)) {
-        ObjectPlacement& pl = state.placements[j];
-        pl.wall = slot->wall;
-        state.SetPose(j, slot->pose);
+        MoveWithGroup(j, slot->pose, slot->wall);
       } else if (CostAt(j).hard > kFeasible) {
         stuck.push_back(j);
       }
