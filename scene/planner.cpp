@@ -224,6 +224,7 @@ class Planning {
     Settings();
     Grow();
     CompleteGroups();
+    Settings();  // the place settings follow the seats CompleteGroups added
     Trim();
     if (room_.category == Category::kBathroom && BathroomFixtures()) {
       Grow();  // what the fixtures left: towel racks, bottles on the basin instead of the cabinet's things
@@ -646,12 +647,28 @@ class Planning {
   // last, the table's minimum of chairs (Draw and Grow stop at the target; Mandatory ran before the hub was
   // drawn).
   void CompleteGroups() {
-    for (const ItemPrior& item : priors_.items) {
-      if ((item.requires_category.empty() && item.from_area <= 0.0) || item.mount == Mount::kParent) continue;
-      const int want = std::min(MinOf(item), SeatCap(item));
-      while (CountOf(&item) < want && Allowed(item))
-        if (!AddPrior(item)) break;
-    }
+    for (const ItemPrior& item : priors_.items)
+      if (!item.requires_category.empty() && item.mount != Mount::kParent) FillTo(item, MinWanted(item));
+  }
+
+  // An item's minimum: the priors', capped at the seats its table gives (noted once when that is fewer).
+  int MinWanted(const ItemPrior& item) {
+    const int min = MinOf(item), seats = SeatCap(item);
+    if (seats < min && capped_.insert(&item).second)
+      notes_.push_back("seats for " + std::to_string(seats) + " " + std::string(item.category) + "(s) around the " +
+                       std::string(item.requires_category) + " with 0.75 m behind each (the priors ask " + std::to_string(min) + ")");
+    return std::min(min, seats);
+  }
+
+  // Adds `item` until there are `want`; a note when the room takes no more.
+  void FillTo(const ItemPrior& item, int want) {
+    while (CountOf(&item) < want && Allowed(item))
+      if (!AddPrior(item)) {
+        notes_.push_back("no room for " + std::string(item.category) + " (" + std::to_string(CountOf(&item)) + " of " +
+                         std::to_string(want) + ")");
+        dropped_ += want - CountOf(&item);
+        break;
+      }
   }
 
   // Place settings follow the seats: one per chair around their table, within the item's range.
@@ -673,14 +690,7 @@ class Planning {
   void Mandatory(bool small) {
     for (const ItemPrior& item : priors_.items) {
       if ((item.mount == Mount::kParent) != small) continue;
-      int want = item.per_seat ? SettingsWanted(item) : std::min(MinOf(item), SeatCap(item));
-      while (CountOf(&item) < want && Allowed(item))
-        if (!AddPrior(item)) {
-          notes_.push_back("no room for " + std::string(item.category) + " (" + std::to_string(CountOf(&item)) + " of " +
-                           std::to_string(want) + ")");
-          dropped_ += want - CountOf(&item);
-          break;
-        }
+      FillTo(item, item.per_seat ? SettingsWanted(item) : MinWanted(item));
     }
   }
 
@@ -1017,6 +1027,7 @@ class Planning {
   int lo_ = 0, hi_ = 0, target_ = 0;
   int dropped_ = 0;
   std::set<std::string> excluded_, named_;
+  std::set<const ItemPrior*> capped_;  // items whose seats MinWanted noted
   std::vector<std::string> notes_;
 };
 
