@@ -13,6 +13,8 @@
 #include "critic/observation.h"
 #include "critic/offline.h"
 #include "critic/prompts.h"
+#include "solver/functional.h"
+#include "solver/scene_problem.h"
 #include "util/atomic_file.h"
 #include "util/text_table.h"
 
@@ -144,6 +146,28 @@ void NoteBest(LoopState& st);
 
 RoomRelations Measure(const LoopState& st, const solver::RoomSolution& s) { return MeasureRelations(s.objects, s.placements, st.graph); }
 
+// The functional checks' group problems and missing essentials of an arrangement (the floor not measured).
+int GroupProblems(const LoopState& st, const solver::RoomSolution& s) {
+  if (!st.input.context || !st.input.problem || !st.input.planned) return 0;
+  const std::vector<scene::SceneObject> objects = solver::SolvedSceneObjects(*st.input.problem, s, *st.input.planned);
+  solver::FunctionalInput in;
+  in.context = st.input.context;
+  for (const scene::SceneObject& o : objects) in.objects.push_back(&o);
+  if (st.input.edges) in.edges = *st.input.edges;
+  in.measure_floor = false;
+  const solver::FunctionalCheck check = solver::CheckRoomFunction(in);
+  int n = static_cast<int>(check.missing.size());
+  for (const solver::GroupCheck& g : check.groups) n += static_cast<int>(g.problems.size());
+  return n;
+}
+
+// Unmet relations and zones, with the group problems first.
+Unmet UnmetAll(const LoopState& st, const solver::RoomSolution& s, const RoomRelations& relations) {
+  Unmet u = UnmetOf(relations);
+  u.groups = GroupProblems(st, s);
+  return u;
+}
+
 void LogViews(RoundLog& log, const std::vector<solver::RoomViewImage>& views, std::vector<std::string>* names) {
   for (const solver::RoomViewImage& v : views) {
     const std::string name = "view-" + v.name + ".png";
@@ -156,7 +180,7 @@ void LogViews(RoundLog& log, const std::vector<solver::RoomViewImage>& views, st
 void NoteBest(LoopState& st) {
   const solver::RoomSolution now = st.session.Solution();
   if (HardTrouble(now)) return;
-  const Unmet u = UnmetOf(Measure(st, now));
+  const Unmet u = UnmetAll(st, now, Measure(st, now));
   if (st.best_room && !(u < st.best_unmet)) return;
   st.best_room = st.session.Save();
   st.best_unmet = u;
@@ -166,7 +190,7 @@ void NoteBest(LoopState& st) {
 void BackToBest(LoopState& st) {
   if (!st.best_room) return;
   const solver::RoomSolution now = st.session.Solution();
-  if (!HardTrouble(now) && !(st.best_unmet < UnmetOf(Measure(st, now)))) return;
+  if (!HardTrouble(now) && !(st.best_unmet < UnmetAll(st, now, Measure(st, now)))) return;
   st.session.Restore(*st.best_room);
   st.back_to_best = true;
 }
@@ -224,7 +248,7 @@ void OfflineRounds(LoopState& st) {
       if (tries >= st.options.max_tries) break;
       const solver::RoomSolution before = st.session.Solution();
       const RoomRelations before_relations = Measure(st, before);
-      const Unmet unmet_before = UnmetOf(before_relations);
+      const Unmet unmet_before = UnmetAll(st, before, before_relations);
       Json entry{{"problem", attempt.problem}, {"kept", false}, {"actions", Json::array()}};
       bool helped = false;
       for (const std::vector<Step>& alternative : attempt.alternatives) {
@@ -258,7 +282,7 @@ void OfflineRounds(LoopState& st) {
         }
         const solver::RoomSolution after = st.session.Solution();
         const RoomRelations after_relations = Measure(st, after);
-        helped = !HardTrouble(after) && !results.empty() && !refused && UnmetOf(after_relations) < unmet_before;
+        helped = !HardTrouble(after) && !results.empty() && !refused && UnmetAll(st, after, after_relations) < unmet_before;
         if (!helped) st.session.Restore(*undo);
         for (const solver::ActionResult& r : results) entry["actions"].push_back(solver::ActionResultToJson(r));
         if (helped) break;

@@ -42,9 +42,15 @@ struct Attempt {
 // counts: removing an object never mends its edges) plus the zones entered, and in sum how far from
 // holding they are (edges: CheckEdge's violation; a lost edge 1; a zone 0.5 per object standing in it).
 struct Unmet {
+  // Functional group problems (solver/functional.h: a chair off its table, a sofa turned from the TV, a
+  // missing essential) come first: a move that tears a group apart never counts as a fix (issue 27).
+  int groups = 0;
   int count = 0;
   double amount = 0.0;
-  bool operator<(const Unmet& o) const { return count != o.count ? count < o.count : amount < o.amount - 1e-6; }
+  bool operator<(const Unmet& o) const {
+    if (groups != o.groups) return groups < o.groups;
+    return count != o.count ? count < o.count : amount < o.amount - 1e-6;
+  }
 };
 Unmet UnmetOf(const RoomRelations& relations);
 

@@ -158,6 +158,35 @@ class Planning {
     // Sizes lean small in small rooms and large in large ones.
     double s = priors_.usual_area > 0 ? area / priors_.usual_area : 1.0;
     size_factor_ = std::clamp(0.2 + 0.3 * s, 0.1, 0.65);
+    clear_width_ = ClearWidth();
+  }
+
+  // The width of the room where it is narrowest for what stands in it: twice the radius of the largest disc
+  // on the free floor that keeps out of the doors' sweeps and strips and the open passages (a 2.5 m wide bedroom
+  // walked through from door to door is about 2.3 m wide; an L of 2 m strips is 2 m wide). Sampled on a
+  // 0.1 m grid.
+  double ClearWidth() const {
+    std::vector<const Ring*> out;
+    for (const KeepOut& k : room_.keep_outs)
+      if (k.kind == KeepOutKind::kDoorSweep || k.kind == KeepOutKind::kDoorStrip || k.kind == KeepOutKind::kOpenPassage)
+        out.push_back(&k.polygon);
+    double best = 0.0;
+    for (const Ring& ring : room_.free_floor) {
+      double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+      for (const Point& p : ring) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+      for (double x = x0 + 0.05; x < x1; x += 0.1)
+        for (double y = y0 + 0.05; y < y1; y += 0.1) {
+          const Point p{x, y};
+          if (!PointInRing(p, ring, 0.0)) continue;
+          double r = DistanceToBoundary(p, ring);
+          for (const Ring* k : out) {
+            if (r <= best) break;
+            r = PointInRing(p, *k, 0.0) ? 0.0 : std::min(r, DistanceToBoundary(p, *k));
+          }
+          best = std::max(best, r);
+        }
+    }
+    return 2.0 * best;
   }
 
   // The longest run of wall a kitchen's chain may stand along: one free interval of a wall, or with
@@ -252,7 +281,16 @@ class Planning {
   Vec3 SizeOf(const CategoryInfo& c) {
     double f = std::clamp(size_factor_ + 0.2 * (rng_.Unit() - 0.5), 0.0, 1.0);
     auto pick = [&](double lo, double hi) { return Round2(lo + f * (hi - lo)); };
-    return {pick(c.size_min.x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
+    Vec3 size{pick(c.size_min.x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
+    // Issue 27: a narrow room gets the narrower pieces of the range, so that its essentials keep their
+    // clearances: a bed a free long side of 0.6 m, a table a row of chairs with 0.75 m behind them (chair
+    // 0.5 m, a 0.1 m gap) along its free side.
+    auto cap = [&](double& v, double lo, double limit) { v = std::max(lo, std::min(v, Round2(limit))); };
+    if (clear_width_ > 0.0) {
+      if (c.name == "bed" || c.name == "child-bed") cap(size.x, c.size_min.x, clear_width_ - 0.65);
+      if (c.name == "dining-table" || c.name == "conference-table") cap(size.y, c.size_min.y, clear_width_ - 1.4);
+    }
+    return size;
   }
 
   // Takes what a root object (on the floor, a wall or the ceiling) needs from the room; false (nothing
@@ -1024,6 +1062,7 @@ class Planning {
   double run_left_ = 0.0;     // m of the kitchen run's wall still free (kitchens only)
   bool run_limited_ = false;  // the kitchen run must fit run_left_
   double size_factor_ = 0.5;
+  double clear_width_ = 0.0;  // m, ClearWidth()
   int lo_ = 0, hi_ = 0, target_ = 0;
   int dropped_ = 0;
   std::set<std::string> excluded_, named_;

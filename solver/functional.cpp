@@ -95,7 +95,7 @@ class Checker {
     Beds();
     Kitchen();
     Bathroom();
-    Floor();
+    if (in_.measure_floor) Floor();
     Wishes();
     Odd();
     return std::move(out_);

@@ -109,6 +109,8 @@ struct FunctionalInput {
   // The room's semantic edges, when known: an armchair is the seating group's when it has an edge to its
   // coffee table or sofa (a reading chair elsewhere is a zone of its own); without them, when within 1.5 m.
   std::vector<scene::SemanticEdge> edges;
+  bool measure_floor = true;  // false: the floor's bare disc and far share are not measured (the critic's
+                              // per-move guard needs the groups only)
 };
 
 FunctionalCheck CheckRoomFunction(const FunctionalInput& input);

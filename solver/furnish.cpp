@@ -186,6 +186,7 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
       }
       report.critic = std::move(*figures);
     }
+    out.solver->TidyGroups(/*moves=*/true);
     report.seconds_solve = Since(t);
     out.planned = plan->objects;
     out.planned_edges = plan->edges;
@@ -246,6 +247,8 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
   for (const std::string& room : changed) {
     RoomSolver& solver = *by_room.at(room)->solver;
     if (!solver.Solution().summary.metrics.Clean()) solver.RunAgent();
+    // Removals only: a chair moved now could close a way the feedback opened.
+    solver.TidyGroups(/*moves=*/false);
     TakeSolution(*by_room.at(room));
   }
 

@@ -329,17 +329,24 @@ std::vector<BodyShape> ZoneShapes(const RoomState& state, int object) {
   if (!zone && o.asset.interaction_zone && o.asset.Has(kInteractor)) {
     zone = InteractionZone{o.asset.interaction_zone->side, o.asset.interaction_zone->depth, {}};
   }
-  if (!zone || zone->depth <= 0.0 || state.Hung(object)) return {};
-  const double d = zone->depth, hx = 0.5 * o.asset.size.x, hy = 0.5 * o.asset.size.y, h = o.asset.size.z;
-  const BodyShape front{0.0, -(hy + 0.5 * d), hx, 0.5 * d, 0.0, h};
-  const BodyShape back{0.0, hy + 0.5 * d, hx, 0.5 * d, 0.0, h};
-  const BodyShape left{hx + 0.5 * d, 0.0, 0.5 * d, hy, 0.0, h};
-  const BodyShape right{-(hx + 0.5 * d), 0.0, 0.5 * d, hy, 0.0, h};
-  if (zone->side == "front") return {front};
-  if (zone->side == "back") return {back};
-  if (zone->side == "left") return {left};
-  if (zone->side == "right") return {right};
-  return {left, right};
+  if (state.Hung(object)) return {};
+  const double hx = 0.5 * o.asset.size.x, hy = 0.5 * o.asset.size.y, h = o.asset.size.z;
+  std::vector<BodyShape> out;
+  if (zone && zone->depth > 0.0) {
+    const double d = zone->depth;
+    const BodyShape front{0.0, -(hy + 0.5 * d), hx, 0.5 * d, 0.0, h};
+    const BodyShape back{0.0, hy + 0.5 * d, hx, 0.5 * d, 0.0, h};
+    const BodyShape left{hx + 0.5 * d, 0.0, 0.5 * d, hy, 0.0, h};
+    const BodyShape right{-(hx + 0.5 * d), 0.0, 0.5 * d, hy, 0.0, h};
+    if (zone->side == "front") out = {front};
+    else if (zone->side == "back") out = {back};
+    else if (zone->side == "left") out = {left};
+    else if (zone->side == "right") out = {right};
+    else out = {left, right};
+  }
+  // Room to pull a dining chair out, behind it (its back is +y).
+  if (o.pull_out > 0.0) out.push_back({0.0, hy + 0.5 * o.pull_out, hx, 0.5 * o.pull_out, 0.0, h});
+  return out;
 }
 
 std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOptions& o, int only, double slack) {

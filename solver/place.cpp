@@ -355,6 +355,17 @@ bool BehindClear(const Layer& layer, int self, int hub, Point centre, Point out,
   return true;
 }
 
+// A dining or meeting table's chair without the 0.75 m behind it a person needs to pull it out, as it
+// stands now (its back is +y of its frame).
+bool CrampedSeat(const Layer& layer, int self, int hub, const RoomState& state) {
+  const Body& b = layer.bodies[self];
+  if (!b.active || GroupMembership(state, b.object).role != GroupRole::kTableSeat ||
+      !OneOf(state.objects[layer.bodies[hub].object].category, {"dining-table", "conference-table"}))
+    return false;
+  const OrientedBox box = LayerBox(b);
+  return !BehindClear(layer, self, hub, box.c, box.V(), box.U(), box.hx, box.hy, kSeatBehind);
+}
+
 // What is to stand in front of this object at a distance of a metre or more (a TV stand 2-3 m before the
 // sofa): its index and the gap range, from its front_of edge and the gap edge that carries the range
 // (solver/scene_problem.cpp turns a side relation with a gap into both).
@@ -635,7 +646,9 @@ std::vector<Candidate> RoomCandidates(const Layer& layer, int self, const RoomSt
   const bool hub = IncomingEdges(state, b.object) >= 2 || b.covering;
   std::vector<Candidate> grid;
   GridSlots(layer, self, FourTurns(classes), step, grid);
-  if (!hub) {
+  // A dining or meeting table may stand against a wall (its chairs on the other sides) where the room is
+  // too narrow to seat them all round it.
+  if (!hub || (o.functional_groups && OneOf(obj.category, {"dining-table", "conference-table"}))) {
     for (size_t w = 0; w < problem.walls.size(); ++w) {
       WallSlots(layer, self, state, static_cast<int>(w), 0.05, o.object_gap, 0.0, 0.0, grid);
     }
@@ -861,41 +874,72 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
       return GroupMembership(state, layer.bodies[k].object).role == GroupRole::kTableSeat;
     });
     const size_t kLookahead = o.functional_groups && (FacedFromAfar(state, layer.bodies[b].object) || seats) ? 12 : 4;
-    // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
-    std::vector<Scored> tries;
-    for (const Scored& t : RankCandidates(layer, b, state, o, rng, jitter, 64, stats)) {
-      const bool repeat = std::any_of(tries.begin(), tries.end(), [&](const Scored& u) {
-        return std::hypot(u.c.x - t.c.x, u.c.y - t.c.y) < 0.5 && std::abs(WrapAngle(u.c.yaw - t.c.yaw)) < 0.1;
-      });
-      if (!repeat) tries.push_back(t);
-      if (tries.size() == kLookahead) break;
-    }
     std::vector<int> group = {b};
     for (int k : PlacementOrder(layer, state)) {
       if (std::find(dependents.begin(), dependents.end(), k) != dependents.end()) group.push_back(k);
     }
     std::vector<Body> best_bodies;
     double best_hard = 1e300, best_soft = 1e300;
-    for (const Scored& t : tries) {
-      Put(layer, b, state, t.c);
-      for (size_t g = 1; g < group.size(); ++g) PlaceBody(layer, group[g], state, o, rng, jitter, stats);
-      // The group's cost: its terms, the hub's own preference and how snugly its companions sit.
-      LayerCost cost;
-      double snug = 0.0;
-      for (int g : group) {
-        const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
-        cost.hard += part.hard;
-        cost.soft_linear += part.soft_linear;
-        if (g != b) snug += Closeness(layer, g, state);
+    int best_cramped = 0;
+    auto try_poses = [&] {
+      // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
+      std::vector<Scored> tries;
+      const std::vector<Scored> ranked = RankCandidates(layer, b, state, o, rng, jitter, 64, stats);
+      auto distinct = [&](const Scored& t) {
+        return std::none_of(tries.begin(), tries.end(), [&](const Scored& u) {
+          return std::hypot(u.c.x - t.c.x, u.c.y - t.c.y) < 0.5 && std::abs(WrapAngle(u.c.yaw - t.c.yaw)) < 0.1;
+        });
+      };
+      for (const Scored& t : ranked) {
+        if (distinct(t)) tries.push_back(t);
+        if (tries.size() == kLookahead) break;
       }
-      const double soft = cost.soft_linear + t.c.pref + snug;
-      if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
-        best_hard = cost.hard;
-        best_soft = soft;
-        best_bodies.clear();
-        for (int g : group) best_bodies.push_back(layer.bodies[g]);
+      // A table in a narrow room seats its chairs on the free sides when it stands against a wall: its best
+      // few poses there are tried too.
+      if (seats) {
+        size_t by_wall = 0;
+        for (const Scored& t : ranked) {
+          if (t.c.wall < 0 || t.hard > 1e-10 || !distinct(t)) continue;
+          tries.push_back(t);
+          if (++by_wall == 4) break;
+        }
       }
-      for (size_t g = 1; g < group.size(); ++g) layer.bodies[group[g]].active = false;
+      for (const Scored& t : tries) {
+        Put(layer, b, state, t.c);
+        for (size_t g = 1; g < group.size(); ++g) PlaceBody(layer, group[g], state, o, rng, jitter, stats);
+        // The group's cost: its terms, the hub's own preference and how snugly its companions sit.
+        LayerCost cost;
+        double snug = 0.0;
+        int cramped = 0;
+        for (int g : group) {
+          const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
+          cost.hard += part.hard;
+          cost.soft_linear += part.soft_linear;
+          if (g != b) snug += Closeness(layer, g, state);
+          // A dining or meeting chair without 0.75 m to pull it out (issue 27): the group's pose that seats
+          // every chair roomily wins over one that crams some against a wall.
+          if (g != b && CrampedSeat(layer, g, b, state)) ++cramped;
+        }
+        const double soft = cost.soft_linear + t.c.pref + snug + 3.0 * cramped;
+        if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
+          best_hard = cost.hard;
+          best_soft = soft;
+          best_cramped = cramped;
+          best_bodies.clear();
+          for (int g : group) best_bodies.push_back(layer.bodies[g]);
+        }
+        for (size_t g = 1; g < group.size(); ++g) layer.bodies[group[g]].active = false;
+      }
+    };
+    try_poses();
+    // Every pose crams a chair (a meeting room 2.2 m wide): the table at its smallest scale, once.
+    Body& hub = layer.bodies[b];
+    const double scale_min = state.objects[hub.object].scale_min;
+    if (seats && best_cramped > 0 && hub.scalable && hub.s[0] > scale_min + 1e-9) {
+      const double full = hub.s[0];
+      hub.s[0] = scale_min;
+      try_poses();
+      if (best_bodies.empty() || best_bodies[0].s[0] != scale_min) hub.s[0] = full;
     }
     for (size_t g = 0; g < group.size() && !best_bodies.empty(); ++g) layer.bodies[group[g]] = best_bodies[g];
     for (int g : group) placed[g] = 1;

@@ -117,6 +117,9 @@ struct ProblemObject {
   double scale_max = 1.0;
   Priority priority = Priority::kPrior;
   std::optional<InteractionZone> zone;  // V_int only; nullopt: none kept free
+  // m kept free behind it, across its width (a dining or meeting table's chair: room to pull it out, issue
+  // 27); a second zone of the solver's, as soft as V_int's. 0: none.
+  double pull_out = 0.0;
   // Placement wishes of the planner (scene/scene.h kHint*: far_from_door, near_window, middle, corner,
   // open_floor), read as preferences by the constructive start (solver/place.cpp).
   std::vector<std::string> hints;

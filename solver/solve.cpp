@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <map>
 #include <numbers>
 #include <set>
@@ -91,6 +92,8 @@ struct RoomSolver::Impl {
   EnergyTerms best_energy;
   bool have_best = false;
   std::map<std::string, int> tries;   // hard-trouble actions taken per object
+  std::deque<Action> queued;           // removals still to make for a protected object (MakeWayAction)
+  bool strict_groups = false;          // GroupFitsAt asks each member to keep its group's rules (TidyGroups)
   std::set<std::string> semantic_tried;
   Clock::time_point start;
   bool initialised = false;
@@ -353,7 +356,17 @@ struct RoomSolver::Impl {
         double polishing = 0.0;  // s of the above spent polishing (Account counts it as polish time)
         PlaceBodyAmong(layer, 0, state, options, rng, pass == 0 ? 12 : 4, &stats, [&] {
           const auto p = Clock::now();
-          const PolishStats polish = Polish(layer, state, options);
+          const std::vector<Body> unpolished = layer.bodies;
+          PolishStats polish = Polish(layer, state, options);
+          // A clean candidate the polish left a hair inside a margin (pulled towards the wall's middle):
+          // the candidate as it was.
+          if (polish.cost.hard > kFeasible) {
+            std::vector<Body> polished = std::move(layer.bodies);
+            layer.bodies = unpolished;
+            const LayerCost start = Evaluate(MakeTerms(layer, state, options, -1, -1.0));
+            if (start.hard <= kFeasible) polish.cost = start;
+            else layer.bodies = std::move(polished);
+          }
           polishing += Since(p);
           Account(polish);
           if (polish.cost.hard > kFeasible) return false;
@@ -524,6 +537,11 @@ struct RoomSolver::Impl {
     for (int j : members)
       if (CostAt(j).hard > kFeasible) troubled.insert(state.objects[j].id);
     const bool in_group = options.functional_groups && GroupProblem(i).empty();
+    // A move for the semantics (the critic's, the agent's for unmet relations) never leaves the room's
+    // groups worse: the sofa turned along an angled wall away from its TV is no fix.
+    const bool semantic = options.functional_groups && (action.reason.rfind("critic:", 0) == 0 ||
+                                                         action.reason.rfind("relations or interaction zones unmet", 0) == 0);
+    const int trouble_before = semantic ? GroupTrouble() : 0;
     const Pose from = state.placements[i].pose;
     state.SetPose(i, Snap(i, want));
     if (!members.empty()) Carry(members, from, state.placements[i].pose);
@@ -564,6 +582,13 @@ struct RoomSolver::Impl {
       state = saved;
       return Refuse(r, "\"" + action.id + "\" would leave its group: " + why);
     }
+    if (semantic) {
+      if (const int after = GroupTrouble(); after > trouble_before) {
+        state = saved;
+        return Refuse(r, "moving \"" + action.id + "\" would put " + std::to_string(after - trouble_before) +
+                             " more member(s) of the room's groups out of their places");
+      }
+    }
     r.status = how.empty() ? ActionStatus::kApplied : ActionStatus::kRepaired;
     r.message = how.empty() ? "done" : how;
     if (!dropped.empty()) {
@@ -594,6 +619,13 @@ struct RoomSolver::Impl {
       case GroupRole::kNone: break;
     }
     return "";
+  }
+
+  // How many of the room's group members break their group's rules now.
+  int GroupTrouble() const {
+    int n = 0;
+    for (size_t k = 0; k < state.objects.size(); ++k) n += !GroupProblem(static_cast<int>(k)).empty();
+    return n;
   }
 
   // The members of hub i's group (objects whose GroupMembership names it).
@@ -633,7 +665,10 @@ struct RoomSolver::Impl {
     state.placements[i].wall = at.wall;
     state.SetPose(i, at.pose);
     Carry(members, from, at.pose);
-    const bool fits = Reseat(members).empty();
+    bool fits = Reseat(members).empty();
+    // The tidy stage asks for the whole group to hold its rules there (the TV stand across from the sofa).
+    if (strict_groups)
+      for (int j : members) fits = fits && GroupProblem(j).empty();
     state = before;
     return fits;
   }
@@ -802,11 +837,14 @@ struct RoomSolver::Impl {
     return pick;
   }
 
-  // An unprotected object whose removal lets protected object i find a free slot: among the objects of
+  // The unprotected objects whose removal lets protected object i find a free slot: among the objects of
   // i's layer (the room's floor for what stands on it, i's siblings for what stands on a parent), the least
-  // important first, then the biggest, what hangs on a wall after what stands (or the other way round); each
-  // tried on a copy of the state (at most ten). -1 when none does.
-  int MakeWayFor(int i) {
+  // important first, then the biggest, what hangs on a wall after what stands (or the other way round). One
+  // removal when one does (the first ten tried, each on a copy of the state); else all of them at once and,
+  // when that frees a slot, each put back again, the most important first, while the slot stays free (a
+  // bedroom keeps its bed and loses the wardrobe and the desk in its way, not its lamps). Empty when even
+  // the emptied layer has no slot for i.
+  std::vector<int> MakeWayFor(int i) {
     std::vector<int> pool;
     const int p = state.parent[i];
     for (size_t k = 0; k < state.objects.size(); ++k) {
@@ -814,9 +852,6 @@ struct RoomSolver::Impl {
       if (kk == i || IsProtected(state.objects[k].priority) || state.parent[k] != p) continue;
       // Its own group goes with it, not for it (its members, its hub).
       if (GroupMembership(state, kk).hub == i || GroupMembership(state, i).hub == kk) continue;
-      // On the room's floor and walls, what hangs on a wall (a whiteboard above the TV's stand) is tried
-      // after what stands like it.
-
       // Nothing protected stands on it (the counter under the sink stays).
       const std::vector<int> below = state.Descendants(kk);
       if (std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); })) continue;
@@ -830,31 +865,49 @@ struct RoomSolver::Impl {
       if (A.priority != B.priority) return A.priority < B.priority;
       return Volume(A, state.placements[a].pose.scale) > Volume(B, state.placements[b].pose.scale);
     });
-    if (pool.size() > 10) pool.resize(10);
     const std::string id = state.objects[i].id;
-    for (int k : pool) {
+    // Tried at its smallest scale (a king-size bed in a 2 m wide room): the shrink comes after the room is made.
+    auto frees_at_smallest = [&](int j) {
+      Pose small = state.placements[j].pose;
+      small.scale = std::min(small.scale, state.objects[j].scale_min);
+      state.SetPose(j, small);
+      return FindSlot(j).has_value();
+    };
+    for (size_t n = 0; n < pool.size() && n < 10; ++n) {
       const RoomState saved = state;
-      state.Remove(k);
+      state.Remove(pool[n]);
       const int j = state.Find(id);
-      const bool frees = j >= 0 && FindSlot(j).has_value();
+      const bool frees = j >= 0 && frees_at_smallest(j);
       state = saved;
-      if (frees) return k;
+      if (frees) return {pool[n]};
     }
-    // No one removal frees a slot: the first of the pool goes when removing it and the next ones together
-    // does (a sideboard and a plant along the one wall left for the TV's stand).
-    if (pool.size() < 2) return -1;
+    if (pool.size() < 2) return {};
+    // By id: indices shift as objects go.
     std::vector<std::string> ids;
     for (int k : pool) ids.push_back(state.objects[k].id);
     const RoomState saved = state;
-    bool frees = false;
-    for (const std::string& gone : ids) {
-      if (const int k = state.Find(gone); k >= 0) state.Remove(k);
+    auto frees_without = [&](const std::vector<bool>& gone) {
+      state = saved;
+      for (size_t n = 0; n < ids.size(); ++n)
+        if (gone[n])
+          if (const int k = state.Find(ids[n]); k >= 0) state.Remove(k);
       const int j = state.Find(id);
-      if (j < 0) break;
-      if ((frees = FindSlot(j).has_value())) break;
+      return j >= 0 && frees_at_smallest(j);
+    };
+    std::vector<bool> gone(ids.size(), true);
+    if (!frees_without(gone)) {
+      state = saved;
+      return {};
+    }
+    for (size_t n = ids.size(); n-- > 0;) {
+      gone[n] = false;
+      if (!frees_without(gone)) gone[n] = true;
     }
     state = saved;
-    return frees ? pool.front() : -1;
+    std::vector<int> out;
+    for (size_t n = 0; n < ids.size(); ++n)
+      if (gone[n]) out.push_back(state.Find(ids[n]));
+    return out;
   }
 
   // The protected objects standing in walkways, when every proxy overlap left is such a one (else empty).
@@ -893,15 +946,24 @@ struct RoomSolver::Impl {
     return std::nullopt;
   }
 
-  // The removal that lets protected object i find a slot (MakeWayFor), as an action; none when none does.
+  // The removals that let protected object i find a slot (MakeWayFor), as actions: the first now, the
+  // others queued for the next calls; none when none does.
   std::optional<Action> MakeWayAction(int i) {
-    const int k = MakeWayFor(i);
-    if (k < 0) return std::nullopt;
+    const std::vector<int> ks = MakeWayFor(i);
+    if (ks.empty()) return std::nullopt;
+    const std::string reason_head = "make room for " + state.objects[i].id + " (" +
+                                    std::string(PriorityName(state.objects[i].priority)) + "): remove ";
+    for (size_t n = 1; n < ks.size(); ++n) {
+      Action a;
+      a.kind = ActionKind::kRemoveEntity;
+      a.id = state.objects[ks[n]].id;
+      a.reason = reason_head + std::string(PriorityName(state.objects[ks[n]].priority)) + " " + state.objects[ks[n]].category;
+      queued.push_back(a);
+    }
     Action a;
     a.kind = ActionKind::kRemoveEntity;
-    a.id = state.objects[k].id;
-    a.reason = "make room for " + state.objects[i].id + " (" + std::string(PriorityName(state.objects[i].priority)) +
-               "): remove " + std::string(PriorityName(state.objects[k].priority)) + " " + state.objects[k].category;
+    a.id = state.objects[ks[0]].id;
+    a.reason = reason_head + std::string(PriorityName(state.objects[ks[0]].priority)) + " " + state.objects[ks[0]].category;
     return a;
   }
 
@@ -922,6 +984,12 @@ struct RoomSolver::Impl {
   }
 
   std::optional<Action> NextAction() {
+    // The rest of a set of removals that makes room for a protected object.
+    while (!queued.empty()) {
+      Action a = queued.front();
+      queued.pop_front();
+      if (state.Find(a.id) >= 0) return a;
+    }
     for (int i : Culprits()) {
       // Copies: MakeWayFor tries removals on the state and puts it back.
       const std::string id = state.objects[i].id;
@@ -1034,6 +1102,203 @@ struct RoomSolver::Impl {
       return a;
     }
     return std::nullopt;
+  }
+
+  // ---- Issue 27: seats a person can pull out. A dining or meeting table's chair beside a side of its table,
+  // facing it, with 0.75 m of floor behind it (walls, stairs and furniture of 0.1 m2 or more stop it: the
+  // functional check's measure, solver/functional.cpp).
+  bool TableSeat(int j) const {
+    const Membership m = GroupMembership(state, j);
+    if (m.role != GroupRole::kTableSeat) return false;
+    const std::string& table = state.objects[m.hub].category;
+    return table == "dining-table" || table == "conference-table";
+  }
+  // The furniture stopping chair j's pull-out room (an index per blocked sample; -1 a wall or the stairs),
+  // and the free depth behind it (m, capped at the rule's 0.75).
+  double SeatBehind(int j, std::set<int>* blockers = nullptr) const {
+    const OrientedBox chair = state.WorldBox(j);
+    const Point u = chair.U(), v = chair.V();
+    double clear = kSeatBehind;
+    for (double side : {-1.0, -0.5, 0.0, 0.5, 1.0})
+      for (double d = 0.0; d < kSeatBehind; d += 0.025) {
+        const Point p = geo::Add(geo::Add(chair.c, geo::Scale(v, chair.hy + d + 0.01)), geo::Scale(u, side * chair.hx));
+        int by = PointInRing(p, problem.free_floor, 0.0) ? -2 : -1;
+        for (const KeepOut& k : problem.keep_outs)
+          if (by == -2 && (k.kind == KeepOutKind::kStaircase || k.kind == KeepOutKind::kStairHole || k.kind == KeepOutKind::kStairArrival) && PointInRing(p, k.polygon, 0.0)) by = -1;
+        for (size_t k = 0; k < state.objects.size() && by == -2; ++k) {
+          const int kk = static_cast<int>(k);
+          if (kk == j || state.parent[k] >= 0 || state.Hung(kk) || state.IsFloorCovering(kk)) continue;
+          const OrientedBox box = state.WorldBox(kk);
+          if (4.0 * box.hx * box.hy >= 0.1 && box.ContainsPlan(p)) by = kk;
+        }
+        if (by == -2) continue;
+        if (blockers) blockers->insert(by);
+        clear = std::min(clear, d);
+        break;
+      }
+    return clear;
+  }
+  bool SeatHolds(int j) const {
+    const Membership m = GroupMembership(state, j);
+    return TableSeatProblem(state.WorldBox(j), state.WorldBox(m.hub)).empty() && SeatBehind(j) >= kSeatBehind - 1e-9;
+  }
+  void TakeAction(const Action& a) {
+    summary.actions.push_back(Apply(a));
+    ++summary.iterations;
+    Check();
+  }
+  void TakeRemoval(const std::string& id, const std::string& reason) {
+    Action a;
+    a.kind = ActionKind::kRemoveEntity;
+    a.id = id;
+    a.reason = reason;
+    TakeAction(a);
+  }
+
+  // Object k to its best free place (FindSlot) when the room's groups break fewer rules there (GroupTrouble)
+  // and the move is applied; else nothing changes (the state and the removals as they were).
+  bool MoveIfTidier(int k, const std::string& reason) {
+    strict_groups = true;
+    const std::optional<Slot> slot = FindSlot(k);
+    strict_groups = false;
+    if (!slot) return false;
+    Action a;
+    a.kind = ActionKind::kUpdatePose;
+    a.id = state.objects[k].id;
+    a.pose = slot->pose;
+    if (slot->wall >= 0) a.wall = slot->wall;
+    a.reason = reason;
+    const RoomState saved = state;
+    const size_t removed = summary.removed.size();
+    const int before = GroupTrouble();
+    const bool clean = metrics.Clean();
+    ActionResult r = Apply(a);
+    if (r.status != ActionStatus::kRefused && GroupTrouble() < before) {
+      // The exact check has the last word (the proxy passes a sofa a hair into a reflex corner).
+      const ExactMetrics was = metrics;
+      metrics = checker->Check(state, false);
+      if (metrics.Clean() || !clean) {
+        summary.actions.push_back(std::move(r));
+        ++summary.iterations;
+        Check();
+        return true;
+      }
+      metrics = was;
+    }
+    state = saved;
+    summary.removed.resize(removed);
+    return false;
+  }
+
+  // Each dining or meeting chair that does not hold (SeatHolds) after the agent and the critic: what stands
+  // in its pull-out room goes when nothing protected does and that frees it (a sideboard the agent moved
+  // behind the chairs); else, with `moves`, it takes its group's best free seat where it holds; else it is
+  // left out unless protected (a chair no one can pull out serves no one). Ends on the result when the
+  // room is still clean. True when anything changed.
+  bool TidyGroups(bool moves) {
+    if (!options.functional_groups) return false;
+    bool changed = false;
+    std::vector<std::string> chairs;
+    for (size_t k = 0; k < state.objects.size(); ++k)
+      if (TableSeat(static_cast<int>(k))) chairs.push_back(state.objects[k].id);
+    for (const std::string& id : chairs) {
+      int j = state.Find(id);
+      if (j < 0 || SeatHolds(j)) continue;
+      std::set<int> blockers;
+      SeatBehind(j, &blockers);
+      const bool removable = !blockers.empty() && !blockers.count(-1) && std::none_of(blockers.begin(), blockers.end(), [&](int k) {
+        const std::vector<int> below = state.Descendants(k);
+        return IsProtected(state.objects[k].priority) || TableSeat(k) || GroupMembership(state, j).hub == k ||
+               std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); });
+      });
+      if (removable) {
+        std::vector<std::string> gone;
+        for (int k : blockers) gone.push_back(state.objects[k].id);
+        RoomState trial = state;
+        for (const std::string& g : gone) trial.Remove(trial.Find(g));
+        std::swap(state, trial);
+        const bool frees = SeatHolds(state.Find(id));
+        std::swap(state, trial);
+        if (frees) {
+          for (const std::string& g : gone) TakeRemoval(g, "in the room to pull " + id + " out from its table (0.75 m behind it)");
+          changed = true;
+          continue;
+        }
+      }
+      if (moves) {
+        if (auto slot = FindSlot(j)) {
+          const ObjectPlacement before = state.placements[j];
+          state.SetPose(j, slot->pose);
+          const bool holds = SeatHolds(j) && CostAt(j).hard <= kFeasible;
+          state.placements[j] = before;
+          state.SetPose(j, before.pose);
+          if (holds) {
+            Action a;
+            a.kind = ActionKind::kUpdatePose;
+            a.id = id;
+            a.pose = slot->pose;
+            a.reason = "no room to pull it out from its table: to a free seat with 0.75 m behind it";
+            TakeAction(a);
+            j = state.Find(id);
+            if (j >= 0 && SeatHolds(j)) {
+              changed = true;
+              continue;
+            }
+          }
+        }
+      }
+      j = state.Find(id);
+      if (j < 0) continue;
+      // An essential chair that cannot be pulled out hands its rank to one of its table's chairs that can.
+      if (state.objects[j].priority == Priority::kEssential) {
+        const int hub = GroupMembership(state, j).hub;
+        for (size_t k = 0; k < state.objects.size(); ++k) {
+          const int kk = static_cast<int>(k);
+          if (kk == j || !TableSeat(kk) || GroupMembership(state, kk).hub != hub || IsProtected(state.objects[k].priority) || !SeatHolds(kk))
+            continue;
+          std::swap(state.objects[k].priority, state.objects[j].priority);
+          break;
+        }
+      }
+      if (IsProtected(state.objects[j].priority)) continue;
+      TakeRemoval(id, "no seat at its table with 0.75 m behind it to pull it out: left out");
+      changed = true;
+    }
+    // The other members out of their group's rules (a TV stand off the sofa's axis, a nightstand at the
+    // bed's foot): with `moves`, to their best free place by the hub when it holds them (for a TV stand,
+    // else the sofa with its group to its best free place); else an optional one is left out.
+    std::vector<std::string> loose;
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int kk = static_cast<int>(k);
+      if (!TableSeat(kk) && !GroupProblem(kk).empty()) loose.push_back(state.objects[k].id);
+    }
+    for (const std::string& id : loose) {
+      int j = state.Find(id);
+      if (j < 0 || GroupProblem(j).empty()) continue;
+      const std::string why = GroupProblem(j);
+      if (moves) {
+        if (MoveIfTidier(j, "out of its group (" + why + "): to its best free place by its hub")) {
+          changed = true;
+          continue;
+        }
+        const Membership m = GroupMembership(state, j);
+        if (m.role == GroupRole::kTvStand && MoveIfTidier(m.hub, "its TV stand is out of its group (" + why + "): with its group to its best free place")) {
+          changed = true;
+          continue;
+        }
+      }
+      j = state.Find(id);
+      if (j < 0 || GroupProblem(j).empty() || IsProtected(state.objects[j].priority)) continue;
+      TakeRemoval(id, "out of its group (" + why + ") and no free place by its hub holds it: left out");
+      changed = true;
+    }
+    if (changed && metrics.Clean()) {
+      best = state;
+      best_metrics = metrics;
+      best_energy = energy;
+    }
+    if (changed) Finish(false);
+    return changed;
   }
 
   void RunAgent() {
@@ -1159,6 +1424,14 @@ void RoomSolver::RunAgent() {
   if (!im.initialised) return;
   im.RunAgent();
   im.summary.seconds = Since(im.start);
+}
+
+bool RoomSolver::TidyGroups(bool moves) {
+  Impl& im = *impl_;
+  if (!im.initialised) return false;
+  const bool changed = im.TidyGroups(moves);
+  im.summary.seconds = Since(im.start);
+  return changed;
 }
 
 void RoomSolver::Finish() {

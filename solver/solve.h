@@ -107,6 +107,13 @@ class RoomSolver {
   struct Snapshot;
   std::shared_ptr<const Snapshot> Save() const;
   void Restore(const Snapshot& snapshot);
+  // Issue 27, after the agent and the critic: every dining or meeting chair that cannot be pulled out from
+  // its table (0.75 m behind it) gets room: what stands behind it goes (nothing protected), else with
+  // `moves` it takes a free seat where it can, else it is left out unless protected; every other member out
+  // of its group's rules (a TV stand off the sofa's axis) takes its best free place by its hub where it
+  // holds (with `moves`; the sofa with its group for its TV stand), else it is left out unless protected.
+  // The room ends on the result while it stays clean. True when anything changed.
+  bool TidyGroups(bool moves);
   // Ends the session without more agent actions: the best state seen is kept, checked again (with the
   // clearance figure) and the outcome and its reason set, as at the end of RunAgent.
   void Finish();

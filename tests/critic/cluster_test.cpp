@@ -22,7 +22,8 @@ TEST_CASE("The sofa carried with its coffee table makes room for the side table 
   REQUIRE(f.Count("relations_before", "left_of", "satisfied") == 0);
   REQUIRE(f.Count("relations_before", "next_to", "satisfied") < f.Count("relations_before", "next_to", "measured"));
   // After the critic both hold, nothing was lost, and the sofa moved as the hub of a cluster move.
-  CHECK(f.Count("relations_after", "left_of", "satisfied") == 1);
+  CHECK(f.Count("relations_after", "left_of", "satisfied") >= 1);
+  CHECK(f.Count("relations_after", "left_of", "satisfied") == f.Count("relations_after", "left_of", "measured"));
   CHECK(f.Count("relations_after", "next_to", "satisfied") == f.Count("relations_after", "next_to", "measured"));
   CHECK(f.Count("relations_after", "left_of", "lost") == 0);
   bool sofa_carried = false;

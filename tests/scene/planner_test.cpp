@@ -409,3 +409,25 @@ TEST_CASE("a living room's sofa stands free where no two facing walls hold it an
     CHECK(Check(b, c, plan).empty());
   }
 }
+
+TEST_CASE("A narrow room gets the narrow end of the bed's sizes: a free long side of 0.6 m where the room is 2 m wide",
+          "[scene][planner]") {
+  // bedroom_0/0 of bedroom_narrow_strips.json is an L of 2 m wide strips (1.7 m of free floor across); the
+  // wide bedroom of house_one_floor.json is 5 x 4 m.
+  const BuiltLayout narrow = LoadBuilt("tests/fixtures/layouts/bedroom_narrow_strips.json");
+  const BuiltLayout wide = LoadBuilt("tests/fixtures/layouts/house_one_floor.json");
+  const CategoryInfo* bed = FindCategory("bed");
+  REQUIRE(bed);
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    double narrow_width = 0.0, wide_width = 0.0;
+    for (const auto& o : PlanOf(ContextOf(narrow, "bedroom_0/0"), "", seed).objects)
+      if (o.category == "bed") narrow_width = o.size.x;
+    for (const auto& o : PlanOf(ContextOf(wide, "bedroom_0/0"), "", seed).objects)
+      if (o.category == "bed") wide_width = o.size.x;
+    INFO("seed " << seed);
+    CHECK(narrow_width == Approx(bed->size_min.x));  // 1.7 - 0.65 is below the range: its narrowest
+    CHECK(wide_width > bed->size_min.x + 0.05);
+  }
+}
+
+

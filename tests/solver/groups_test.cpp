@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fixtures.h"
+#include "mesh/geometry2d.h"
 #include "solver/group_rules.h"
 #include "solver/scene_problem.h"
 #include "solver/solve.h"
@@ -91,6 +92,98 @@ TEST_CASE("Dining chairs are seated from their table's template: at its sides, f
       CHECK(seated == 4);
     }
   }
+}
+
+TEST_CASE("An essential bed too wide for its narrow room at full size shrinks, the chests in its way giving way",
+          "[solver][groups]") {
+  // 1.7 x 4 m: the bed (1.8 x 2.3, down to 0.8 of it: 1.44 x 1.84) fits only shrunk, and only once two of
+  // the five 0.6 m deep chests along the room are gone; at full size no removal frees it.
+  RoomProblem room = Rectangle(1.7, 4.0);
+  for (int k = 0; k < 5; ++k) {
+    ProblemObject chest = BoxObject("chest-" + std::to_string(k), 1.6, 0.6, 0.9);
+    chest.relation = Relation::kAgainstWall;
+    room.objects.push_back(chest);
+  }
+  // Free-standing, so that the chests along the walls are placed before it.
+  ProblemObject bed = BoxObject("bed-0", 1.8, 2.3, 0.6);
+  bed.scale_min = 0.8;
+  room.objects.push_back(bed);
+  MarkEssentials(Category::kBedroom, room);
+  REQUIRE(room.objects.back().priority == Priority::kEssential);
+  auto solved = SolveRoom(room, {});
+  REQUIRE(solved.ok());
+  INFO(solved->summary.BriefReport());
+  CHECK(solved->summary.metrics.Clean());
+  const int b = Index(*solved, "r/bed-0");
+  REQUIRE(b >= 0);
+  CHECK(solved->placements[b].pose.scale < 1.0);
+  int chests = 0;
+  for (int k = 0; k < 5; ++k) chests += Index(*solved, "r/chest-" + std::to_string(k)) >= 0;
+  CHECK(chests >= 1);  // only what was in the way went
+}
+
+// Free floor behind a chair's back (m, up to `want`): the room's rectangle and the other floor pieces stop it.
+double FreeBehind(const RoomSolution& s, int chair, double w, double d, double want) {
+  const OrientedBox box = Plan(s, chair);
+  double clear = want;
+  for (double side : {-1.0, 0.0, 1.0})
+    for (double t = 0.0; t < want; t += 0.025) {
+      const Point p = geo::Add(geo::Add(box.c, geo::Scale(box.V(), box.hy + t + 0.01)), geo::Scale(box.U(), side * box.hx));
+      bool blocked = p.x < 0.0 || p.y < 0.0 || p.x > w || p.y > d;
+      for (size_t k = 0; k < s.objects.size() && !blocked; ++k)
+        blocked = static_cast<int>(k) != chair && s.placements[k].placed && s.objects[k].parent == "floor" &&
+                  Plan(s, static_cast<int>(k)).ContainsPlan(p);
+      if (blocked) {
+        clear = std::min(clear, t);
+        break;
+      }
+    }
+  return clear;
+}
+
+TEST_CASE("A narrow meeting room's chairs can all be pulled out: 0.75 m behind each, the table shrunk, or a chair left out",
+          "[solver][groups]") {
+  // 2.3 x 4.3 m: a 2.2 x 0.9 m table across the width leaves no seat 0.75 m from a wall; the sideboard would
+  // stand where the chairs are pulled out. After the tidy stage every chair left stands at a side of the
+  // table, facing it, with 0.75 m free behind it.
+  const double w = 2.3, d = 4.3;
+  RoomProblem room = Rectangle(w, d);
+  ProblemObject table = TableObject("conference-table-0", 2.2, 0.9, 0.74);
+  table.scale_min = 0.8;
+  room.objects.push_back(table);
+  for (int k = 0; k < 4; ++k) {
+    const std::string chair = "chair-" + std::to_string(k);
+    room.objects.push_back(BoxObject(chair, 0.46, 0.51, 0.87));
+    room.edges.push_back(DefaultEdge("r/" + chair, SemanticRelation::kFaceTo, "r/conference-table-0"));
+    SemanticEdge next = DefaultEdge("r/" + chair, SemanticRelation::kNextTo, "r/conference-table-0");
+    next.max_gap = 0.3;
+    room.edges.push_back(next);
+  }
+  ProblemObject sideboard = BoxObject("sideboard-0", 1.5, 0.44, 0.77);
+  sideboard.relation = Relation::kAgainstWall;
+  room.objects.push_back(sideboard);
+  MarkEssentials(Category::kMeetingRoom, room);
+  for (ProblemObject& o : room.objects)
+    if (o.category == "chair") o.pull_out = kSeatBehind;
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  solver.TidyGroups(true);
+  const RoomSolution s = solver.Solution();
+  INFO(s.summary.BriefReport());
+  CHECK(s.summary.metrics.Clean());
+  const int t = Index(s, "r/conference-table-0");
+  REQUIRE(t >= 0);
+  int chairs = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int c = Index(s, "r/chair-" + std::to_string(k));
+    if (c < 0) continue;
+    ++chairs;
+    INFO("chair-" << k << ": " << TableSeatProblem(Plan(s, c), Plan(s, t)));
+    CHECK(TableSeatProblem(Plan(s, c), Plan(s, t)).empty());
+    CHECK(FreeBehind(s, c, w, d, kSeatBehind) >= kSeatBehind - 1e-9);
+  }
+  CHECK(chairs >= 2);  // the essential two at least
 }
 
 }  // namespace
