@@ -356,12 +356,14 @@ bool BehindClear(const Layer& layer, int self, int hub, Point centre, Point out,
 }
 
 // A dining or meeting table's chair without the 0.75 m behind it a person needs to pull it out, as it
-// stands now (its back is +y of its frame).
-bool CrampedSeat(const Layer& layer, int self, int hub, const RoomState& state) {
+// stands now by its table (its back is +y of its frame); false for anything else.
+bool CrampedSeat(const Layer& layer, int self, const RoomState& state) {
   const Body& b = layer.bodies[self];
-  if (!b.active || GroupMembership(state, b.object).role != GroupRole::kTableSeat ||
-      !OneOf(state.objects[layer.bodies[hub].object].category, {"dining-table", "conference-table"}))
-    return false;
+  if (!b.active) return false;
+  const Membership m = GroupMembership(state, b.object);
+  if (m.role != GroupRole::kTableSeat || !OneOf(state.objects[m.hub].category, {"dining-table", "conference-table"})) return false;
+  const int hub = layer.body_of[m.hub];
+  if (hub < 0 || !layer.bodies[hub].active) return false;
   const OrientedBox box = LayerBox(b);
   return !BehindClear(layer, self, hub, box.c, box.V(), box.U(), box.hx, box.hy, kSeatBehind);
 }
@@ -500,9 +502,10 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
           const double t = -L + 2.0 * L * (k + 0.5) / n;
           seat(geo::Scale(sa, side), la, t, S, 0.02 * std::abs(t) + (side < 0 ? 0.01 : 0.0));
         }
-      // The ends: a dining or meeting table's when it is long enough to seat more than one a side, any
-      // smaller table's too (two at a balcony's table against its railing).
-      if (2.0 * S >= 2.0 * cx + 0.1 && (2.0 * L >= 1.2 || !dining))
+      // The ends: a dining or meeting table's when it is long enough to seat more than one a side or seats
+      // one a side (a small table for two to four, one on each side), any smaller table's too (two at a
+      // balcony's table against its railing).
+      if (2.0 * S >= 2.0 * cx + 0.1 && (2.0 * L >= 1.2 || !dining || n == 1))
         for (double side : {1.0, -1.0}) seat(geo::Scale(la, side), sa, 0.0, L, 0.3);
       return true;
     }
@@ -856,8 +859,18 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
   std::vector<char> placed(layer.bodies.size(), 0);
   for (int b : order) {
     if (placed[b]) continue;
-    const std::vector<int> dependents = Dependents(layer, b, state, placed);
+    std::vector<int> dependents = Dependents(layer, b, state, placed);
     placed[b] = 1;
+    // A dependent table's chairs come with it (the rug's table: the group's pose must seat them too).
+    if (o.functional_groups)
+      for (size_t d = 0; d < dependents.size(); ++d)
+        for (size_t k = 0; k < layer.bodies.size(); ++k) {
+          const int kk = static_cast<int>(k);
+          const Membership m = GroupMembership(state, layer.bodies[k].object);
+          if (m.role == GroupRole::kTableSeat && layer.body_of[m.hub] == dependents[d] && !placed[k] && kk != b &&
+              layer.bodies[k].motion != Motion::kFixed && std::find(dependents.begin(), dependents.end(), kk) == dependents.end())
+            dependents.push_back(kk);
+        }
     if (dependents.empty()) {
       PlaceBody(layer, b, state, o, rng, jitter, stats);
       continue;
@@ -913,12 +926,18 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
         int cramped = 0;
         for (int g : group) {
           const LayerCost part = Evaluate(MakeTerms(layer, state, o, g, -1.0));
+          // A dining or meeting chair without 0.75 m to pull it out (issue 27), or an optional one with no
+          // free seat at all, is a seat lost (the tidy stage leaves it out): the group's pose that seats
+          // most chairs roomily wins, not the one where the chairs that do not fit collide least.
+          const bool seat = g != b && GroupMembership(state, layer.bodies[g].object).role == GroupRole::kTableSeat;
+          if (seat && part.hard > 1e-10 && !IsProtected(state.objects[layer.bodies[g].object].priority)) {
+            ++cramped;
+            continue;
+          }
           cost.hard += part.hard;
           cost.soft_linear += part.soft_linear;
           if (g != b) snug += Closeness(layer, g, state);
-          // A dining or meeting chair without 0.75 m to pull it out (issue 27): the group's pose that seats
-          // every chair roomily wins over one that crams some against a wall.
-          if (g != b && CrampedSeat(layer, g, b, state)) ++cramped;
+          if (seat && CrampedSeat(layer, g, state)) ++cramped;
         }
         const double soft = cost.soft_linear + t.c.pref + snug + 3.0 * cramped;
         if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
@@ -932,14 +951,20 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
       }
     };
     try_poses();
-    // Every pose crams a chair (a meeting room 2.2 m wide): the table at its smallest scale, once.
-    Body& hub = layer.bodies[b];
+    // Every pose crams a chair (a meeting room 2.2 m wide): the table at its smallest scale, once (the
+    // hub's, or the table among its dependents: the one on the rug).
+    int table = b;
+    for (int k : dependents)
+      if (table == b && !OneOf(state.objects[layer.bodies[b].object].category, {"dining-table", "conference-table"}) &&
+          OneOf(state.objects[layer.bodies[k].object].category, {"dining-table", "conference-table"}))
+        table = k;
+    Body& hub = layer.bodies[table];
     const double scale_min = state.objects[hub.object].scale_min;
     if (seats && best_cramped > 0 && hub.scalable && hub.s[0] > scale_min + 1e-9) {
       const double full = hub.s[0];
       hub.s[0] = scale_min;
       try_poses();
-      if (best_bodies.empty() || best_bodies[0].s[0] != scale_min) hub.s[0] = full;
+      if (best_bodies.empty()) hub.s[0] = full;
     }
     for (size_t g = 0; g < group.size() && !best_bodies.empty(); ++g) layer.bodies[group[g]] = best_bodies[g];
     for (int g : group) placed[g] = 1;

@@ -22,6 +22,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kFeasible = 1e-10;  // hard cost below this: no proxy violation
+constexpr double kHairline = 1e-2;   // hard cost of a proxy a few millimetres into its margin
 constexpr std::string_view kOutcomeNames[] = {"converged", "budget", "infeasible"};
 
 double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -489,10 +490,16 @@ struct RoomSolver::Impl {
         Layer layer = RoomLayer(state, room_level, {});
         // Undone when it ends in harder trouble than it started (a walkway's push can leave a chair in its
         // desk where the room is tight).
+        // Nor may it pull a group apart (the dining table turned off its chairs): issue 27.
         const double hard_before = Evaluate(MakeTerms(layer, state, options, -1, -1.0)).hard;
+        const int trouble_before = options.functional_groups ? GroupTrouble() : 0;
         const PolishStats polish = Polish(layer, state, options);  // the state changes only by WriteLayer
         Account(polish);
-        if (polish.cost.hard <= hard_before + kFeasible) WriteLayer(layer);
+        if (polish.cost.hard <= hard_before + kFeasible) {
+          const RoomState unpolished = state;
+          WriteLayer(layer);
+          if (options.functional_groups && GroupTrouble() > trouble_before) state = unpolished;
+        }
       }
       return r;
     }
@@ -1292,6 +1299,8 @@ struct RoomSolver::Impl {
       TakeRemoval(id, "out of its group (" + why + ") and no free place by its hub holds it: left out");
       changed = true;
     }
+    if (moves) changed = SquareUp() || changed;
+    if (moves) changed = RugUnderGroup() || changed;
     if (changed && metrics.Clean()) {
       best = state;
       best_metrics = metrics;
@@ -1299,6 +1308,136 @@ struct RoomSolver::Impl {
     }
     if (changed) Finish(false);
     return changed;
+  }
+
+  // A rug of a room with a seating group lies under its coffee table, turned like the sofa (the rug is laid
+  // first, on its own; the group is arranged after it). Kept where the rug stays clear of doors and walls.
+  bool RugUnderGroup() {
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int coffee = static_cast<int>(k);
+      const Membership m = GroupMembership(state, coffee);
+      if (m.role != GroupRole::kCoffeeTable) continue;
+      for (size_t r = 0; r < state.objects.size(); ++r) {
+        const int rug = static_cast<int>(r);
+        if (state.objects[r].category != "rug" || !state.IsFloorCovering(rug)) continue;
+        const Pose from = state.placements[rug].pose;
+        const Pose& sofa = state.placements[m.hub].pose;
+        // Its near edge 2 cm before the sofa's front, centred on the sofa's axis, the coffee table on it;
+        // long side along the sofa, else across it.
+        const OrientedBox sofa_box = state.WorldBox(m.hub);
+        const Point front = geo::Add(sofa_box.c, geo::Scale(sofa_box.Front(), sofa_box.hy));
+        const RoomState saved = state;
+        bool ok = false;
+        Pose to = from;
+        for (double turn : {0.0, 0.5 * std::numbers::pi}) {
+          state = saved;
+          to = from;
+          to.yaw = WrapAngle(sofa.yaw + turn);
+          const double half = turn == 0.0 ? 0.5 * state.objects[r].asset.size.y : 0.5 * state.objects[r].asset.size.x;
+          const Point c = geo::Add(front, geo::Scale(sofa_box.Front(), half * from.scale + 0.02));
+          to.x = c.x;
+          to.y = c.y;
+          state.SetPose(rug, to);
+          ok = CostAt(rug).hard <= kHairline;
+          // What stands on the floor keeps its support (a lamp half on the rug's edge would tilt).
+          for (size_t j = 0; j < state.objects.size() && ok; ++j)
+            ok = state.parent[j] >= 0 || static_cast<int>(j) == rug || CostAt(static_cast<int>(j)).hard <= kHairline;
+          if (ok) {
+            const ExactMetrics was = metrics;
+            metrics = checker->Check(state, false);
+            ok = metrics.Clean();
+            if (!ok) metrics = was;
+          }
+          if (ok) break;
+        }
+        if (!ok) {
+          state = saved;
+          return false;
+        }
+        if (std::hypot(to.x - from.x, to.y - from.y) < 0.05 && std::abs(WrapAngle(to.yaw - from.yaw)) < 0.01) return false;
+        ActionResult res;
+        res.action.kind = ActionKind::kUpdatePose;
+        res.action.id = state.objects[r].id;
+        res.action.pose = to;
+        res.action.reason = "under its seating group: between the sofa and the coffee table, turned like the sofa";
+        res.status = ActionStatus::kApplied;
+        res.message = "done";
+        res.final_pose = to;
+        summary.actions.push_back(res);
+        Check();
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Furniture a few degrees off the room's walls (the polish's yaw freedom) turned square to them, and a
+  // coffee or side table turned like its sofa. Kept where nothing collides (the exact check has the last
+  // word) and no group breaks more rules. True when anything turned.
+  bool SquareUp() {
+    constexpr double kMaxTurn = 20.0 * std::numbers::pi / 180.0, kMinTurn = 0.5 * std::numbers::pi / 180.0;
+    const std::vector<double> classes = RoomYawClasses(problem);
+    std::vector<std::string> ids;
+    for (int pass = 0; pass < 2; ++pass)  // hubs and loners first, then the members that turn like their hub
+      for (size_t k = 0; k < state.objects.size(); ++k) {
+        const int kk = static_cast<int>(k);
+        if (state.parent[k] >= 0 || state.Hung(kk)) continue;
+        const bool member = GroupMembership(state, kk).role != GroupRole::kNone;
+        if (member == (pass == 1)) ids.push_back(state.objects[k].id);
+      }
+    bool turned = false;
+    for (const std::string& id : ids) {
+      const int k = state.Find(id);
+      if (k < 0) continue;
+      const Membership m = GroupMembership(state, k);
+      const Pose from = state.placements[k].pose;
+      double yaw = SnapYaw(from.yaw, classes);
+      if (m.role == GroupRole::kCoffeeTable || m.role == GroupRole::kSideTable) yaw = SnapYaw(from.yaw, {state.placements[m.hub].pose.yaw});
+      else if (m.role != GroupRole::kNone) continue;  // seats and stands keep their template's facing
+      const double turn = WrapAngle(yaw - from.yaw);
+      if (std::abs(turn) < kMinTurn || std::abs(turn) > kMaxTurn) continue;
+      const RoomState saved = state;
+      const int trouble = GroupTrouble();
+      // Turned where it stands, else shifted up to 15 cm as well (a corner of it would touch a wall); its
+      // group's members stay (each is squared in turn), as long as they keep their group's rules.
+      Pose to = from;
+      bool ok = false;
+      for (double r = 0.0; r < 0.16 && !ok; r += 0.05)
+        for (int a = 0; a < (r == 0.0 ? 1 : 8) && !ok; ++a) {
+          state = saved;
+          to = from;
+          to.yaw = WrapAngle(from.yaw + turn);
+          to.x += r * std::cos(a * std::numbers::pi / 4.0);
+          to.y += r * std::sin(a * std::numbers::pi / 4.0);
+          state.SetPose(k, to);
+          // The proxies keep a margin: within a hair of it, the exact check decides.
+          ok = CostAt(k).hard <= kHairline && GroupTrouble() <= trouble;
+          if (ok) {
+            const ExactMetrics was = metrics;
+            metrics = checker->Check(state, false);
+            ok = metrics.Clean();
+            metrics = was;
+          }
+        }
+      if (ok) metrics = checker->Check(state, false);
+      if (!ok) {
+        state = saved;
+        continue;
+      }
+      ActionResult r;
+      r.action.kind = ActionKind::kUpdatePose;
+      r.action.id = id;
+      r.action.pose = to;
+      r.action.reason = "square to the walls" + std::string(m.role != GroupRole::kNone ? " (turned like its sofa)" : "") +
+                        ": turned " + Fixed(std::abs(turn) * 180.0 / std::numbers::pi, 1) + " degrees";
+      r.status = ActionStatus::kApplied;
+      r.message = "done";
+      r.final_pose = state.placements[k].pose;
+      summary.actions.push_back(r);
+      Check();
+      turned = true;
+    }
+    return turned;
   }
 
   void RunAgent() {

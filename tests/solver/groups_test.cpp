@@ -4,7 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <numbers>
 #include <string>
+#include <tuple>
 
 #include "fixtures.h"
 #include "mesh/geometry2d.h"
@@ -184,6 +186,58 @@ TEST_CASE("A narrow meeting room's chairs can all be pulled out: 0.75 m behind e
     CHECK(FreeBehind(s, c, w, d, kSeatBehind) >= kSeatBehind - 1e-9);
   }
   CHECK(chairs >= 2);  // the essential two at least
+}
+
+TEST_CASE("The tidy stage turns furniture left a few degrees off the walls square to them, the coffee table like its sofa",
+          "[solver][groups]") {
+  RoomProblem room = Rectangle(8.0, 6.0);
+  room.objects.push_back(BoxObject("sofa-0", 2.0, 0.9, 0.85));
+  room.objects.push_back(BoxObject("coffee-table-0", 1.0, 0.5, 0.4));
+  room.objects.push_back(BoxObject("cabinet-0", 1.0, 0.5, 0.9));
+  SemanticEdge front = DefaultEdge("r/coffee-table-0", SemanticRelation::kFrontOf, "r/sofa-0");
+  front.min_gap = 0.4;
+  front.max_gap = 0.6;
+  room.edges.push_back(front);
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  // Moved into the open and turned 8 degrees off the walls (as a polish pulled by a relation leaves them).
+  for (const auto& [id, x, y] : {std::tuple{"r/sofa-0", 4.0, 4.0}, std::tuple{"r/cabinet-0", 1.5, 1.5}}) {
+    const RoomSolution s = solver.Solution();
+    const int k = Index(s, id);
+    REQUIRE(k >= 0);
+    Action a;
+    a.kind = ActionKind::kUpdatePose;
+    a.id = id;
+    a.pose = s.placements[k].pose;
+    a.pose->x = x;
+    a.pose->y = y;
+    a.pose->yaw = 8.0 * std::numbers::pi / 180.0;
+    a.reason = "test: turned off the walls";
+    REQUIRE(solver.Apply(a).status != ActionStatus::kRefused);
+  }
+  solver.KeepCurrent();
+  {
+    const RoomSolution turned = solver.Solution();
+    const int k = Index(turned, "r/sofa-0");
+    REQUIRE(k >= 0);
+    const double q = std::fmod(std::abs(turned.placements[k].pose.yaw), 0.5 * std::numbers::pi);
+    REQUIRE(std::min(q, 0.5 * std::numbers::pi - q) > 5.0 * std::numbers::pi / 180.0);  // the test's precondition
+  }
+  solver.TidyGroups(true);
+  const RoomSolution s = solver.Solution();
+  INFO(s.summary.BriefReport());
+  CHECK(s.summary.metrics.Clean());
+  auto off_walls = [](double yaw) {
+    const double q = std::fmod(std::abs(yaw), 0.5 * std::numbers::pi);
+    return std::min(q, 0.5 * std::numbers::pi - q) * 180.0 / std::numbers::pi;
+  };
+  for (const char* id : {"r/sofa-0", "r/cabinet-0", "r/coffee-table-0"}) {
+    const int k = Index(s, id);
+    REQUIRE(k >= 0);
+    INFO(id << " at yaw " << s.placements[k].pose.yaw);
+    CHECK(off_walls(s.placements[k].pose.yaw) < 0.5);
+  }
 }
 
 }  // namespace
