@@ -198,6 +198,20 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
   return out;
 }
 
+// The reachability of the building with every room's objects as its solver holds them now.
+Result<ReachReport> ReachOf(const ReachInput& building, const std::map<std::string, RoomSolver*>& solvers, const ReachOptions& options) {
+  ReachInput input = building;
+  std::vector<ReachObject> objects;
+  for (const auto& [name, solver] : solvers) {
+    int level = 0;
+    for (const ReachTarget& t : building.targets)
+      if (t.kind == TargetKind::kRoom && t.name == name) level = t.level;
+    for (ReachObject& o : ReachObjectsOf(solver->Solution(), name, level)) objects.push_back(std::move(o));
+  }
+  AddObjects(input, objects, options);
+  return CheckReach(input, options);
+}
+
 // The parts of a path walked on each level (its points on a stair's way, level -1, are left out).
 std::vector<ReachFigures::Path> PathPieces(const ReachPath& path) {
   std::vector<ReachFigures::Path> out;
@@ -247,12 +261,29 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
   for (const std::string& room : changed) {
     RoomSolver& solver = *by_room.at(room)->solver;
     if (!solver.Solution().summary.metrics.Clean()) solver.RunAgent();
-    // Removals only: a chair moved now could close a way the feedback opened.
-    solver.TidyGroups(/*moves=*/false);
-    TakeSolution(*by_room.at(room));
   }
+  // Issue 27: the feedback's walkways and moves may have pushed groups apart (a TV stand slid off the sofa's
+  // axis): every room's tidy stage once more, kept when no room or zone a person reached is lost by it (one
+  // more reachability check); else the rooms as they were, and in the rooms the feedback changed only the
+  // tidy stage's removals.
+  ReachReport last = loop->last;
+  std::map<std::string, std::shared_ptr<const RoomSolver::Snapshot>> undo;
+  bool tidied = false;
+  for (auto& [room, solver] : solvers) {
+    undo[room] = solver->Save();
+    tidied = solver->TidyGroups(/*moves=*/true) || tidied;
+  }
+  if (tidied) {
+    auto again = ReachOf(*input, solvers, options.reach.reach);
+    if (again.ok() && again->rooms_reachable >= last.rooms_reachable && again->zones_reachable >= last.zones_reachable) {
+      last = std::move(*again);
+    } else {
+      for (auto& [room, solver] : solvers) solver->Restore(*undo.at(room));
+      for (const std::string& room : changed) by_room.at(room)->solver->TidyGroups(/*moves=*/false);
+    }
+  }
+  for (auto& [room, solver] : solvers) TakeSolution(*by_room.at(room));
 
-  const ReachReport& last = loop->last;
   f.outcome = loop->reason;
   f.rooms = last.rooms;
   f.rooms_reachable = last.rooms_reachable;
