@@ -1192,7 +1192,7 @@ struct RoomSolver::Impl {
           if (state.objects[j].relation != Relation::kAgainstWall) carried.push_back(j);
       const RoomState saved = state;
       const int trouble = GroupTrouble();
-      for (double frac : {1.0, 0.75, 0.5, 0.25}) {
+      for (double frac : {1.0, 0.75, 0.5, 0.35, 0.25, 0.15}) {
         state = saved;
         const Pose from = state.placements[k].pose;
         Pose to = from;
@@ -1200,8 +1200,23 @@ struct RoomSolver::Impl {
         to.y += frac * shift * along.y;
         state.SetPose(k, to);
         Carry(carried, from, to);
-        bool ok = CostAt(k).hard <= kHairline && GroupTrouble() < trouble;
-        for (int j : carried) ok = ok && CostAt(j).hard <= kHairline;
+        // An optional side table that no longer fits at the sofa's end is left out; a protected member
+        // that does not fit keeps the sofa where it was.
+        bool ok = true;
+        std::vector<std::string> left_out;
+        for (int j : carried)
+          if (CostAt(j).hard > kHairline) {
+            if (IsProtected(state.objects[j].priority)) ok = false;
+            else left_out.push_back(state.objects[j].id);
+          }
+        std::vector<std::string> removed;
+        for (const std::string& gone : left_out)
+          if (const int j = state.Find(gone); j >= 0) {
+            const std::vector<std::string> g = state.Remove(j);
+            removed.insert(removed.end(), g.begin(), g.end());
+          }
+        const int kk = state.Find(which == 0 ? stand_id : sofa_id);
+        ok = ok && kk >= 0 && CostAt(kk).hard <= kHairline && GroupTrouble() < trouble;
         if (ok) {
           const ExactMetrics was = metrics;
           metrics = checker->Check(state, false);
@@ -1211,12 +1226,17 @@ struct RoomSolver::Impl {
         if (!ok) continue;
         ActionResult r;
         r.action.kind = ActionKind::kUpdatePose;
-        r.action.id = state.objects[k].id;
+        r.action.id = which == 0 ? stand_id : sofa_id;
         r.action.pose = to;
         r.action.reason = "the sofa does not face its TV (" + why + "): " +
                           (which == 0 ? "the TV stand slid along its wall onto the sofa's axis" : "the sofa slid sideways before the TV");
         r.status = ActionStatus::kApplied;
         r.message = carried.empty() ? "done" : "done; its coffee and side tables came along";
+        if (!removed.empty()) {
+          r.removed = removed;
+          summary.removed.insert(summary.removed.end(), removed.begin(), removed.end());
+          r.message += ", " + std::to_string(left_out.size()) + " with no place at its end left out";
+        }
         r.final_pose = to;
         summary.actions.push_back(r);
         Check();
