@@ -332,7 +332,9 @@ class Checker {
       GroupCheck& g = groups[*bed];
       g.members.push_back(p.o->id);
       ++out_.pillows;
-      if (const std::string problem = PillowProblem(p.box.c, (*bed)->box); problem.empty()) ++out_.pillows_ok;
+      const AssetRecord* asset = in_.assets ? in_.assets((*bed)->o->asset) : nullptr;
+      const double scale = asset && asset->size.y > 0.0 ? (*bed)->o->size.y / asset->size.y : 1.0;
+      if (const std::string problem = PillowProblem(p.box.c, MattressBox((*bed)->box, asset, scale)); problem.empty()) ++out_.pillows_ok;
       else g.problems.push_back(Name(p) + ": " + problem);
     }
     for (const Item* b : beds) out_.groups.push_back(std::move(groups[b]));

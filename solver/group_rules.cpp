@@ -54,6 +54,20 @@ std::string PillowProblem(Point pillow, const OrientedBox& bed) {
   return "";
 }
 
+OrientedBox MattressBox(const OrientedBox& bed, const AssetRecord* asset, double scale) {
+  OrientedBox box = bed;
+  if (!asset || asset->support_surfaces.empty()) return box;
+  const SupportSurface* top = &asset->support_surfaces.front();
+  for (const SupportSurface& f : asset->support_surfaces)
+    if (f.z > top->z) top = &f;
+  if (top->polygon.size() < 3) return box;
+  double y0 = 1e300, y1 = -1e300;
+  for (const Point& q : top->polygon) y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+  box.c = geo::Add(box.c, geo::Scale(box.V(), 0.5 * (y0 + y1) * scale));
+  box.hy = 0.5 * (y1 - y0) * scale;
+  return box;
+}
+
 std::string TvProblem(const OrientedBox& sofa, Point tv) {
   const double angle = AngleDegrees(sofa.Front(), geo::Sub(tv, sofa.c));
   if (angle > kTvAngle) return "the sofa is turned " + FormatFixed(angle, 0) + " degrees from the TV (<= " + FormatFixed(kTvAngle, 0) + ")";

@@ -9,6 +9,7 @@
 // wrong in words, with the measured value and the bound ("0.42 m from the table (<= 0.35)").
 #include <string>
 
+#include "assets/asset.h"
 #include "layout/layout.h"
 #include "solver/box.h"
 
@@ -47,8 +48,12 @@ std::string DeskSeatProblem(const OrientedBox& chair, const OrientedBox& desk);
 // A nightstand: beside its bed (outside the bed's width, at most 0.3 m off its side), its centre within
 // 0.75 m of the head's line (the bed's back).
 std::string BedsideProblem(const OrientedBox& nightstand, const OrientedBox& bed);
-// A pillow on a bed: its centre in the head 30 % of the bed's length.
+// A pillow on a bed: its centre in the head 30 % of the bed's length (of its mattress: MattressBox).
 std::string PillowProblem(Point pillow, const OrientedBox& bed);
+// What a bed's pillows lie on: the bed's box cut to the depth of its asset's highest support surface (an
+// imported bed's mattress may start well below its box's head, past a thick headboard); the bed's box when
+// `asset` is null or has no surface. `scale`: the bed's scale.
+OrientedBox MattressBox(const OrientedBox& bed, const AssetRecord* asset, double scale);
 // The sofa faces the TV (or its stand) within 25 degrees, 1.4-4.0 m centre to centre.
 std::string TvProblem(const OrientedBox& sofa, Point tv);
 // The coffee table's centre in the sofa's front half-plane, within its width, at a 0.25-0.9 m gap.

@@ -1388,6 +1388,28 @@ struct RoomSolver::Impl {
       TakeRemoval(id, "out of its group (" + why + ") and no free place by its hub holds it: left out");
       changed = true;
     }
+    // A pillow the bed's head has no room for (the second one on a narrow imported bed, turned mid-bed) is
+    // left out: pillows lie at the head or not at all. The one nearest the head stays (a bed whose mattress
+    // starts well below its box's head keeps a pillow).
+    std::vector<std::string> pillows;
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int p = state.parent[k];
+      if (state.objects[k].category != "pillow" || p < 0 || IsProtected(state.objects[k].priority) ||
+          (state.objects[p].category != "bed" && state.objects[p].category != "child-bed"))
+        continue;
+      const OrientedBox bed = MattressBox(state.WorldBox(p), &state.objects[p].asset, state.placements[p].pose.scale);
+      const Point at = state.WorldBox(static_cast<int>(k)).c;
+      if (PillowProblem(at, bed).empty()) continue;
+      bool nearer = false;  // another pillow on this bed lies nearer its head
+      for (int c : state.children[p])
+        nearer = nearer || (c != static_cast<int>(k) && state.objects[c].category == "pillow" &&
+                            bed.Local(state.WorldBox(c).c).y > bed.Local(at).y + 1e-9);
+      if (nearer) pillows.push_back(state.objects[k].id);
+    }
+    for (const std::string& id : pillows) {
+      TakeRemoval(id, "no room for it at the bed's head: left out");
+      changed = true;
+    }
     if (moves) changed = SquareUp() || changed;
     if (moves) changed = RugUnderGroup() || changed;
     if (changed && metrics.Clean()) {

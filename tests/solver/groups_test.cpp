@@ -240,5 +240,31 @@ TEST_CASE("The tidy stage turns furniture left a few degrees off the walls squar
   }
 }
 
+TEST_CASE("A pillow at the head of an imported bed's mattress is at the head, though far from the bed box's head",
+          "[solver][groups]") {
+  // A 1.6 x 2.2 m bed whose mattress (its highest support surface) ends 0.5 m short of the box's back: a
+  // thick headboard. A pillow 0.25 m below the mattress's head is 0.75 m below the box's.
+  OrientedBox bed;
+  bed.c = {3.0, 2.0};
+  bed.yaw = 0.0;
+  bed.hx = 0.8;
+  bed.hy = 1.1;
+  AssetRecord asset;
+  asset.size = {1.6, 2.2, 1.0};
+  asset.support_surfaces.push_back({0.3, {{-0.8, -1.1}, {0.8, -1.1}, {0.8, -0.2}, {-0.8, -0.2}}, 0.5, "mesh"});  // the footboard's ledge
+  asset.support_surfaces.push_back({0.55, {{-0.75, -1.05}, {0.75, -1.05}, {0.75, 0.6}, {-0.75, 0.6}}, 1.0, "mesh"});
+  const Point pillow = geo::Add(bed.c, geo::Scale(bed.V(), 0.35));
+  CHECK_FALSE(PillowProblem(pillow, bed).empty());
+  const OrientedBox mattress = MattressBox(bed, &asset, 1.0);
+  CHECK(mattress.hy == Approx(0.825));
+  CHECK(PillowProblem(pillow, mattress).empty());
+  CHECK(MattressBox(bed, nullptr, 1.0).hy == Approx(bed.hy));
+  // Scaled to 0.8, the same pillow offset is still within the head of the scaled mattress.
+  OrientedBox small = bed;
+  small.hx *= 0.8;
+  small.hy *= 0.8;
+  CHECK(MattressBox(small, &asset, 0.8).hy == Approx(0.66));
+}
+
 }  // namespace
 }  // namespace villa::solver
