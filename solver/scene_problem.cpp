@@ -276,14 +276,18 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
     for (SemanticEdge& s : EdgesOf(e)) p.edges.push_back(std::move(s));
   }
   MarkEssentials(context.category, p);
-  // A dining or meeting table's chair keeps room behind it to be pulled out (issue 27).
-  for (ProblemObject& o : p.objects)
-    for (const SemanticEdge& e : p.edges)
+  MarkPullOut(p);
+  return out;
+}
+
+void MarkPullOut(RoomProblem& problem) {
+  for (ProblemObject& o : problem.objects)
+    for (const SemanticEdge& e : problem.edges)
       if (e.source == o.id && (o.category == "chair" || o.category == "office-chair") &&
           (e.relation == SemanticRelation::kNextTo || e.relation == SemanticRelation::kFaceTo))
-        if (const int t = p.Find(e.target); t >= 0 && (p.objects[t].category == "dining-table" || p.objects[t].category == "conference-table"))
+        if (const int t = problem.Find(e.target);
+            t >= 0 && (problem.objects[t].category == "dining-table" || problem.objects[t].category == "conference-table"))
           o.pull_out = kSeatBehind;
-  return out;
 }
 
 void MarkEssentials(Category room, RoomProblem& problem) {

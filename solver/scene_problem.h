@@ -48,6 +48,9 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
 // critic and the reachability feedback make room for them rather than remove them; a living room's coffee
 // table, TV stand and TV (the rest of its seating group) are protected as named ones.
 void MarkEssentials(Category room, RoomProblem& problem);
+// Issue 27: a dining or meeting table's chair (a next_to or face_to edge to it) keeps kSeatBehind free
+// behind it to be pulled out (ProblemObject::pull_out).
+void MarkPullOut(RoomProblem& problem);
 
 // The scene's objects after solving: every object of `solution` posed (pose, uniform scale, size = asset
 // size x scale, wall edge and gap, surface or cavity), in the planned order; objects the solver removed

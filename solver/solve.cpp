@@ -1154,6 +1154,25 @@ struct RoomSolver::Impl {
     ++summary.iterations;
     Check();
   }
+  // Whether the exact check finds the arrangement as it stands clean (`metrics` unchanged).
+  bool ExactlyClean() { return checker->Check(state, false).Clean(); }
+  // A move the tidy stage made on the state itself (already checked), logged as an applied action with what
+  // it removed, and the state checked.
+  void LogMove(const std::string& id, const Pose& to, const std::string& reason, const std::string& message = "done",
+               const std::vector<std::string>& removed = {}) {
+    ActionResult r;
+    r.action.kind = ActionKind::kUpdatePose;
+    r.action.id = id;
+    r.action.pose = to;
+    r.action.reason = reason;
+    r.status = ActionStatus::kApplied;
+    r.message = message;
+    r.final_pose = to;
+    r.removed = removed;
+    summary.removed.insert(summary.removed.end(), removed.begin(), removed.end());
+    summary.actions.push_back(r);
+    Check();
+  }
   void TakeRemoval(const std::string& id, const std::string& reason) {
     Action a;
     a.kind = ActionKind::kRemoveEntity;
@@ -1169,10 +1188,10 @@ struct RoomSolver::Impl {
   bool AlignWithTv(int sofa, int stand, const std::string& why) {
     const std::string sofa_id = state.objects[sofa].id, stand_id = state.objects[stand].id;
     for (int which = 0; which < 2; ++which) {
-      const int k = state.Find(which == 0 ? stand_id : sofa_id);
-      const int other = state.Find(which == 0 ? sofa_id : stand_id);
-      if (k < 0 || other < 0) return false;
-      const OrientedBox so = state.WorldBox(state.Find(sofa_id)), st = state.WorldBox(state.Find(stand_id));
+      const std::string& mover = which == 0 ? stand_id : sofa_id;
+      const int k = state.Find(mover), sofa_k = state.Find(sofa_id), stand_k = state.Find(stand_id);
+      if (sofa_k < 0 || stand_k < 0) return false;
+      const OrientedBox so = state.WorldBox(sofa_k), st = state.WorldBox(stand_k);
       const Point f = so.Front(), w = geo::Sub(st.c, so.c);
       double shift = 0.0;
       Point along;
@@ -1215,31 +1234,14 @@ struct RoomSolver::Impl {
             const std::vector<std::string> g = state.Remove(j);
             removed.insert(removed.end(), g.begin(), g.end());
           }
-        const int kk = state.Find(which == 0 ? stand_id : sofa_id);
-        ok = ok && kk >= 0 && CostAt(kk).hard <= kHairline && GroupTrouble() < trouble;
-        if (ok) {
-          const ExactMetrics was = metrics;
-          metrics = checker->Check(state, false);
-          ok = metrics.Clean();
-          if (!ok) metrics = was;
-        }
-        if (!ok) continue;
-        ActionResult r;
-        r.action.kind = ActionKind::kUpdatePose;
-        r.action.id = which == 0 ? stand_id : sofa_id;
-        r.action.pose = to;
-        r.action.reason = "the sofa does not face its TV (" + why + "): " +
-                          (which == 0 ? "the TV stand slid along its wall onto the sofa's axis" : "the sofa slid sideways before the TV");
-        r.status = ActionStatus::kApplied;
-        r.message = carried.empty() ? "done" : "done; its coffee and side tables came along";
-        if (!removed.empty()) {
-          r.removed = removed;
-          summary.removed.insert(summary.removed.end(), removed.begin(), removed.end());
-          r.message += ", " + std::to_string(left_out.size()) + " with no place at its end left out";
-        }
-        r.final_pose = to;
-        summary.actions.push_back(r);
-        Check();
+        const int kk = state.Find(mover);
+        if (!ok || kk < 0 || CostAt(kk).hard > kHairline || GroupTrouble() >= trouble || !ExactlyClean()) continue;
+        std::string message = carried.empty() ? "done" : "done; its coffee and side tables came along";
+        if (!removed.empty()) message += ", " + std::to_string(left_out.size()) + " with no place at its end left out";
+        LogMove(mover, to,
+                "the sofa does not face its TV (" + why + "): " +
+                    (which == 0 ? "the TV stand slid along its wall onto the sofa's axis" : "the sofa slid sideways before the TV"),
+                message, removed);
         return true;
       }
       state = saved;
@@ -1265,17 +1267,12 @@ struct RoomSolver::Impl {
     const int before = GroupTrouble();
     const bool clean = metrics.Clean();
     ActionResult r = Apply(a);
-    if (r.status != ActionStatus::kRefused && GroupTrouble() < before) {
-      // The exact check has the last word (the proxy passes a sofa a hair into a reflex corner).
-      const ExactMetrics was = metrics;
-      metrics = checker->Check(state, false);
-      if (metrics.Clean() || !clean) {
-        summary.actions.push_back(std::move(r));
-        ++summary.iterations;
-        Check();
-        return true;
-      }
-      metrics = was;
+    // The exact check has the last word (the proxy passes a sofa a hair into a reflex corner).
+    if (r.status != ActionStatus::kRefused && GroupTrouble() < before && (!clean || ExactlyClean())) {
+      summary.actions.push_back(std::move(r));
+      ++summary.iterations;
+      Check();
+      return true;
     }
     state = saved;
     summary.removed.resize(removed);
@@ -1438,45 +1435,26 @@ struct RoomSolver::Impl {
         const OrientedBox sofa_box = state.WorldBox(m.hub);
         const Point front = geo::Add(sofa_box.c, geo::Scale(sofa_box.Front(), sofa_box.hy));
         const RoomState saved = state;
-        bool ok = false;
-        Pose to = from;
         for (double turn : {0.0, 0.5 * std::numbers::pi}) {
-          state = saved;
-          to = from;
+          Pose to = from;
           to.yaw = WrapAngle(sofa.yaw + turn);
           const double half = turn == 0.0 ? 0.5 * state.objects[r].asset.size.y : 0.5 * state.objects[r].asset.size.x;
           const Point c = geo::Add(front, geo::Scale(sofa_box.Front(), half * from.scale + 0.02));
           to.x = c.x;
           to.y = c.y;
+          if (std::hypot(to.x - from.x, to.y - from.y) < 0.05 && std::abs(WrapAngle(to.yaw - from.yaw)) < 0.01) return false;
           state.SetPose(rug, to);
-          ok = CostAt(rug).hard <= kHairline;
+          bool ok = CostAt(rug).hard <= kHairline;
           // What stands on the floor keeps its support (a lamp half on the rug's edge would tilt).
           for (size_t j = 0; j < state.objects.size() && ok; ++j)
             ok = state.parent[j] >= 0 || static_cast<int>(j) == rug || CostAt(static_cast<int>(j)).hard <= kHairline;
-          if (ok) {
-            const ExactMetrics was = metrics;
-            metrics = checker->Check(state, false);
-            ok = metrics.Clean();
-            if (!ok) metrics = was;
+          if (ok && ExactlyClean()) {
+            LogMove(state.objects[r].id, to, "under its seating group: between the sofa and the coffee table, turned like the sofa");
+            return true;
           }
-          if (ok) break;
-        }
-        if (!ok) {
           state = saved;
-          return false;
         }
-        if (std::hypot(to.x - from.x, to.y - from.y) < 0.05 && std::abs(WrapAngle(to.yaw - from.yaw)) < 0.01) return false;
-        ActionResult res;
-        res.action.kind = ActionKind::kUpdatePose;
-        res.action.id = state.objects[r].id;
-        res.action.pose = to;
-        res.action.reason = "under its seating group: between the sofa and the coffee table, turned like the sofa";
-        res.status = ActionStatus::kApplied;
-        res.message = "done";
-        res.final_pose = to;
-        summary.actions.push_back(res);
-        Check();
-        return true;
+        return false;
       }
     }
     return false;
@@ -1522,30 +1500,15 @@ struct RoomSolver::Impl {
           to.y += r * std::sin(a * std::numbers::pi / 4.0);
           state.SetPose(k, to);
           // The proxies keep a margin: within a hair of it, the exact check decides.
-          ok = CostAt(k).hard <= kHairline && GroupTrouble() <= trouble;
-          if (ok) {
-            const ExactMetrics was = metrics;
-            metrics = checker->Check(state, false);
-            ok = metrics.Clean();
-            metrics = was;
-          }
+          ok = CostAt(k).hard <= kHairline && GroupTrouble() <= trouble && ExactlyClean();
         }
-      if (ok) metrics = checker->Check(state, false);
       if (!ok) {
         state = saved;
         continue;
       }
-      ActionResult r;
-      r.action.kind = ActionKind::kUpdatePose;
-      r.action.id = id;
-      r.action.pose = to;
-      r.action.reason = "square to the walls" + std::string(m.role != GroupRole::kNone ? " (turned like its sofa)" : "") +
-                        ": turned " + Fixed(std::abs(turn) * 180.0 / std::numbers::pi, 1) + " degrees";
-      r.status = ActionStatus::kApplied;
-      r.message = "done";
-      r.final_pose = state.placements[k].pose;
-      summary.actions.push_back(r);
-      Check();
+      LogMove(id, to,
+              "square to the walls" + std::string(m.role != GroupRole::kNone ? " (turned like its sofa)" : "") + ": turned " +
+                  Fixed(std::abs(turn) * 180.0 / std::numbers::pi, 1) + " degrees");
       turned = true;
     }
     return turned;

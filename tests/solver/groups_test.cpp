@@ -27,6 +27,18 @@ int Index(const RoomSolution& s, const std::string& id) {
 
 OrientedBox Plan(const RoomSolution& s, int k) { return StandingBox(s.objects[k], s.placements[k].pose); }
 
+// `n` chairs of `w` x `d` x `h` seated at `table` (face_to and next_to within 0.3 m, as the planner relates them).
+void AddTableSeats(RoomProblem& room, const std::string& table, int n, double w, double d, double h) {
+  for (int k = 0; k < n; ++k) {
+    const std::string chair = "chair-" + std::to_string(k);
+    room.objects.push_back(BoxObject(chair, w, d, h));
+    room.edges.push_back(DefaultEdge("r/" + chair, SemanticRelation::kFaceTo, "r/" + table));
+    SemanticEdge next = DefaultEdge("r/" + chair, SemanticRelation::kNextTo, "r/" + table);
+    next.max_gap = 0.3;
+    room.edges.push_back(next);
+  }
+}
+
 TEST_CASE("A bathroom too small for its toilet and a cabinet keeps the toilet, essential, and loses the cabinet",
           "[solver][groups]") {
   // 1.3 x 1.6 m: the cabinet (1.2 x 1.4) leaves no 0.4 x 0.65 spot for the toilet. Without the essentials
@@ -68,14 +80,7 @@ TEST_CASE("Dining chairs are seated from their table's template: at its sides, f
     DYNAMIC_SECTION(shape) {
       RoomProblem room = std::string(shape) == "L" ? LShape() : Rectangle(5.0, 4.4);
       room.objects.push_back(TableObject("dining-table-0", 1.6, 0.9, 0.75));
-      for (int k = 0; k < 4; ++k) {
-        const std::string chair = "chair-" + std::to_string(k);
-        room.objects.push_back(BoxObject(chair, 0.45, 0.5, 0.85));
-        room.edges.push_back(DefaultEdge("r/" + chair, SemanticRelation::kFaceTo, "r/dining-table-0"));
-        SemanticEdge next = DefaultEdge("r/" + chair, SemanticRelation::kNextTo, "r/dining-table-0");
-        next.max_gap = 0.3;
-        room.edges.push_back(next);
-      }
+      AddTableSeats(room, "dining-table-0", 4, 0.45, 0.5, 0.85);
       MarkEssentials(Category::kDiningRoom, room);
       auto solved = SolveRoom(room, {});
       REQUIRE(solved.ok());
@@ -153,20 +158,12 @@ TEST_CASE("A narrow meeting room's chairs can all be pulled out: 0.75 m behind e
   ProblemObject table = TableObject("conference-table-0", 2.2, 0.9, 0.74);
   table.scale_min = 0.8;
   room.objects.push_back(table);
-  for (int k = 0; k < 4; ++k) {
-    const std::string chair = "chair-" + std::to_string(k);
-    room.objects.push_back(BoxObject(chair, 0.46, 0.51, 0.87));
-    room.edges.push_back(DefaultEdge("r/" + chair, SemanticRelation::kFaceTo, "r/conference-table-0"));
-    SemanticEdge next = DefaultEdge("r/" + chair, SemanticRelation::kNextTo, "r/conference-table-0");
-    next.max_gap = 0.3;
-    room.edges.push_back(next);
-  }
+  AddTableSeats(room, "conference-table-0", 4, 0.46, 0.51, 0.87);
   ProblemObject sideboard = BoxObject("sideboard-0", 1.5, 0.44, 0.77);
   sideboard.relation = Relation::kAgainstWall;
   room.objects.push_back(sideboard);
   MarkEssentials(Category::kMeetingRoom, room);
-  for (ProblemObject& o : room.objects)
-    if (o.category == "chair") o.pull_out = kSeatBehind;
+  MarkPullOut(room);
   RoomSolver solver(room, {});
   REQUIRE(solver.Initialise().ok());
   solver.RunAgent();
