@@ -743,12 +743,18 @@ class Planning {
   }
 
   // Up to the target: one more of a random item that can take one, small objects twice as likely.
+  // Then, in the rich room types of usual size, the furniture dressed (issue 27): small things only, on and in what the
+  // room already holds, up to the top of the range (the reachability feedback and the agent leave out some
+  // pieces with what stands on them; a room planned at the range's foot ends below the paper's counts).
   void Grow() {
     std::set<const ItemPrior*> full;
-    while (Total() < target_) {
+    const bool dress = options_.dress && IsRichRoomType(room_.category) && room_.area >= options_.rich_min_area;
+    while (Total() < target_ || (dress && Total() < hi_)) {
+      const bool small_only = Total() >= target_;
       std::vector<const ItemPrior*> open;
       std::vector<double> weights;
       for (const ItemPrior& item : priors_.items) {
+        if (small_only && item.mount != Mount::kParent) continue;
         if (full.count(&item) || item.per_seat || CountOf(&item) >= MaxOf(item) || !Allowed(item)) continue;
         open.push_back(&item);
         weights.push_back(item.mount == Mount::kParent ? 2.0 : 1.0);

@@ -38,10 +38,15 @@ struct PlannerOptions {
   // MAX_OF_TYPE_ON_RECEPTACLE). Place settings (one per chair) are exempt. Range [1, 10].
   int max_per_receptacle = 3;
   // Object counts aimed at in the five rich room types (living, dining, bed, kitchen, children's room) of
-  // at least `rich_min_area` m2: the paper's 22-30. Other rooms aim at PRIORS.md's NO target scaled by size.
-  int rich_min_objects = 22;
-  int rich_max_objects = 30;
+  // at least `rich_min_area` m2: the paper's 22-30 placed, planned 3 higher (issue 27: the agent and the
+  // reachability feedback leave out about 3 a room, with what stands on them); the furniture is then dressed
+  // with small things up to `rich_max_objects`. Other rooms aim at PRIORS.md's NO target scaled by size.
+  int rich_min_objects = 25;
+  int rich_max_objects = 33;
   double rich_min_area = 12.0;  // m2 of room polygon
+  // Whether the rich rooms' furniture is dressed with small things up to `rich_max_objects` once the drawn
+  // target is met (tests of fixed arrangements turn it off).
+  bool dress = true;
 
   // Empty when usable, else what is wrong ("floor_share = 0: must be in (0, 1]").
   std::string Check() const;

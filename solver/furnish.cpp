@@ -187,6 +187,7 @@ RoomResult FurnishRoom(const FurnishedVilla& villa, const scene::RoomContext& co
       report.critic = std::move(*figures);
     }
     out.solver->TidyGroups(/*moves=*/true);
+    out.solver->Refill();
     report.seconds_solve = Since(t);
     out.planned = plan->objects;
     out.planned_edges = plan->edges;
@@ -280,6 +281,34 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
     } else {
       for (auto& [room, solver] : solvers) solver->Restore(*undo.at(room));
       for (const std::string& room : changed) by_room.at(room)->solver->TidyGroups(/*moves=*/false);
+    }
+  }
+  // Issue 27: what the feedback removed (and what the rooms lost while settling) put back where it fits
+  // now, kept when no room or zone a person reached is lost and no zone becomes unreachable; when the whole
+  // villa's refill loses one, room by room.
+  auto worse = [&](const ReachReport& r) {
+    return r.rooms_reachable < last.rooms_reachable || r.zones_reachable < last.zones_reachable ||
+           r.zones - r.zones_reachable > last.zones - last.zones_reachable;
+  };
+  std::vector<std::string> refilled;
+  for (auto& [room, solver] : solvers) {
+    undo[room] = solver->Save();
+    if (solver->Refill()) refilled.push_back(room);
+  }
+  if (!refilled.empty()) {
+    auto again = ReachOf(*input, solvers, options.reach.reach);
+    if (again.ok() && !worse(*again)) {
+      last = std::move(*again);
+    } else {
+      for (const std::string& room : refilled) solvers.at(room)->Restore(*undo.at(room));
+      for (const std::string& room : refilled) {
+        RoomSolver& solver = *solvers.at(room);
+        auto before = solver.Save();
+        if (!solver.Refill()) continue;
+        auto one = ReachOf(*input, solvers, options.reach.reach);
+        if (one.ok() && !worse(*one)) last = std::move(*one);
+        else solver.Restore(*before);
+      }
     }
   }
   for (auto& [room, solver] : solvers) TakeSolution(*by_room.at(room));

@@ -352,6 +352,12 @@ std::vector<scene::SceneObject> SolvedSceneObjects(const RoomProblem& problem, c
     o.surface.reset();
     o.cavity.reset();
     o.wall.reset();
+    // What stands in the room takes its relation as solved (a sofa the tidy stage floated off its wall
+    // before the TV stands on the floor now).
+    if (scene::IsRootParent(o.parent) && scene::IsRootParent(po.parent)) {
+      o.parent = po.parent;
+      o.relation = *scene::ParseRelation(RelationName(po.relation));
+    }
     const bool on_object = !scene::IsRootParent(o.parent);
     if (on_object && o.relation == scene::Relation::kOnTop && pl.surface >= 0) o.surface = pl.surface;
     if (on_object && o.relation == scene::Relation::kInside && pl.cavity >= 0) o.cavity = pl.cavity;

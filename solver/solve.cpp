@@ -96,6 +96,7 @@ struct RoomSolver::Impl {
   std::deque<Action> queued;           // removals still to make for a protected object (MakeWayAction)
   bool strict_groups = false;          // GroupFitsAt asks each member to keep its group's rules (TidyGroups)
   std::set<std::string> semantic_tried;
+  std::set<std::string> refill_tried;  // Refill: pieces tried in this call
   Clock::time_point start;
   bool initialised = false;
 
@@ -475,7 +476,19 @@ struct RoomSolver::Impl {
       const std::string parent_id = p >= 0 ? state.objects[p].id : "";
       const bool inside = state.objects[i].relation == Relation::kInside;
       const int group = inside ? state.placements[i].cavity : state.placements[i].surface;
+      // A desk's chair goes with its desk (it was protected for the desk's sake; alone it would push the
+      // room's other pieces out for nothing).
+      std::vector<std::string> seats;
+      if (options.functional_groups)
+        for (size_t k = 0; k < state.objects.size(); ++k) {
+          const Membership m = GroupMembership(state, static_cast<int>(k));
+          if (m.role == GroupRole::kDeskSeat && m.hub == i && state.objects[k].priority != Priority::kEssential)
+            seats.push_back(state.objects[k].id);
+        }
       r.removed = state.Remove(i);
+      for (const std::string& seat : seats)
+        if (const int k = state.Find(seat); k >= 0)
+          for (std::string& gone : state.Remove(k)) r.removed.push_back(std::move(gone));
       summary.removed.insert(summary.removed.end(), r.removed.begin(), r.removed.end());
       r.status = ActionStatus::kApplied;
       r.message = "removed " + std::to_string(r.removed.size()) + " object(s)";
@@ -1249,6 +1262,86 @@ struct RoomSolver::Impl {
     return false;
   }
 
+  // A sofa that cannot face its TV from where it stands (along an angled wall, the stand on a wall at 45
+  // degrees to it; its back to the TV): the sofa floated before the TV as a designer floats one, on the
+  // stand's axis 1.6-3.3 m from it (up to 1.5 m to either side, the stand slid along its wall as far where
+  // it can), turned to face it, its coffee and side
+  // tables and armchairs carried along (re-seated from their templates where they collide; an optional one
+  // with no place left out). Kept where nothing collides (the exact check has the last word) and the groups
+  // break fewer rules. True when one held.
+  bool FaceTv(int sofa, int stand, const std::string& why) {
+    const std::string sofa_id = state.objects[sofa].id, stand_id = state.objects[stand].id;
+    const OrientedBox st = state.WorldBox(stand), so = state.WorldBox(sofa);
+    const Point f = st.Front(), u = st.U();
+    const Pose from = state.placements[sofa].pose, stand_from = state.placements[stand].pose;
+    const Point offset{from.x - so.c.x, from.y - so.c.y};  // the pose's point from the box's centre
+    std::vector<std::string> carried;
+    for (int j : MembersOf(sofa))
+      if (state.objects[j].relation != Relation::kAgainstWall) carried.push_back(state.objects[j].id);
+    const RoomState saved = state;
+    const int trouble = GroupTrouble();
+    for (double side : {0.0, 0.3, -0.3, 0.6, -0.6, 0.9, -0.9, 1.2, -1.2, 1.5, -1.5})
+      for (bool slide : {true, false}) {   // the stand slid along its wall by as much, or where it stands
+        if (slide && side == 0.0) continue;
+        state = saved;
+        if (slide) {
+          Pose to = stand_from;
+          to.x += side * u.x;
+          to.y += side * u.y;
+          state.SetPose(stand, to);
+          if (CostAt(stand).hard > kHairline) continue;
+        }
+        const RoomState stand_placed = state;
+        for (double d : {2.4, 2.1, 2.7, 1.8, 3.0, 3.3, 1.6}) {
+          state = stand_placed;
+          const int k = state.Find(sofa_id);
+          ProblemObject& o = state.objects[k];
+          if (o.relation == Relation::kAgainstWall) o.relation = Relation::kOnTop, o.parent = "floor";  // it floats now
+          o.wall = -1;
+          state.placements[k].wall = -1;
+          const Point centre = geo::Add(geo::Add(st.c, geo::Scale(f, d)), geo::Scale(u, side));
+          // Its front towards the TV (square to the stand when it sits on the stand's axis).
+          const Point tv = state.WorldBox(state.Find(stand_id)).c, look = geo::Unit(geo::Sub(tv, centre));
+          const double turn = WrapAngle(std::atan2(look.x, -look.y) - so.yaw);
+          const double c = std::cos(turn), s = std::sin(turn);
+          Pose to = from;
+          to.x = centre.x + c * offset.x - s * offset.y;
+          to.y = centre.y + s * offset.x + c * offset.y;
+          to.yaw = WrapAngle(from.yaw + turn);
+          state.SetPose(k, to);
+          std::vector<int> members;
+          for (const std::string& id : carried) members.push_back(state.Find(id));
+          Carry(members, from, to);
+          // (The proxy's corner and reflex-vertex terms miss a box edge across a wedge of wall: the floor it
+          // covers says.)
+          const OrientedBox box = state.WorldBox(k);
+          if (CostAt(k).hard > kHairline || ClippedArea(problem.free_floor, box.Footprint()) < 4.0 * box.hx * box.hy - 1e-4) continue;
+          if (!TvProblem(box, state.WorldBox(state.Find(stand_id)).c).empty()) continue;
+          bool ok = true;
+          std::vector<std::string> left_out;
+          for (int j : Reseat(members)) {
+            if (IsProtected(state.objects[j].priority)) ok = false;
+            else left_out.push_back(state.objects[j].id);
+          }
+          if (!ok) continue;
+          std::vector<std::string> removed;
+          for (const std::string& gone : left_out)
+            if (const int j = state.Find(gone); j >= 0) {
+              const std::vector<std::string> g = state.Remove(j);
+              removed.insert(removed.end(), g.begin(), g.end());
+            }
+          if (GroupTrouble() >= trouble || !ExactlyClean()) continue;
+          if (slide) LogMove(stand_id, state.placements[state.Find(stand_id)].pose, "the sofa does not face its TV (" + why + "): the TV stand slid along its wall to where the sofa can face it");
+          std::string message = "done; its coffee and side tables came along";
+          if (!left_out.empty()) message += ", " + std::to_string(left_out.size()) + " with no place by it left out";
+          LogMove(sofa_id, to, "the sofa does not face its TV (" + why + "): floated before the TV, facing it", message, removed);
+          return true;
+        }
+      }
+    state = saved;
+    return false;
+  }
+
   // Object k to its best free place (FindSlot) when the room's groups break fewer rules there (GroupTrouble)
   // and the move is applied; else nothing changes (the state and the removals as they were).
   bool MoveIfTidier(int k, const std::string& reason) {
@@ -1379,6 +1472,10 @@ struct RoomSolver::Impl {
           changed = true;
           continue;
         }
+        if (m.role == GroupRole::kTvStand && FaceTv(m.hub, j, why)) {
+          changed = true;
+          continue;
+        }
       }
       j = state.Find(id);
       if (j < 0 || GroupProblem(j).empty() || IsProtected(state.objects[j].priority)) continue;
@@ -1416,6 +1513,112 @@ struct RoomSolver::Impl {
     }
     if (changed) Finish(false);
     return changed;
+  }
+
+  // Issue 27: what the agent, the critic or the reachability feedback removed while the room was still
+  // settling (a wardrobe with its clothes that had no free slot when the bed was being fitted, books from a
+  // shelf a neighbour crowded) put back where it fits now: each removed piece of the plan, parents before
+  // what stands on or in them, at its best free slot (full size, else its smallest), kept where it collides
+  // with nothing (the exact check has the last word), stays out of the walkways, keeps its group's rules
+  // and breaks no other group's, and adds at most kRefillSemantic to E_sem (its own relations and the zones
+  // it enters). Pillows stay out (the bed rule took them); a desk comes back with its chair or not at all.
+  // True when anything came back.
+  bool Refill() {
+    if (!options.functional_groups) return false;
+    bool changed = false;
+    for (int round = 0; round < 2; ++round)  // a parent put back in the first round brings its children in the second
+      for (const ProblemObject& original : problem.objects) {
+        if (state.Find(original.id) >= 0 || original.category == "pillow") continue;
+        const bool top = original.parent == "floor" || original.parent == "wall" || original.parent == "ceiling";
+        if (!top && state.Find(original.parent) < 0) continue;
+        if (refill_tried.count(original.id)) continue;
+        refill_tried.insert(original.id);
+        const RoomState before = state;
+        const EnergyTerms energy_before = energy;
+        const ExactMetrics metrics_before = metrics;
+        const size_t actions = summary.actions.size();
+        const std::vector<std::string> removed = summary.removed;
+        if (!PutBack(original)) continue;
+        // A desk comes back with its chair, or not at all.
+        bool whole = true;
+        for (const ProblemObject& seat : problem.objects)
+          if (whole && state.Find(seat.id) < 0 && IsDeskSeat(problem.edges, seat.id, original.id)) {
+            refill_tried.insert(seat.id);
+            whole = PutBack(seat);
+          }
+        if (whole) {
+          changed = true;
+          continue;
+        }
+        state = before;
+        energy = energy_before;
+        metrics = metrics_before;
+        summary.actions.resize(actions);
+        summary.removed = removed;
+      }
+    refill_tried.clear();
+    if (changed) {
+      best = state;
+      best_metrics = metrics;
+      best_energy = energy;
+      Finish(false);
+    }
+    return changed;
+  }
+
+  bool PutBack(const ProblemObject& original) {
+    constexpr double kRefillSemantic = 0.25;
+    const RoomState saved = state;
+    const EnergyTerms saved_energy = energy;
+    const int trouble = GroupTrouble();
+    state.objects.push_back(original);
+    state.placements.push_back({});
+    state.placements.back().surface = original.surface;  // the problem's own choices; -1: AssignSupports picks
+    state.placements.back().cavity = original.cavity;
+    state.placements.back().wall = original.wall;
+    for (const SemanticEdge& e : problem.edges) {
+      const std::string& other = e.source == original.id ? e.target : e.target == original.id ? e.source : "";
+      if (!other.empty() && state.Find(other) >= 0) state.edges.push_back(e);
+    }
+    state.Reindex();
+    AssignSupports(state);
+    const RoomState added = state;
+    const int i = static_cast<int>(state.objects.size()) - 1;
+    std::vector<double> scales{std::clamp(1.0, original.scale_min, original.scale_max)};
+    if (original.scale_min < scales.front() - 1e-9) scales.push_back(original.scale_min);
+    for (double scale : scales) {
+      state = added;
+      ObjectPlacement& pl = state.placements[i];  // its surface, cavity or wall as AssignSupports chose
+      pl.pose.scale = scale;
+      pl.pose.z = state.Hung(i) ? problem.floor_z : state.SupportHeight(i);
+      const std::optional<Slot> slot = FindSlot(i);
+      if (!slot) continue;
+      pl.surface = slot->surface;
+      pl.cavity = slot->cavity;
+      pl.wall = slot->wall;
+      pl.placed = true;
+      state.SetPose(i, slot->pose);
+      if (CostAt(i).hard > kFeasible || !GroupProblem(i).empty() || (TableSeat(i) && !SeatHolds(i)) || GroupTrouble() > trouble)
+        continue;
+      const EnergyTerms e = StateEnergy(state);
+      if (e.collision > 0.0 || e.support > 0.0 || e.semantic > saved_energy.semantic + kRefillSemantic || !ExactlyClean()) continue;
+      ActionResult r;
+      r.action.kind = ActionKind::kAddEntity;
+      r.action.id = original.id;
+      r.action.pose = slot->pose;
+      r.action.reason = "removed while the room was settling; it fits now: put back at its best free slot" +
+                        std::string(scale < 1.0 - 1e-9 ? " at its smallest scale" : "");
+      r.status = ActionStatus::kApplied;
+      r.message = "put back";
+      r.final_pose = slot->pose;
+      summary.actions.push_back(r);
+      summary.removed.erase(std::remove(summary.removed.begin(), summary.removed.end(), original.id), summary.removed.end());
+      Check();
+      return true;
+    }
+    state = saved;
+    energy = saved_energy;
+    return false;
   }
 
   // A rug of a room with a seating group lies under its coffee table, turned like the sofa (the rug is laid
@@ -1643,6 +1846,14 @@ bool RoomSolver::TidyGroups(bool moves) {
   Impl& im = *impl_;
   if (!im.initialised) return false;
   const bool changed = im.TidyGroups(moves);
+  im.summary.seconds = Since(im.start);
+  return changed;
+}
+
+bool RoomSolver::Refill() {
+  Impl& im = *impl_;
+  if (!im.initialised) return false;
+  const bool changed = im.Refill();
   im.summary.seconds = Since(im.start);
   return changed;
 }

@@ -42,6 +42,10 @@ inline FurnishedRoom FurnishFixtureRoom(const std::string& layout, const std::st
   // The critic on its own: the solver's arrangement without issue 27's group templates, the arrangements
   // these fixtures were chosen for (what the critic must mend).
   options.solve.functional_groups = false;
+  // ... and the plans they were chosen with: the paper's 22-30 objects, no dressing (issue 27 plans more).
+  options.planner.rich_min_objects = 22;
+  options.planner.rich_max_objects = 30;
+  options.planner.dress = false;
   critic::CriticOptions c;
   c.log_dir = dir / "critic";
   options.critic = critic::MakeRoomCritic(c);

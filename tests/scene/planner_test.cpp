@@ -107,12 +107,13 @@ TEST_CASE("planned graphs pass the validator for every room of the corpus over m
         REQUIRE(findings.empty());
         const int n = static_cast<int>(plan.objects.size());
         CHECK(n == plan.summary.objects);
-        // The counts: the paper's 22-30 in the five rich room types of usual size; otherwise within the
-        // range aimed at, or below it only when the room has no space (said in a note).
+        // The counts: 25-33 planned in the five rich room types of usual size (the paper's 22-30 placed,
+        // issue 27), never below the paper's 22; any room within the range aimed at, or below it only when
+        // the room has no space (said in a note).
         if (IsRichRoomType(c.category) && c.area >= 12.0 && !HasStairs(c)) {
           ++rich;
           CHECK(n >= 22);
-          CHECK(n <= 30);
+          CHECK(n <= 33);
         }
         CHECK(n <= std::max(plan.summary.target_max, 11));  // small meeting rooms keep their table and chairs
         if (n < plan.summary.target_min) {
@@ -268,7 +269,7 @@ TEST_CASE("the request's objects appear with their counts, containers, places an
     REQUIRE(desk);
     CHECK(std::count(desk->hints.begin(), desk->hints.end(), std::string(kHintNearWindow)) == 1);
     CHECK(HasEdge(plan, room + "armchair-0", SemanticRelation::kFaceTo, room + "sofa-0"));
-    CHECK(plan.objects.size() <= 30);
+    CHECK(plan.objects.size() <= 33);
   }
 }
 

@@ -3,13 +3,20 @@
 // group's template (at the table's sides, facing it) whatever the room's shape.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <tuple>
 
+#include <nlohmann/json.hpp>
+
 #include "fixtures.h"
 #include "mesh/geometry2d.h"
+#include "solver/furnish.h"
 #include "solver/group_rules.h"
 #include "solver/scene_problem.h"
 #include "solver/solve.h"
@@ -261,6 +268,94 @@ TEST_CASE("A pillow at the head of an imported bed's mattress is at the head, th
   small.hx *= 0.8;
   small.hy *= 0.8;
   CHECK(MattressBox(small, &asset, 0.8).hy == Approx(0.66));
+}
+
+TEST_CASE("The refill puts back what was removed while the room settled, with what stood on it, and never a pillow",
+          "[solver][groups]") {
+  RoomProblem room = Rectangle(5.0, 4.0);
+  room.objects.push_back(BoxObject("bed-0", 1.4, 2.0, 0.5, true));
+  room.objects.push_back(SmallObject("pillow-0", 0.5, 0.3, 0.15, "bed-0", Relation::kOnTop));
+  room.objects.push_back(BoxObject("dresser-0", 1.0, 0.5, 0.8, true));
+  room.objects.push_back(SmallObject("vase-0", 0.15, 0.15, 0.3, "dresser-0", Relation::kOnTop));
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  REQUIRE(solver.Solution().summary.metrics.Clean());
+  CHECK_FALSE(solver.Refill());  // nothing removed: nothing to put back
+  for (const char* id : {"r/dresser-0", "r/pillow-0"}) {
+    Action a;
+    a.kind = ActionKind::kRemoveEntity;
+    a.id = id;
+    a.reason = "test: removed while the room settled";
+    REQUIRE(solver.Apply(a).status == ActionStatus::kApplied);
+  }
+  solver.KeepCurrent();
+  REQUIRE(Index(solver.Solution(), "r/vase-0") < 0);  // it went with the dresser
+  CHECK(solver.Refill());
+  const RoomSolution s = solver.Solution();
+  INFO(s.summary.BriefReport());
+  CHECK(s.summary.metrics.Clean());
+  const int dresser = Index(s, "r/dresser-0"), vase = Index(s, "r/vase-0");
+  CHECK(dresser >= 0);
+  REQUIRE(vase >= 0);
+  CHECK(s.objects[vase].parent == "r/dresser-0");
+  CHECK(Index(s, "r/pillow-0") < 0);
+  CHECK(s.summary.removed == std::vector<std::string>{"r/pillow-0"});
+}
+
+TEST_CASE("A room with no floor left for a removed piece does not get it back", "[solver][groups]") {
+  // 1.7 x 2.2 m: the bed (1.4 x 2.0) leaves no 1.0 x 0.5 m spot for the dresser once it stands.
+  RoomProblem room = Rectangle(1.7, 2.2);
+  room.objects.push_back(BoxObject("bed-0", 1.4, 2.0, 0.5, true));
+  room.objects.push_back(BoxObject("dresser-0", 1.0, 0.5, 0.8, true));
+  MarkEssentials(Category::kBedroom, room);
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  REQUIRE(Index(solver.Solution(), "r/dresser-0") < 0);
+  CHECK_FALSE(solver.Refill());
+  const RoomSolution s = solver.Solution();
+  CHECK(s.summary.metrics.Clean());
+  CHECK(Index(s, "r/dresser-0") < 0);
+  CHECK(Index(s, "r/bed-0") >= 0);
+}
+
+TEST_CASE("A sofa that cannot face its TV along an angled wall is floated before the TV, facing it, its tables along",
+          "[solver][groups]") {
+  // living_angled_tv.json is villa-000015 of `villa synth --count 50 --seed 2027`: its living room's sofa
+  // was left 33-60 degrees off its TV, along the room's angled wall.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("villa_groups_tv_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  FurnishOptions options;
+  options.rooms = {"living-room_0/0"};
+  options.seed = 2027;
+  options.procedural_only = true;
+  options.pictures = false;
+  options.check_reach = false;
+  options.jobs = 1;
+  auto summary = FurnishLayoutFile(std::string(VILLA_FIXTURE_DIR) + "/layouts/living_angled_tv.json", dir, options);
+  REQUIRE(summary.ok());
+  std::ifstream in(dir / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  in.close();
+  fs::remove_all(dir);
+  nlohmann::json room;
+  for (const auto& r : report["rooms"])
+    if (r.value("room", "") == "living-room_0/0") room = r;
+  REQUIRE(room.is_object());
+  bool floated = false;
+  for (const auto& a : room["actions"])
+    floated = floated || a["reason"].get<std::string>().find("floated before the TV") != std::string::npos;
+  CHECK(floated);
+  INFO(room["functional"].dump(1));
+  REQUIRE(room["functional"]["groups"].size() >= 1);
+  const nlohmann::json& seating = room["functional"]["groups"][0];
+  CHECK(seating["kind"] == "seating");
+  CHECK(seating["ok"] == true);
+  CHECK(seating["measures"]["tv_angle_deg"].get<double>() <= 25.0);
+  CHECK(room["metrics"]["CR"] == 0.0);
+  CHECK(room["metrics"]["OBR"] == 0.0);
 }
 
 }  // namespace
