@@ -1583,16 +1583,17 @@ struct RoomSolver::Impl {
     state.Reindex();
     AssignSupports(state);
     const RoomState added = state;
-    const int i = static_cast<int>(state.objects.size()) - 1;
-    std::vector<double> scales{std::clamp(1.0, original.scale_min, original.scale_max)};
-    if (original.scale_min < scales.front() - 1e-9) scales.push_back(original.scale_min);
+    const double full = std::clamp(1.0, original.scale_min, original.scale_max);
+    std::vector<double> scales{full};  // full size, else the smallest
+    if (original.scale_min < full - 1e-9) scales.push_back(original.scale_min);
     for (double scale : scales) {
       state = added;
-      ObjectPlacement& pl = state.placements[i];  // its surface, cavity or wall as AssignSupports chose
-      pl.pose.scale = scale;
-      pl.pose.z = state.Hung(i) ? problem.floor_z : state.SupportHeight(i);
+      const int i = static_cast<int>(state.objects.size()) - 1;
+      state.placements[i].pose.scale = scale;  // its surface, cavity or wall as AssignSupports chose
+      state.placements[i].pose.z = state.Hung(i) ? problem.floor_z : state.SupportHeight(i);
       const std::optional<Slot> slot = FindSlot(i);
       if (!slot) continue;
+      ObjectPlacement& pl = state.placements[i];
       pl.surface = slot->surface;
       pl.cavity = slot->cavity;
       pl.wall = slot->wall;

@@ -116,9 +116,9 @@ class RoomSolver {
   bool TidyGroups(bool moves);
   // Issue 27, after the tidy stage: the plan's pieces removed while the room was settling (a wardrobe and
   // its clothes that had no free slot while the bed was fitted) put back where they fit now: parents before
-  // their children, at the best free slot (full size, else the smallest), kept only where the exact check
-  // stays clean, no walkway is entered, every group keeps its rules and E_sem rises by at most 0.25. The room
-  // ends on the result. True when anything came back.
+  // their children, at the best free slot (full size, else the smallest), kept only where the exact check stays clean, no walkway is entered,
+  // every group keeps its rules and E_sem rises by at most 0.25; a desk with its chair or not at all, never a
+  // pillow. The room ends on the result. True when anything came back.
   bool Refill();
   // Ends the session without more agent actions: the best state seen is kept, checked again (with the
   // clearance figure) and the outcome and its reason set, as at the end of RunAgent.
