@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <set>
 #include <thread>
 
@@ -263,54 +264,50 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
     RoomSolver& solver = *by_room.at(room)->solver;
     if (!solver.Solution().summary.metrics.Clean()) solver.RunAgent();
   }
-  // Issue 27: the feedback's walkways and moves may have pushed groups apart (a TV stand slid off the sofa's
-  // axis): every room's tidy stage once more, kept when no room or zone a person reached is lost by it (one
-  // more reachability check); else the rooms as they were, and in the rooms the feedback changed only the
-  // tidy stage's removals.
+  // Issue 27: two steps on every room after the feedback, each kept where one more reachability check loses
+  // no room or zone a person reached and leaves no new zone unreachable; when the villa's step loses one,
+  // room by room (a room whose step loses one goes back, and `fallback` runs there).
   ReachReport last = loop->last;
-  std::map<std::string, std::shared_ptr<const RoomSolver::Snapshot>> undo;
-  bool tidied = false;
-  for (auto& [room, solver] : solvers) {
-    undo[room] = solver->Save();
-    tidied = solver->TidyGroups(/*moves=*/true) || tidied;
-  }
-  if (tidied) {
-    auto again = ReachOf(*input, solvers, options.reach.reach);
-    if (again.ok() && again->rooms_reachable >= last.rooms_reachable && again->zones_reachable >= last.zones_reachable) {
-      last = std::move(*again);
-    } else {
-      for (auto& [room, solver] : solvers) solver->Restore(*undo.at(room));
-      for (const std::string& room : changed) by_room.at(room)->solver->TidyGroups(/*moves=*/false);
-    }
-  }
-  // Issue 27: what the feedback removed (and what the rooms lost while settling) put back where it fits
-  // now, kept when no room or zone a person reached is lost and no zone becomes unreachable; when the whole
-  // villa's refill loses one, room by room.
   auto worse = [&](const ReachReport& r) {
     return r.rooms_reachable < last.rooms_reachable || r.zones_reachable < last.zones_reachable ||
            r.zones - r.zones_reachable > last.zones - last.zones_reachable;
   };
-  std::vector<std::string> refilled;
-  for (auto& [room, solver] : solvers) {
-    undo[room] = solver->Save();
-    if (solver->Refill()) refilled.push_back(room);
-  }
-  if (!refilled.empty()) {
+  auto stepwise = [&](const std::function<bool(RoomSolver&)>& step, const std::function<void(const std::string&, RoomSolver&)>& fallback) {
+    std::map<std::string, std::shared_ptr<const RoomSolver::Snapshot>> undo;
+    std::vector<std::string> touched;
+    for (auto& [room, solver] : solvers) {
+      undo[room] = solver->Save();
+      if (step(*solver)) touched.push_back(room);
+    }
+    if (touched.empty()) return;
     auto again = ReachOf(*input, solvers, options.reach.reach);
     if (again.ok() && !worse(*again)) {
       last = std::move(*again);
-    } else {
-      for (const std::string& room : refilled) solvers.at(room)->Restore(*undo.at(room));
-      for (const std::string& room : refilled) {
-        RoomSolver& solver = *solvers.at(room);
-        auto before = solver.Save();
-        if (!solver.Refill()) continue;
-        auto one = ReachOf(*input, solvers, options.reach.reach);
-        if (one.ok() && !worse(*one)) last = std::move(*one);
-        else solver.Restore(*before);
-      }
+      return;
     }
-  }
+    for (const std::string& room : touched) solvers.at(room)->Restore(*undo.at(room));
+    for (const std::string& room : touched) {
+      RoomSolver& solver = *solvers.at(room);
+      auto before = solver.Save();
+      if (step(solver)) {
+        auto one = ReachOf(*input, solvers, options.reach.reach);
+        if (one.ok() && !worse(*one)) {
+          last = std::move(*one);
+          continue;
+        }
+        solver.Restore(*before);
+      }
+      if (fallback) fallback(room, solver);
+    }
+  };
+  // The feedback's walkways and moves may have pushed groups apart (a TV stand slid off the sofa's axis):
+  // the tidy stage once more; where it cannot be kept, in the rooms the feedback changed only its removals.
+  stepwise([](RoomSolver& solver) { return solver.TidyGroups(/*moves=*/true); },
+           [&](const std::string& room, RoomSolver& solver) {
+             if (changed.count(room)) solver.TidyGroups(/*moves=*/false);
+           });
+  // What the feedback removed (and what the rooms lost while settling) put back where it fits now.
+  stepwise([](RoomSolver& solver) { return solver.Refill(); }, nullptr);
   for (auto& [room, solver] : solvers) TakeSolution(*by_room.at(room));
 
   f.outcome = loop->reason;
