@@ -111,8 +111,9 @@ class RoomSolver {
   // its table (0.75 m behind it) gets room: what stands behind it goes (nothing protected), else with
   // `moves` it takes a free seat where it can, else it is left out unless protected; every other member out
   // of its group's rules (a TV stand off the sofa's axis) takes its best free place by its hub where it
-  // holds (with `moves`; the sofa with its group for its TV stand), else it is left out unless protected.
-  // The room ends on the result while it stays clean. True when anything changed.
+  // holds (with `moves`; the sofa with its group for its TV stand), else it is left out unless protected;
+  // with `moves`, what stands tall between a sofa and its TV goes out of the view. The room ends on the
+  // result while it stays clean. True when anything changed.
   bool TidyGroups(bool moves);
   // Issue 27, after the tidy stage: the plan's pieces removed while the room was settling (a wardrobe and
   // its clothes that had no free slot while the bed was fitted) put back where they fit now: parents before

@@ -358,5 +358,63 @@ TEST_CASE("A sofa that cannot face its TV along an angled wall is floated before
   CHECK(room["metrics"]["OBR"] == 0.0);
 }
 
+TEST_CASE("Nothing tall stands between the sofa and its TV: a plant in the view moves out of it", "[solver][groups]") {
+  RoomProblem room = Rectangle(6.0, 5.0);
+  room.objects.push_back(BoxObject("sofa-0", 2.0, 0.9, 0.85));
+  room.objects.push_back(BoxObject("tv-stand-0", 1.4, 0.45, 0.5));
+  room.objects.push_back(BoxObject("plant-0", 0.4, 0.4, 1.2));
+  room.objects.push_back(BoxObject("stool-0", 0.4, 0.4, 0.45));  // low: it leaves the view free
+  SemanticEdge front = DefaultEdge("r/tv-stand-0", SemanticRelation::kFrontOf, "r/sofa-0");
+  front.min_gap = 2.0;
+  front.max_gap = 3.0;
+  room.edges.push_back(front);
+  room.edges.push_back(DefaultEdge("r/tv-stand-0", SemanticRelation::kFaceTo, "r/sofa-0"));
+  room.edges.push_back(DefaultEdge("r/sofa-0", SemanticRelation::kFaceTo, "r/tv-stand-0"));
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  // The sofa at (3, 1) facing +y, the stand at (3, 4) facing it; the plant and the stool between them.
+  auto put = [&](const char* id, double x, double y, double yaw) {
+    const RoomSolution s = solver.Solution();
+    const int k = Index(s, id);
+    REQUIRE(k >= 0);
+    Action a;
+    a.kind = ActionKind::kUpdatePose;
+    a.id = id;
+    a.pose = s.placements[k].pose;
+    a.pose->x = x;
+    a.pose->y = y;
+    a.pose->yaw = yaw;
+    a.reason = "test: placed";
+    REQUIRE(solver.Apply(a).status == ActionStatus::kApplied);
+  };
+  put("r/sofa-0", 3.0, 1.0, std::numbers::pi);
+  put("r/tv-stand-0", 3.0, 4.2, 0.0);
+  put("r/plant-0", 3.0, 2.6, 0.0);
+  put("r/stool-0", 3.6, 3.3, 0.0);
+  solver.KeepCurrent();
+  {
+    const RoomSolution s = solver.Solution();
+    const OrientedBox sofa = Plan(s, Index(s, "r/sofa-0")), stand = Plan(s, Index(s, "r/tv-stand-0"));
+    REQUIRE(sofa.Front().y > 0.99);  // the test's precondition: they face each other across the plant
+    REQUIRE(stand.Front().y < -0.99);
+    REQUIRE(s.summary.metrics.Clean());
+  }
+  solver.TidyGroups(true);
+  const RoomSolution s = solver.Solution();
+  INFO(s.summary.BriefReport());
+  CHECK(s.summary.metrics.Clean());
+  const int plant = Index(s, "r/plant-0");
+  if (plant >= 0) {
+    const OrientedBox p = Plan(s, plant);
+    INFO("plant at " << p.c.x << ", " << p.c.y);
+    CHECK((std::abs(p.c.x - 3.0) > 0.4 + p.hx - 0.02 || p.c.y < 1.45 || p.c.y > 3.975));
+  }
+  const int stool = Index(s, "r/stool-0");
+  REQUIRE(stool >= 0);
+  CHECK(Plan(s, stool).c.x == Approx(3.6).margin(0.01));  // low things stay where they are
+  CHECK(Plan(s, stool).c.y == Approx(3.3).margin(0.01));
+}
+
 }  // namespace
 }  // namespace villa::solver
