@@ -34,6 +34,22 @@ int Index(const RoomSolution& s, const std::string& id) {
 
 OrientedBox Plan(const RoomSolution& s, int k) { return StandingBox(s.objects[k], s.placements[k].pose); }
 
+// Object `id` moved by an update_pose action (the test's arrangement; the solver must take it).
+void MoveTo(RoomSolver& solver, const std::string& id, double x, double y, double yaw) {
+  const RoomSolution s = solver.Solution();
+  const int k = Index(s, id);
+  REQUIRE(k >= 0);
+  Action a;
+  a.kind = ActionKind::kUpdatePose;
+  a.id = id;
+  a.pose = s.placements[k].pose;
+  a.pose->x = x;
+  a.pose->y = y;
+  a.pose->yaw = yaw;
+  a.reason = "test: placed";
+  REQUIRE(solver.Apply(a).status != ActionStatus::kRefused);
+}
+
 // `n` chairs of `w` x `d` x `h` seated at `table` (face_to and next_to within 0.3 m, as the planner relates them).
 void AddTableSeats(RoomProblem& room, const std::string& table, int n, double w, double d, double h) {
   for (int k = 0; k < n; ++k) {
@@ -206,20 +222,8 @@ TEST_CASE("The tidy stage turns furniture left a few degrees off the walls squar
   REQUIRE(solver.Initialise().ok());
   solver.RunAgent();
   // Moved into the open and turned 8 degrees off the walls (as a polish pulled by a relation leaves them).
-  for (const auto& [id, x, y] : {std::tuple{"r/sofa-0", 4.0, 4.0}, std::tuple{"r/cabinet-0", 1.5, 1.5}}) {
-    const RoomSolution s = solver.Solution();
-    const int k = Index(s, id);
-    REQUIRE(k >= 0);
-    Action a;
-    a.kind = ActionKind::kUpdatePose;
-    a.id = id;
-    a.pose = s.placements[k].pose;
-    a.pose->x = x;
-    a.pose->y = y;
-    a.pose->yaw = 8.0 * std::numbers::pi / 180.0;
-    a.reason = "test: turned off the walls";
-    REQUIRE(solver.Apply(a).status != ActionStatus::kRefused);
-  }
+  for (const auto& [id, x, y] : {std::tuple{"r/sofa-0", 4.0, 4.0}, std::tuple{"r/cabinet-0", 1.5, 1.5}})
+    MoveTo(solver, id, x, y, 8.0 * std::numbers::pi / 180.0);
   solver.KeepCurrent();
   {
     const RoomSolution turned = solver.Solution();
@@ -374,24 +378,10 @@ TEST_CASE("Nothing tall stands between the sofa and its TV: a plant in the view 
   REQUIRE(solver.Initialise().ok());
   solver.RunAgent();
   // The sofa at (3, 1) facing +y, the stand at (3, 4) facing it; the plant and the stool between them.
-  auto put = [&](const char* id, double x, double y, double yaw) {
-    const RoomSolution s = solver.Solution();
-    const int k = Index(s, id);
-    REQUIRE(k >= 0);
-    Action a;
-    a.kind = ActionKind::kUpdatePose;
-    a.id = id;
-    a.pose = s.placements[k].pose;
-    a.pose->x = x;
-    a.pose->y = y;
-    a.pose->yaw = yaw;
-    a.reason = "test: placed";
-    REQUIRE(solver.Apply(a).status == ActionStatus::kApplied);
-  };
-  put("r/sofa-0", 3.0, 1.0, std::numbers::pi);
-  put("r/tv-stand-0", 3.0, 4.2, 0.0);
-  put("r/plant-0", 3.0, 2.6, 0.0);
-  put("r/stool-0", 3.6, 3.3, 0.0);
+  MoveTo(solver, "r/sofa-0", 3.0, 1.0, std::numbers::pi);
+  MoveTo(solver, "r/tv-stand-0", 3.0, 4.2, 0.0);
+  MoveTo(solver, "r/plant-0", 3.0, 2.6, 0.0);
+  MoveTo(solver, "r/stool-0", 3.6, 3.3, 0.0);
   solver.KeepCurrent();
   {
     const RoomSolution s = solver.Solution();
