@@ -10,6 +10,7 @@
 #include <set>
 
 #include "mesh/geometry2d.h"
+#include "scene/scene.h"
 #include "solver/group_rules.h"
 #include "solver/layer.h"
 #include "solver/place.h"
@@ -96,7 +97,6 @@ struct RoomSolver::Impl {
   std::deque<Action> queued;           // removals still to make for a protected object (MakeWayAction)
   bool strict_groups = false;          // GroupFitsAt asks each member to keep its group's rules (TidyGroups)
   std::set<std::string> semantic_tried;
-  std::set<std::string> refill_tried;  // Refill: pieces tried in this call
   Clock::time_point start;
   bool initialised = false;
 
@@ -1387,7 +1387,7 @@ struct RoomSolver::Impl {
           // covers says.)
           const OrientedBox box = state.WorldBox(k);
           if (CostAt(k).hard > kHairline || ClippedArea(problem.free_floor, box.Footprint()) < 4.0 * box.hx * box.hy - 1e-4) continue;
-          if (!TvProblem(box, state.WorldBox(state.Find(stand_id)).c).empty()) continue;
+          if (!GroupProblem(state.Find(stand_id)).empty()) continue;  // the TV stand's rule, as the group measures it
           bool ok = true;
           std::vector<std::string> left_out;
           for (int j : Reseat(members)) {
@@ -1598,13 +1598,12 @@ struct RoomSolver::Impl {
   bool Refill() {
     if (!options.functional_groups) return false;
     bool changed = false;
+    std::set<std::string> tried;
     for (int round = 0; round < 2; ++round)  // a parent put back in the first round brings its children in the second
       for (const ProblemObject& original : problem.objects) {
-        if (state.Find(original.id) >= 0 || original.category == "pillow") continue;
-        const bool top = original.parent == "floor" || original.parent == "wall" || original.parent == "ceiling";
-        if (!top && state.Find(original.parent) < 0) continue;
-        if (refill_tried.count(original.id)) continue;
-        refill_tried.insert(original.id);
+        if (state.Find(original.id) >= 0 || original.category == "pillow" || tried.count(original.id)) continue;
+        if (!scene::IsRootParent(original.parent) && state.Find(original.parent) < 0) continue;
+        tried.insert(original.id);
         const RoomState before = state;
         const EnergyTerms energy_before = energy;
         const ExactMetrics metrics_before = metrics;
@@ -1615,7 +1614,7 @@ struct RoomSolver::Impl {
         bool whole = true;
         for (const ProblemObject& seat : problem.objects)
           if (whole && state.Find(seat.id) < 0 && IsDeskSeat(problem.edges, seat.id, original.id)) {
-            refill_tried.insert(seat.id);
+            tried.insert(seat.id);
             whole = PutBack(seat);
           }
         if (whole) {
@@ -1628,7 +1627,6 @@ struct RoomSolver::Impl {
         summary.actions.resize(actions);
         summary.removed = removed;
       }
-    refill_tried.clear();
     if (changed) {
       best = state;
       best_metrics = metrics;
