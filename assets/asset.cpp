@@ -188,6 +188,15 @@ std::optional<unsigned> ParseAffordances(const std::vector<std::string>& names) 
   return out;
 }
 
+bool HangsFromRail(std::string_view category) { return category == "hanging-clothes"; }
+
+bool CavitySuits(const Cavity& c, std::string_view category) { return !HangsFromRail(category) || c.rail.has_value(); }
+
+double CavityClearHeight(const Cavity& c, std::string_view category) {
+  if (HangsFromRail(category) && c.rail) return *c.rail + kHookRise - c.min.z;
+  return c.max.z - c.min.z;
+}
+
 bool AssetRecord::ClosedCellFloor(int surface) const {
   for (const Cavity& c : cavities)
     if (c.floor_surface == surface && c.open == "closed") return true;
@@ -244,6 +253,7 @@ nlohmann::ordered_json AssetToJson(const AssetRecord& a) {
     o["max"] = Vec(c.max);
     o["open"] = c.open;
     o["floor_surface"] = c.floor_surface;
+    if (c.rail) o["rail"] = Round4(*c.rail);
     cavities.push_back(o);
   }
   j["cavities"] = cavities;
@@ -353,6 +363,13 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
         if (const json* m = c.Need("max", &error); m && c.Numbers(*m, "max", 3, hi, &error)) cavity.max = {hi[0], hi[1], hi[2]};
         c.String("open", &cavity.open, &error);
         c.Integer("floor_surface", &cavity.floor_surface, &error);
+        if (c.Find("rail")) {
+          double rail = 0.0;
+          if (c.Number("rail", &rail, &error) && error.empty() && !(rail > cavity.max.z && rail <= cavity.max.z + 0.1))
+            error = c.Fail("rail", "must lie just above the cavity's top (" + std::to_string(cavity.max.z) +
+                                       " to 0.1 m more), got " + std::to_string(rail));
+          cavity.rail = rail;
+        }
         if (error.empty() && !(cavity.min.x < cavity.max.x && cavity.min.y < cavity.max.y && cavity.min.z < cavity.max.z))
           error = c.Fail("", "min must be below max on every axis");
         if (error.empty() && cavity.open != "closed" && cavity.open != "-y" && cavity.open != "+y" &&

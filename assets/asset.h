@@ -50,7 +50,20 @@ struct Cavity {
   Vec3 max;
   std::string open = "-y";   // the open side ("-y" = the front) or "closed" (behind a door)
   int floor_surface = -1;    // index into support_surfaces of the cavity's floor, -1 when none
+  // The top of a hanging rail across the cavity along x (asset frame z), when it has one; the box ends
+  // under the rail. Hangers hook over it (issue 28: clothes hang, they do not stand on a hem).
+  std::optional<double> rail;
 };
+
+// Garments on hangers: they hang from a cavity's rail, never stand on its floor.
+bool HangsFromRail(std::string_view category);
+// A hanger's hook lies on the rail: the garment's top is this far (unscaled m) above the rail's top.
+inline constexpr double kHookRise = 0.004;
+// Whether things of `category` may go into cavity `c` (hanging ones need a rail).
+bool CavitySuits(const Cavity& c, std::string_view category);
+// The height (unscaled, asset units) a thing of `category` may have there: the box's height, or for a
+// hanging one the drop from its hook to the cavity's floor.
+double CavityClearHeight(const Cavity& c, std::string_view category);
 
 struct InteractionZoneSpec {
   std::string side = "front";  // "front", "left", "right", "back", "sides" (both long sides, beds)

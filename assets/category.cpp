@@ -84,7 +84,7 @@ std::vector<CategoryInfo> MakeTable() {
       {"whiteboard", {"white board", "screen", "projection screen", "blackboard"}, P::kWall, {1.2, 0.03, 0.8}, {2.4, 0.06, 1.3}, kCon, false, false, std::nullopt, false, "frame"},
       {"clock", {"wall clock", "cuckoo clock"}, P::kWall, {0.25, 0.04, 0.25}, {0.45, 0.1, 0.6}, kCon, false, false, std::nullopt, false, "clock"},
       // ---- soft furnishings and decor on the floor
-      {"rug", {"carpet", "mat", "area rug"}, P::kFloor, {1.2, 0.8, 0.01}, {3.0, 2.2, 0.02}, kCon, false, false, std::nullopt, false, "rug"},
+      {"rug", {"carpet", "mat", "area rug"}, P::kFloor, {1.2, 0.8, kRugThickness}, {3.0, 2.2, kRugThickness}, kCon, false, false, std::nullopt, false, "rug"},
       {"plant", {"big plant", "indoor plant", "potted plant", "yucca", "ficus", "bamboo", "spathiphyllum", "decorative plant", "orchids"}, P::kFloor, {0.3, 0.3, 0.6}, {0.7, 0.7, 1.8}, kCon, false, false, std::nullopt, false, "plant"},
       {"flower-box", {"planter", "plant box", "window box", "flower pot"}, P::kFloor, {0.5, 0.2, 0.2}, {1.0, 0.35, 0.5}, kConPro, true, false, std::nullopt, true, "planter"},
       {"clothes-horse", {"drying rack", "airer"}, P::kFloor, {0.6, 0.5, 0.9}, {1.4, 0.7, 1.3}, kCon, false, false, std::nullopt, true, "clothes-horse"},

@@ -28,6 +28,10 @@ struct CategoryInfo {
   std::string_view generator;               // procedural generator that makes it ("" when none)
 };
 
+// A rug is a decal on the floor (issue 28): this thin, furniture stands on the floor through it (a solid
+// rug of 1-2 cm under half a sofa rocks it in a physics engine, and a real rug's pile gives under a leg).
+inline constexpr double kRugThickness = 0.002;
+
 // Every category, in a fixed order (the order of the table in category.cpp).
 const std::vector<CategoryInfo>& Categories();
 // By exact name; nullptr when unknown.

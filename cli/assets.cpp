@@ -184,7 +184,8 @@ void RunShow(const ShowCommand& command) {
   for (std::size_t i = 0; i < r->cavities.size(); ++i) {
     const Cavity& c = r->cavities[i];
     table.AddRow({"cavity " + std::to_string(i), Sides(c.max - c.min) + ", at z " + FormatFixed(c.min.z, 3) + ", open " +
-                                                     c.open + ", on surface " + std::to_string(c.floor_surface)});
+                                                     c.open + ", on surface " + std::to_string(c.floor_surface) +
+                                                     (c.rail ? ", hanging rail at z " + FormatFixed(*c.rail, 3) : "")});
   }
   if (r->interaction_zone) table.AddRow({"interaction zone", r->interaction_zone->side + " " + FormatFixed(r->interaction_zone->depth, 2) + " m"});
   table.AddRow({"mesh", r->mesh.file + ", " + std::to_string(r->mesh.triangles) + " triangles, " +

@@ -278,6 +278,8 @@ Result<RoomAssets> AssetAcquirer::Acquire(const RoomContext& room, std::vector<S
           if (!CanHold(*r.asset, needs[i])) { ++refused; continue; }
           if (!containers.empty() && !FitsAny(r.asset->size, containers)) { ++refused; continue; }
           const bool offered = r.asset->id.rfind("proc:", 0) == 0;
+          // A rug is a decal: a library mat of a centimetre or two is a solid furniture would stand in.
+          if (!offered && o.category == "rug" && r.asset->size.z > 1.5 * kRugThickness) { ++refused; continue; }
           chosen = offered ? Find(r.asset->id) : library_->Find(r.asset->id);
           if (!chosen) continue;
           choice.rule = offered ? AcquireRule::kRanked : AcquireRule::kLibrary;

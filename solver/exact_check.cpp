@@ -167,9 +167,38 @@ struct ExactChecker::Impl {
     moved.computeAABB();
     return again.isCollision();
   }
+
+  // Whether a child enters its parent (issue 28: a book may touch its shelf, not stand into the shelf
+  // above): an FCL collision that survives lifting the child `dz` m off its support (a hanger's hook rests
+  // on its rail the same way).
+  bool Enters(fcl::CollisionObjectd& parent, fcl::CollisionObjectd& child, double dz) const {
+    fcl::CollisionRequestd request;
+    fcl::CollisionResultd result;
+    fcl::collide(&parent, &child, request, result);
+    if (!result.isCollision()) return false;
+    const fcl::Transform3d original = child.getTransform();
+    fcl::Transform3d shifted = original;
+    shifted.translation().z() += dz;
+    child.setTransform(shifted);
+    child.computeAABB();
+    fcl::CollisionResultd again;
+    fcl::collide(&parent, &child, request, again);
+    child.setTransform(original);
+    child.computeAABB();
+    return again.isCollision();
+  }
 };
 
 namespace {
+
+// Whether object i hangs from its parent cavity's rail (a garment on a hanger).
+bool HangsOnRail(const RoomState& st, int i) {
+  const int p = st.parent[i];
+  if (p < 0 || st.objects[i].relation != Relation::kInside || !HangsFromRail(st.objects[i].category)) return false;
+  const std::vector<Cavity>& cavities = st.objects[p].asset.cavities;
+  const int k = st.placements[i].cavity;
+  return k >= 0 && k < static_cast<int>(cavities.size()) && cavities[k].rail.has_value();
+}
 
 bool SamePose(const Pose& a, const Pose& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z && a.yaw == b.yaw && a.scale == b.scale;
@@ -260,7 +289,18 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
   for (int i = 0; i < n; ++i) {
     const Pose& pi = st.placements[i].pose;
     for (int j = i + 1; j < n; ++j) {
-      if (st.ParentChild(i, j) || st.IsFloorCovering(i) || st.IsFloorCovering(j)) continue;
+      if (st.IsFloorCovering(i) || st.IsFloorCovering(j)) continue;
+      if (st.ParentChild(i, j)) {
+        if (!AabbOverlap(boxes[i], boxes[j])) continue;
+        const int p = st.parent[j] == i ? i : j, c = p == i ? j : i;
+        const bool hit = decide(st.objects[p].id, st.placements[p].pose, st.objects[c].id, st.placements[c].pose,
+                                [&] { return im.Enters(object(p), object(c), opt.nudge); });
+        if (hit) {
+          m.per_object[i].colliding = m.per_object[j].colliding = true;
+          m.pairs.push_back({st.objects[i].id, st.objects[j].id, false});
+        }
+        continue;
+      }
       if (!AabbOverlap(boxes[i], boxes[j], opt.clearance_probe)) continue;
       if (!AabbOverlap(boxes[i], boxes[j])) {
         if (!measure_clearance) continue;
@@ -335,15 +375,19 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
       const Cavity& cav = st.objects[p].asset.cavities[std::max(0, st.placements[i].cavity)];
       const double t = opt.containment_tolerance;
       const OrientedBox box = st.WorldBox(i);
-      bool within = box.z0 - f.z >= cav.min.z * f.scale - t && box.z1 - f.z <= cav.max.z * f.scale + t;
+      // A hanging garment's hook reaches over the rail, above the box.
+      const double top = HangsOnRail(st, i) ? *cav.rail + 2.0 * kHookRise : cav.max.z;
+      bool within = box.z0 - f.z >= cav.min.z * f.scale - t && box.z1 - f.z <= top * f.scale + t;
       for (Point corner : box.Footprint()) {
         const Point q = f.ToLocal(corner);
         within = within && q.x >= cav.min.x * f.scale - t && q.x <= cav.max.x * f.scale + t &&
                  q.y >= cav.min.y * f.scale - t && q.y <= cav.max.y * f.scale + t;
       }
+      // A hanger's hook rests on the rail as a book on its shelf: lifted, it is free.
       const bool touches = AabbOverlap(boxes[p], boxes[i]) &&
-                           decide(st.objects[p].id, st.placements[p].pose, st.objects[i].id, pose,
-                                  [&] { return im.Collide(object(p), object(i)); });
+                           (HangsOnRail(st, i) ? im.Enters(object(p), object(i), opt.nudge)
+                                               : decide(st.objects[p].id, st.placements[p].pose, st.objects[i].id, pose,
+                                                        [&] { return im.Collide(object(p), object(i)); }));
       c.contained = within && !touches && c.support_gap <= opt.tau;
       m.contained += c.contained;
     }

@@ -1,9 +1,11 @@
 #pragma once
 // The exact check after every solve (SCENE.md "Metrics"): mesh-level tests on the placed assets, never
 // the optimiser's box proxies. FCL stays inside exact_check.cpp.
-//   CR  share of objects in collision: the meshes of i and j (not parent and child; rugs excepted) collide
-//       (FCL, BVH of OBBRSS) and still collide after j moves `nudge` m away from the mean contact point
-//       (SceneEval's CollisionMetric); the building's parts count as j (the object moves);
+//   CR  share of objects in collision: the meshes of i and j (rugs excepted) collide (FCL, BVH of OBBRSS)
+//       and still collide after j moves `nudge` m away from the mean contact point (SceneEval's
+//       CollisionMetric); the building's parts count as j (the object moves); a parent and its child
+//       collide when they still do after the child is lifted `nudge` m off its support (a hanger's hook
+//       off its rail): a book may touch its shelf, not enter the shelf above (issue 28);
 //   FR  share of V_con objects whose lowest vertex is more than `tau` from their support height;
 //   OBR share of objects with less than `in_bound_share` of their sampled surface points projecting (down
 //       along -z) into their support region: free floor for floor and ceiling objects, S_parent for ontop,

@@ -235,6 +235,17 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     b.p[3] = WrapAngle(b.p[3] - layer.frame.yaw);
     b.motion = motion;
     b.yaw_class = std::round(b.p[3] / kHalfPi) * kHalfPi;
+    // A garment on a hanger: its hook on the rail (which runs along x over the cavity's middle), turned
+    // across it, sliding along it.
+    const Cavity* c = kind == Layer::Kind::kCavity ? &pa.cavities[group] : nullptr;
+    if (motion != Motion::kFixed && c && c->rail && HangsFromRail(state.objects[i].category)) {
+      b.hangs = true;
+      b.motion = Motion::kAlongWall;
+      b.wall_dir = {1.0, 0.0};
+      b.p[1] = 0.5 * (layer.cavity.min.y + layer.cavity.max.y);
+      b.p[2] = *c->rail * sp - (b.height - kHookRise) * b.s[0];
+      b.p[3] = b.yaw_class = b.p[3] < 0.0 ? -kHalfPi : kHalfPi;
+    }
     return b;
   };
   std::set<int> moving(movable.begin(), movable.end());
@@ -377,7 +388,9 @@ std::vector<Term> MakeTerms(Layer& layer, const RoomState& state, const SolveOpt
     if (body.motion == Motion::kFree) add(YawPriorResidual::Create(body.yaw_class, 0.2), {b}, false, kPoseOnly);
     if (layer.kind == Layer::Kind::kCavity) {
       const Box3& c = layer.cavity;
-      add(ContainmentResidual::Create(shape, c.min.x, c.min.y, c.max.x, c.max.y, c.max.z, o.child_gap,
+      // A hanging garment's hook reaches over the rail, above the box.
+      const double top = body.hangs ? c.max.z + 0.1 : c.max.z;
+      add(ContainmentResidual::Create(shape, c.min.x, c.min.y, c.max.x, c.max.y, top, o.child_gap,
                                       o.weight_containment),
           {b}, true);
       continue;

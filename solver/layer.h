@@ -38,6 +38,7 @@ struct Body {
   bool active = true;          // false: not placed yet (ignored by every term)
   bool covering = false;       // a floor covering (rug): no pair terms
   bool scalable = false;       // its scale range is not just 1
+  bool hangs = false;          // hangs from its cavity's rail: slides along it, turned across it (kAlongWall)
   double hx = 0.0, hy = 0.0, height = 0.0;  // asset half width, half depth, height (unscaled, m)
   // Top of the body with what stands on its surfaces (a TV on its stand), unscaled m: the box other
   // layers' terms see, so a stand whose TV would reach into a window zone keeps away from the window.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -673,6 +674,12 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   const double hx = b.hx * b.s[0], hy = b.hy * b.s[0];
   if (layer.kind == Layer::Kind::kCavity) {
     const Box3& c = layer.cavity;
+    if (b.hangs) {  // along the rail, turned across it (ChildLayer set y, z and yaw)
+      const double ex = Extent(hx, hy, b.p[3], {1, 0});
+      for (double x = c.min.x + ex + 0.006; x <= c.max.x - ex - 0.006 + 1e-9; x += 0.005)
+        out.push_back({x, b.p[1], b.p[2], b.p[3], -1, 0.05 * (x - c.min.x)});
+      return out;
+    }
     // Rows from the left: books stand side by side, spines to the open front.
     for (double yaw : {0.0, kHalfPi}) {
       const double ex = Extent(hx, hy, yaw, {1, 0}), ey = Extent(hx, hy, yaw, {0, 1});
@@ -1040,6 +1047,26 @@ void AssignSupports(RoomState& state) {
     for (const Cavity& c : a.cavities) cavity_room[p].push_back((c.max.x - c.min.x) * s);
   }
   auto fits = [](double height, double clear) { return clear <= 0.0 || height <= clear + 1e-9; };
+  // Among the places `ok` allows, the one with the most room where the child fits at its scale, else where
+  // it fits shrunk within its range (issue 28: a book taller than the shelf above stood into it); the
+  // shrunk child's scale is set. -1 when none.
+  auto choose = [&](size_t i, const std::vector<double>& clear, const std::vector<double>& room,
+                    const std::function<bool(int)>& ok) {
+    const ProblemObject& o = state.objects[i];
+    double& scale = state.placements[i].pose.scale;
+    for (const double s : {scale, o.scale_min}) {
+      int best = -1;
+      for (size_t k = 0; k < clear.size(); ++k) {
+        if (!ok(static_cast<int>(k)) || !fits(o.asset.size.z * s, clear[k])) continue;
+        if (best < 0 || room[k] > room[best] + 1e-12) best = static_cast<int>(k);
+      }
+      if (best < 0) continue;
+      if (clear[best] > 0.0 && !fits(o.asset.size.z * scale, clear[best]))
+        scale = std::max(o.scale_min, clear[best] / o.asset.size.z);
+      return best;
+    }
+    return -1;
+  };
   for (size_t i = 0; i < n; ++i) {
     const int p = state.parent[i];
     if (p < 0) continue;
@@ -1047,26 +1074,20 @@ void AssignSupports(RoomState& state) {
     ObjectPlacement& pl = state.placements[i];
     const AssetRecord& pa = state.objects[p].asset;
     const double sp = state.placements[p].pose.scale;
-    const double h = o.asset.size.z * o.scale_min;
     if (o.relation == Relation::kOnTop) {
       if (pl.surface < 0) {
-        int best = -1;
-        for (size_t k = 0; k < pa.support_surfaces.size(); ++k) {
-          if (!fits(h, pa.support_surfaces[k].clear_height * sp)) continue;
-          if (pa.ClosedCellFloor(static_cast<int>(k))) continue;  // behind a door: not a top
-          if (best < 0 || surface_room[p][k] > surface_room[p][best] + 1e-12) best = static_cast<int>(k);
-        }
+        std::vector<double> clear;
+        for (const SupportSurface& sf : pa.support_surfaces) clear.push_back(sf.clear_height * sp);
+        // The floor of a closed cell (behind a door or drawer front) is for what goes inside, not a top.
+        const int best = choose(i, clear, surface_room[p], [&](int k) { return !pa.ClosedCellFloor(k); });
         pl.surface = best >= 0 ? best : 0;
       }
       surface_room[p][pl.surface] -= o.asset.size.x * o.asset.size.y;
     } else if (o.relation == Relation::kInside) {
       if (pl.cavity < 0) {
-        int best = -1;
-        for (size_t k = 0; k < pa.cavities.size(); ++k) {
-          const Cavity& c = pa.cavities[k];
-          if (!fits(h, (c.max.z - c.min.z) * sp)) continue;
-          if (best < 0 || cavity_room[p][k] > cavity_room[p][best] + 1e-12) best = static_cast<int>(k);
-        }
+        std::vector<double> clear;
+        for (const Cavity& c : pa.cavities) clear.push_back(CavityClearHeight(c, o.category) * sp);
+        const int best = choose(i, clear, cavity_room[p], [&](int k) { return CavitySuits(pa.cavities[k], o.category); });
         pl.cavity = best >= 0 ? best : 0;
       }
       cavity_room[p][pl.cavity] -= std::min(o.asset.size.x, o.asset.size.y) + 0.01;

@@ -478,13 +478,20 @@ struct RoomSolver::Impl {
       const int group = inside ? state.placements[i].cavity : state.placements[i].surface;
       // A desk's chair goes with its desk (it was protected for the desk's sake; alone it would push the
       // room's other pieces out for nothing).
-      std::vector<std::string> seats;
+      std::vector<std::string> seats;  // the partners removed with it
       if (options.functional_groups)
         for (size_t k = 0; k < state.objects.size(); ++k) {
           const Membership m = GroupMembership(state, static_cast<int>(k));
           if (m.role == GroupRole::kDeskSeat && m.hub == i && state.objects[k].priority != Priority::kEssential)
             seats.push_back(state.objects[k].id);
         }
+      // And a desk goes with its own chair when the chair finds no place (a desk without its chair is a
+      // broken group: the optional pair is dropped whole), unless the desk is protected (essential, named).
+      if (options.functional_groups) {
+        const Membership m = GroupMembership(state, i);
+        if (m.role == GroupRole::kDeskSeat && m.hub >= 0 && !IsProtected(state.objects[m.hub].priority))
+          seats.push_back(state.objects[m.hub].id);
+      }
       r.removed = state.Remove(i);
       for (const std::string& seat : seats)
         if (const int k = state.Find(seat); k >= 0)

@@ -85,8 +85,11 @@ double RoomState::SupportHeight(int i) const {
   const Pose& pp = placements[q].pose;
   const AssetRecord& pa = objects[q].asset;
   if (objects[i].relation == Relation::kInside) {
-    const int k = std::max(0, placements[i].cavity);
-    return pp.z + pp.scale * pa.cavities[k].min.z;
+    const Cavity& c = pa.cavities[std::max(0, placements[i].cavity)];
+    // A hanging garment: its hook on the rail.
+    if (c.rail && HangsFromRail(objects[i].category))
+      return pp.z + pp.scale * *c.rail - (objects[i].asset.size.z - kHookRise) * placements[i].pose.scale;
+    return pp.z + pp.scale * c.min.z;
   }
   const int k = std::max(0, placements[i].surface);
   return pp.z + pp.scale * pa.support_surfaces[k].z;

@@ -43,7 +43,8 @@ struct RoomState {
 
   OrientedBox WorldBox(int i) const;
   Frame FrameOf(int i) const;
-  // World height the object rests on (floor, its surface, its cavity's floor); only for V_con objects.
+  // World height of the object's bottom where it rests (floor, its surface, its cavity's floor; a hanging
+  // garment's bottom with its hook on the cavity's rail); only for V_con objects.
   double SupportHeight(int i) const;
   // World polygon its footprint must project into: the free floor, the parent's surface, the cavity's floor.
   Ring SupportRegion(int i) const;

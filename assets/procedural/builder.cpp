@@ -267,9 +267,10 @@ int MeshBuilder::Surface(double z, const Ring& polygon, double clear) {
   return static_cast<int>(surfaces_.size()) - 1;
 }
 
-void MeshBuilder::AddCavity(Vec3 lo, Vec3 hi, std::string open, int floor_surface) {
+void MeshBuilder::AddCavity(Vec3 lo, Vec3 hi, std::string open, int floor_surface, double rail) {
   assert(floor_surface < 0 || std::abs(surfaces_[floor_surface].z - Snap(lo.z)) < 1e-9);
-  cavities_.push_back({SnapV(lo), SnapV(hi), std::move(open), floor_surface});
+  cavities_.push_back({SnapV(lo), SnapV(hi), std::move(open), floor_surface, std::nullopt});
+  if (rail > 0.0) cavities_.back().rail = Snap(rail);
 }
 
 Ring Rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }

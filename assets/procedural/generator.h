@@ -97,7 +97,8 @@ class MeshBuilder {
   // A support surface: polygon (CCW) at height z, `clear` m free above it. Returns its index.
   int Surface(double z, const Ring& polygon, double clear);
   // A cavity box; `floor_surface` its bottom's surface index (its z must be lo.z).
-  void AddCavity(Vec3 lo, Vec3 hi, std::string open, int floor_surface);
+  // `rail`: the top of a hanging rail just above the box (0: none).
+  void AddCavity(Vec3 lo, Vec3 hi, std::string open, int floor_surface, double rail = 0.0);
 
   const std::vector<SupportSurface>& surfaces() const { return surfaces_; }
   const std::vector<Cavity>& cavities() const { return cavities_; }

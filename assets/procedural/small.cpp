@@ -276,7 +276,8 @@ GeneratorDef FoldedClothes() {
 
 GeneratorDef HangingClothes() {
   return {.name = "hanging-clothes",
-          .description = "garments on hangers, shoulders along x, one behind the other along y; hook tops at z = h",
+          .description = "garments on hangers, shoulders along x, one behind the other along y; each hanger's hook "
+                         "curls over a rail along y at x = 0 whose top is kHookRise below h",
           .categories = {"hanging-clothes"},
           .extra = {CountParam("count", "garments", 1, 6)},
           .resolve = [](ParamValues& p, const CategoryInfo&,
@@ -285,12 +286,19 @@ GeneratorDef HangingClothes() {
               [](Gen& g) {
                 const int n = g.params.Int("count");
                 const int wood = g.out.Part(g.rng.Pick(g.palette.wood));
-                const double hook = 0.06, bar = 0.02, top = g.h - hook - bar;
+                const int wire = g.out.Part(g.rng.Pick(g.palette.metal));
+                // The hook: a bar across the rail (its underside on the rail's top), a shank down the +x side
+                // to the hanger and a short lip on the -x side, both clear of a rail up to 13 mm thick even at
+                // 0.8 scale; the hanger's bar below the rail.
+                const double hook = 0.06, bar = 0.02, top = g.h - hook - bar, in = 0.017, wire_w = 0.004;
                 const double gt = n == 1 ? g.d : std::min(0.05, 0.8 * g.d / n);
                 const std::vector<double> length = Fractions(g.rng, n, 0.6);
                 for (int k = 0; k < n; ++k) {
                   const double y = n == 1 ? 0.0 : -g.d / 2 + gt / 2 + k * (g.d - gt) / (n - 1);
-                  g.out.Cylinder(wood, 0, y, 0.003, 0.003, g.h - hook, g.h, 4);
+                  const double ya = y - wire_w / 2, yb = y + wire_w / 2;
+                  g.out.Box(wire, {-in - wire_w, ya, g.h - kHookRise}, {in + wire_w, yb, g.h});
+                  g.out.Box(wire, {in, ya, g.h - hook}, {in + wire_w, yb, g.h - kHookRise});
+                  g.out.Box(wire, {-in - wire_w, ya, g.h - 0.02}, {-in, yb, g.h - kHookRise});
                   g.out.Box(wood, {-g.w / 2, y - 0.005, top}, {g.w / 2, y + 0.005, g.h - hook});
                   const double zb = top - top * length[k], sw = 0.45 * g.w, bw = g.rng.Range(0.35, 0.5) * g.w;
                   const double y0 = y - gt / 2, y1 = y + gt / 2;

@@ -95,14 +95,16 @@ void BuildCarcass(Gen& g, const Carcass& c) {
       const Cell& cell = col.cells[r];
       const double ztop = r + 1 == rows ? zi1 : z + inner_height * cell.weight / height_weights;
       if (r + 1 < rows) g.out.Box(wood, {cx0, yc, ztop}, {cx1, yb, ztop + t});
-      double cavity_top = ztop;
+      double cavity_top = ztop, rail_top = 0.0;
       if (cell.rail) {
         const double rz = ztop - 0.06, rr = 0.012;
         g.out.Tube(handle, {cx0, (yc + yb) / 2, rz}, {cx1, (yc + yb) / 2, rz}, rr);
         cavity_top = rz - rr;
+        rail_top = rz + rr;
       }
       const int floor = g.out.Surface(z, Rect(cx0, yc, cx1, yb), cavity_top - z);
-      g.out.AddCavity({cx0, yc, z}, {cx1, yb, cavity_top}, cell.front == Front::kOpen ? "-y" : "closed", floor);
+      g.out.AddCavity({cx0, yc, z}, {cx1, yb, cavity_top}, cell.front == Front::kOpen ? "-y" : "closed", floor,
+                      rail_top);
 
       // Fronts cover the opening and half the panels around it, clear of the carcass's outer edges.
       const double fx0 = std::max(c.x0 + kGap, cx0 - t / 2 + kGap), fx1 = std::min(c.x1 - kGap, cx1 + t / 2 - kGap);

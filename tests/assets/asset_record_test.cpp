@@ -66,6 +66,27 @@ TEST_CASE("Asset record errors name the place, the JSON path and the bad value",
   j = nlohmann::json::parse(kCouch);
   j["cavities"][0]["floor_surface"] = 3;
   CHECK(AssetFromJson(j, "f").error() == "f: cavities[0].floor_surface: names no support surface: 3");
+  j = nlohmann::json::parse(kCouch);
+  j["cavities"][0]["rail"] = 0.3;  // inside the box, not above it
+  CHECK(AssetFromJson(j, "f").error() ==
+        "f: cavities[0].rail: must lie just above the cavity's top (0.400000 to 0.1 m more), got 0.300000");
+}
+
+TEST_CASE("A cavity's hanging rail round-trips, and only hanging things ask for one", "[assets]") {
+  auto j = nlohmann::json::parse(kCouch);
+  j["cavities"][0]["rail"] = 0.424;
+  auto a = AssetFromJson(j, "f");
+  REQUIRE(a.ok());
+  REQUIRE(a->cavities[0].rail.has_value());
+  CHECK(*a->cavities[0].rail == 0.424);
+  CHECK(AssetToJson(*a)["cavities"][0]["rail"] == 0.424);
+  CHECK(!AssetToJson(*AssetFromJson(nlohmann::json::parse(kCouch), "f")).at("cavities")[0].contains("rail"));
+  CHECK(CavitySuits(a->cavities[0], "hanging-clothes"));
+  CHECK(CavityClearHeight(a->cavities[0], "hanging-clothes") == Approx(0.424 + kHookRise - 0.1));
+  CHECK(CavityClearHeight(a->cavities[0], "folded-clothes") == Approx(0.3));
+  a->cavities[0].rail.reset();
+  CHECK(!CavitySuits(a->cavities[0], "hanging-clothes"));
+  CHECK(CavitySuits(a->cavities[0], "books"));
 }
 
 TEST_CASE("A library file with a repeated id names both lines", "[assets]") {
