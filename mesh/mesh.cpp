@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <tuple>
 
 namespace villa {
@@ -74,6 +75,21 @@ SolidCheck CheckSolid(const TriangleMesh& mesh, double weld) {
   check.closed = check.boundary_edges == 0 && check.non_manifold_edges == 0 && !mesh.triangles.empty();
   check.volume = mesh.SignedVolume();
   return check;
+}
+
+std::vector<int> PieceRoots(const TriangleMesh& mesh) {
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = find(static_cast<int>(v));
+  return parent;
 }
 
 }  // namespace villa

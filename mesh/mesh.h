@@ -47,6 +47,9 @@ struct TriangleMesh {
   double SurfaceArea() const;   // m2
 };
 
+// For every vertex, the root vertex of its piece (triangles joined through shared vertex indices).
+std::vector<int> PieceRoots(const TriangleMesh& mesh);
+
 // The result of checking a mesh for being a closed, consistently oriented solid.
 struct SolidCheck {
   bool closed = false;         // every edge used by exactly two triangles, once in each direction

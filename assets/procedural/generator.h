@@ -168,9 +168,6 @@ std::vector<GeneratorDef> SeatingGenerators();  // seating.cpp
 std::vector<GeneratorDef> FixtureGenerators();  // fixtures.cpp: appliances, bathroom, lamps, screens
 std::vector<GeneratorDef> SmallGenerators();    // small.cpp: books, dishes, clothes, decor
 
-// For every vertex, the root vertex of its piece (triangles joined through shared vertex indices).
-std::vector<int> PieceRoots(const TriangleMesh& mesh);
-
 // Sets `key` to f() when the id left it out.
 void SetIfMissing(ParamValues& p, const std::string& key, const std::function<double()>& f);
 

@@ -235,20 +235,6 @@ std::string CanonicalId(const Entry& entry, const ParamValues& values) {
 
 }  // namespace
 
-std::vector<int> PieceRoots(const TriangleMesh& mesh) {
-  std::vector<int> parent(mesh.vertices.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const auto& t : mesh.triangles) {
-    parent[find(t[1])] = find(t[0]);
-    parent[find(t[2])] = find(t[0]);
-  }
-  for (size_t v = 0; v < parent.size(); ++v) parent[v] = find(static_cast<int>(v));
-  return parent;
-}
 
 namespace {
 
@@ -370,7 +356,7 @@ Result<ProceduralAsset> MakeProceduralAsset(std::string_view id) {
 }
 
 std::vector<TriangleMesh> MeshPieces(const TriangleMesh& mesh) {
-  const std::vector<int> root = procedural::PieceRoots(mesh);
+  const std::vector<int> root = PieceRoots(mesh);
   std::map<int, TriangleMesh> pieces;                // by root, so pieces come in a fixed order
   std::vector<int> local(mesh.vertices.size(), -1);  // a vertex's index in its piece
   for (const auto& t : mesh.triangles) {

@@ -23,7 +23,7 @@ AssetRecord Rec(std::string id, std::string name, std::string category, Vec3 siz
   r.placement = placement;
   for (int i = 0; i < surfaces; ++i)
     r.support_surfaces.push_back({0.3 * (i + 1), {{-0.1, -0.1}, {0.1, -0.1}, {0.1, 0.1}, {-0.1, 0.1}}, 0.25, "mesh"});
-  for (int i = 0; i < cavities; ++i) r.cavities.push_back({{-0.1, -0.1, 0.3 * (i + 1)}, {0.1, 0.1, 0.3 * (i + 1) + 0.2}, "-y", i});
+  for (int i = 0; i < cavities; ++i) r.cavities.push_back({{-0.1, -0.1, 0.3 * (i + 1)}, {0.1, 0.1, 0.3 * (i + 1) + 0.2}, "-y", i, std::nullopt});
   return r;
 }
 

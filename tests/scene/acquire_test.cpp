@@ -29,7 +29,7 @@ AssetRecord Record(const std::string& key, const std::string& category, Vec3 siz
   for (int k = 0; k < cavities; ++k) {
     const double z0 = 0.05 + k * (cavity_h + 0.02);
     a.support_surfaces.push_back({z0, {{-hx + 0.02, -hy}, {hx - 0.02, -hy}, {hx - 0.02, hy}, {-hx + 0.02, hy}}, cavity_h, "mesh"});
-    a.cavities.push_back({{-hx + 0.02, -hy, z0}, {hx - 0.02, hy, z0 + cavity_h}, "-y", static_cast<int>(a.support_surfaces.size()) - 1});
+    a.cavities.push_back({{-hx + 0.02, -hy, z0}, {hx - 0.02, hy, z0 + cavity_h}, "-y", static_cast<int>(a.support_surfaces.size()) - 1, std::nullopt});
   }
   if (!a.support_surfaces.empty()) a.affordances |= kProvider;
   return a;

@@ -59,8 +59,8 @@ AssetRecord Bookcase() {
   a.category = "bookcase";
   a.size = {1.0, 0.35, 1.8};
   a.support_surfaces.push_back({1.8, {{-0.5, -0.17}, {0.5, -0.17}, {0.5, 0.17}, {-0.5, 0.17}}, 0.5, "procedural"});
-  a.cavities.push_back({{-0.48, -0.17, 0.02}, {0.48, 0.17, 0.4}, "-y", -1});
-  a.cavities.push_back({{-0.48, -0.17, 0.42}, {0.48, 0.17, 0.8}, "-y", -1});
+  a.cavities.push_back({{-0.48, -0.17, 0.02}, {0.48, 0.17, 0.4}, "-y", -1, std::nullopt});
+  a.cavities.push_back({{-0.48, -0.17, 0.42}, {0.48, 0.17, 0.8}, "-y", -1, std::nullopt});
   return a;
 }
 

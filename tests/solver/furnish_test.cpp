@@ -224,7 +224,7 @@ TEST_CASE("A reader with only furnished.glb finds every object where scene.json 
       po.asset.id = o.asset;
       po.asset.size = {2 * std::max(-box.min.x, box.max.x), 2 * std::max(-box.min.y, box.max.y), box.max.z};
       po.asset.support_surfaces.push_back({box.max.z, {{box.min.x, box.min.y}, {box.max.x, box.min.y}, {box.max.x, box.max.y}, {box.min.x, box.max.y}}, 1.0, "mesh"});
-      po.asset.cavities.push_back({box.min, box.max, "-y", 0});
+      po.asset.cavities.push_back({box.min, box.max, "-y", 0, std::nullopt});
       po.parent = n.metadata.at("parent");
       po.relation = *solver::ParseRelation(n.metadata.at("relation"));
       po.scale_min = 0.8;

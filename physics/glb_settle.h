@@ -1,0 +1,39 @@
+#pragma once
+// A furnished .glb dropped into Bullet as an outside reader would (issue 28): object nodes are those whose
+// extras name a `room` (SCENE.md "The furnished glTF"); every other node with a mesh is the building,
+// static. Objects hung on a wall (`on_wall`), from the ceiling (`hanging`) or on a rail (hanging clothes)
+// are welded; rugs (`rug`, or floor things at most 3 mm high) are decals and left out. The rest fall for
+// `seconds` and are judged by the strict and loose rules of physics/settle.h, per room type.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "physics/settle.h"
+#include "util/result.h"
+
+namespace villa::physics {
+
+struct GlbObjectMotion {
+  std::string id, room, category;
+  std::string room_type;  // the room's category ("bedroom"), from its name
+  BodyMotion motion;
+};
+
+struct StabilityCount {
+  int free = 0, strict = 0, loose = 0;
+};
+
+struct GlbSettleSummary {
+  std::vector<GlbObjectMotion> objects;  // every simulated object (free and welded), in the file's order
+  std::map<std::string, StabilityCount> by_room_type;
+  StabilityCount all;
+  int decals = 0;  // rugs left out
+  int starts_inside = 0;  // objects starting more than 2 mm inside another or the building
+  int parts = 0, static_triangles = 0;
+  double seconds = 0.0;
+};
+
+Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options = {});
+
+}  // namespace villa::physics

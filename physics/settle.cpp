@@ -1,0 +1,236 @@
+#include "physics/settle.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include <btBulletDynamicsCommon.h>
+#include <LinearMath/btConvexHullComputer.h>
+
+namespace villa::physics {
+namespace {
+
+btVector3 Bt(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// A piece's hull: its volume and centroid (0 volume when flat or degenerate).
+struct Hull {
+  std::vector<btVector3> points;
+  double volume = 0.0;
+  btVector3 centroid{0, 0, 0};
+};
+
+Hull HullOf(const std::vector<btVector3>& points) {
+  Hull h;
+  btConvexHullComputer hc;
+  hc.compute(&points[0].x(), sizeof(btVector3), static_cast<int>(points.size()), 0.0, 0.0);
+  for (int v = 0; v < hc.vertices.size(); ++v) h.points.push_back(hc.vertices[v]);
+  if (h.points.size() < 4) return h;
+  const btVector3 o = h.points[0];
+  btVector3 weighted(0, 0, 0);
+  for (int f = 0; f < hc.faces.size(); ++f) {
+    const btConvexHullComputer::Edge* first = &hc.edges[hc.faces[f]];
+    const int a = first->getSourceVertex();
+    for (const btConvexHullComputer::Edge* e = first->getNextEdgeOfFace(); e->getTargetVertex() != a;
+         e = e->getNextEdgeOfFace()) {
+      const btVector3 &pa = hc.vertices[a], &pb = hc.vertices[e->getSourceVertex()], &pc = hc.vertices[e->getTargetVertex()];
+      const double v = (pa - o).dot((pb - o).cross(pc - o)) / 6.0;
+      h.volume += v;
+      weighted += v * (o + pa + pb + pc) / 4.0;
+    }
+  }
+  if (h.volume > 1e-12) h.centroid = weighted / h.volume;
+  else h.volume = 0.0;
+  return h;
+}
+
+}  // namespace
+
+std::string SettleOptions::Check() const {
+  if (!(seconds > 0.0 && seconds <= 60.0)) return "seconds must be in (0, 60], got " + std::to_string(seconds);
+  if (!(step > 0.0 && step <= 0.05)) return "step must be in (0, 0.05], got " + std::to_string(step);
+  if (!(density > 0.0 && density <= 20000.0)) return "density must be in (0, 20000], got " + std::to_string(density);
+  if (!(friction > 0.0 && friction <= 2.0)) return "friction must be in (0, 2], got " + std::to_string(friction);
+  if (!(margin >= 0.0 && margin <= 0.01)) return "margin must be in [0, 0.01], got " + std::to_string(margin);
+  if (!(strict_move > 0 && strict_turn > 0 && loose_move >= strict_move && loose_turn >= strict_turn))
+    return "the loose limits must be at least the strict ones, all > 0";
+  return "";
+}
+
+std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh) {
+  const std::vector<int> root = PieceRoots(mesh);
+  std::vector<int> slot(mesh.vertices.size(), -1);
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& t : mesh.triangles)
+    for (int v : t) used[v] = true;
+  std::vector<std::vector<Vec3>> out;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!used[v]) continue;
+    const int r = root[v];
+    if (slot[r] < 0) {
+      slot[r] = static_cast<int>(out.size());
+      out.emplace_back();
+    }
+    out[slot[r]].push_back(mesh.vertices[v]);
+  }
+  std::erase_if(out, [](const std::vector<Vec3>& piece) { return piece.size() < 4; });
+  return out;
+}
+
+Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std::vector<SettleBody>& bodies,
+                            const SettleOptions& options) {
+  if (std::string bad = options.Check(); !bad.empty()) return Error{"settle: " + bad};
+  const auto start = std::chrono::steady_clock::now();
+  SettleResult result;
+  result.bodies.resize(bodies.size());
+
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher(&configuration);
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+  world.setGravity({0, 0, -9.81});
+
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<btRigidBody>> rigid;
+  std::vector<std::unique_ptr<btDefaultMotionState>> states;
+  auto add_body = [&](btCollisionShape* shape, double mass, const btVector3& inertia, const btTransform& at) {
+    states.push_back(std::make_unique<btDefaultMotionState>(at));
+    btRigidBody::btRigidBodyConstructionInfo info(mass, states.back().get(), shape, inertia);
+    info.m_friction = options.friction;
+    info.m_restitution = 0.0;
+    rigid.push_back(std::make_unique<btRigidBody>(info));
+    world.addRigidBody(rigid.back().get());
+    return rigid.back().get();
+  };
+
+  // The building: one static triangle mesh.
+  auto triangles = std::make_unique<btTriangleMesh>(true, false);
+  for (const TriangleMesh& m : statics)
+    for (const auto& t : m.triangles) {
+      triangles->addTriangle(Bt(m.vertices[t[0]]), Bt(m.vertices[t[1]]), Bt(m.vertices[t[2]]));
+      ++result.static_triangles;
+    }
+  std::unique_ptr<btTriangleMesh> keep_triangles;
+  if (result.static_triangles > 0) {
+    auto shape = std::make_unique<btBvhTriangleMeshShape>(triangles.get(), true);
+    shape->setMargin(options.margin);
+    add_body(shape.get(), 0.0, {0, 0, 0}, btTransform::getIdentity());
+    shapes.push_back(std::move(shape));
+    keep_triangles = std::move(triangles);
+  }
+
+  struct Tracked {
+    btRigidBody* body = nullptr;
+    btTransform start;
+    std::vector<btVector3> corners;
+  };
+  std::vector<Tracked> tracked(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const SettleBody& b = bodies[i];
+    BodyMotion& motion = result.bodies[i];
+    motion.welded = b.welded;
+    if (b.mesh.vertices.empty()) continue;
+    const Box3 box = b.mesh.Bounds();
+    const btVector3 origin = 0.5 * (Bt(box.min) + Bt(box.max));
+    std::vector<Hull> hulls;
+    for (const std::vector<Vec3>& piece : ConnectedPieces(b.mesh)) {
+      std::vector<btVector3> local;
+      for (const Vec3& v : piece) local.push_back(Bt(v) - origin);
+      Hull h = HullOf(local);
+      if (h.volume > 0.0) hulls.push_back(std::move(h));
+    }
+    if (hulls.empty()) {  // only flat pieces (a picture's quad): the hull of the whole
+      std::vector<btVector3> local;
+      for (const Vec3& v : b.mesh.vertices) local.push_back(Bt(v) - origin);
+      Hull h = HullOf(local);
+      if (h.points.size() < 4) continue;
+      h.volume = std::max(h.volume, 1e-6);
+      hulls.push_back(std::move(h));
+    }
+    auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(hulls.size()));
+    std::vector<btScalar> masses;
+    std::vector<std::unique_ptr<btConvexHullShape>> parts;
+    for (const Hull& h : hulls) {
+      auto part = std::make_unique<btConvexHullShape>(&h.points[0].x(), static_cast<int>(h.points.size()), sizeof(btVector3));
+      part->setMargin(options.margin);
+      compound->addChildShape(btTransform::getIdentity(), part.get());
+      masses.push_back(h.volume * options.density);
+      parts.push_back(std::move(part));
+    }
+    motion.parts = static_cast<int>(hulls.size());
+    result.parts += motion.parts;
+    double mass = 0.0;
+    for (btScalar m : masses) mass += m;
+    btTransform at(btQuaternion::getIdentity(), origin);
+    btRigidBody* body = nullptr;
+    if (b.welded) {
+      body = add_body(compound.get(), 0.0, {0, 0, 0}, at);
+    } else {
+      // The body's frame at its centre of mass, along its principal axes.
+      btTransform principal;
+      btVector3 inertia;
+      compound->calculatePrincipalAxisTransform(masses.data(), principal, inertia);
+      auto centred = std::make_unique<btCompoundShape>(true, static_cast<int>(hulls.size()));
+      for (int k = 0; k < compound->getNumChildShapes(); ++k)
+        centred->addChildShape(principal.inverse() * compound->getChildTransform(k), compound->getChildShape(k));
+      body = add_body(centred.get(), mass, inertia, at * principal);
+      shapes.push_back(std::move(centred));
+      ++result.free;
+    }
+    shapes.push_back(std::move(compound));
+    for (auto& p : parts) shapes.push_back(std::move(p));
+    Tracked& t = tracked[i];
+    t.body = body;
+    t.start = body->getWorldTransform();
+    for (int k = 0; k < 8; ++k)
+      t.corners.push_back({k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z});
+  }
+
+  // Where bodies start inside one another: the deepest contact of each, before anything moves.
+  std::map<const btCollisionObject*, int> index_of;
+  for (size_t i = 0; i < tracked.size(); ++i)
+    if (tracked[i].body) index_of[tracked[i].body] = static_cast<int>(i);
+  world.performDiscreteCollisionDetection();
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    const auto a = index_of.find(manifold->getBody0()), b = index_of.find(manifold->getBody1());
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      const double depth = -manifold->getContactPoint(c).getDistance();
+      for (const auto& [self, other] : {std::pair{a, b}, std::pair{b, a}}) {
+        if (self == index_of.end()) continue;
+        BodyMotion& motion = result.bodies[self->second];
+        if (depth <= motion.start_depth) continue;
+        motion.start_depth = depth;
+        motion.start_against = other == index_of.end() ? "building" : bodies[other->second].id;
+      }
+    }
+  }
+  for (const BodyMotion& motion : result.bodies) result.starts_inside += motion.start_depth > 0.002;
+
+  const int steps = static_cast<int>(std::ceil(options.seconds / options.step - 1e-9));
+  for (int s = 0; s < steps; ++s) world.stepSimulation(options.step, 0, options.step);
+
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    BodyMotion& motion = result.bodies[i];
+    const Tracked& t = tracked[i];
+    if (t.body && !motion.welded) {
+      const btTransform change = t.body->getWorldTransform() * t.start.inverse();
+      for (const btVector3& c : t.corners) motion.moved = std::max<double>(motion.moved, (change * c - c).length());
+      const btVector3 centre = 0.5 * (t.corners.front() + t.corners.back()), d = change * centre - centre;
+      motion.shift = {d.x(), d.y(), d.z()};
+      motion.turned = change.getRotation().getAngle();
+      if (motion.turned > M_PI) motion.turned = 2.0 * M_PI - motion.turned;
+      motion.strict = motion.moved <= options.strict_move && motion.turned <= options.strict_turn;
+      motion.loose = motion.moved <= options.loose_move && motion.turned <= options.loose_turn;
+      result.strict += motion.strict;
+      result.loose += motion.loose;
+    }
+  }
+  for (auto& b : rigid) world.removeRigidBody(b.get());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace villa::physics

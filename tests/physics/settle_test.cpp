@@ -1,0 +1,127 @@
+// Bullet settles (physics/settle.h): what falls is reported and what rests stays, welded things hold,
+// bodies that start inside one another are named with how deep, and `villa physics` reads a .glb.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "physics/settle.h"
+#include "villa_cli.h"
+
+namespace villa::physics {
+namespace {
+
+// A closed box (12 triangles, outward) appended to `mesh` as its own piece.
+void AddBox(TriangleMesh& mesh, Vec3 lo, Vec3 hi) {
+  const int base = static_cast<int>(mesh.vertices.size());
+  for (int k = 0; k < 8; ++k) mesh.vertices.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+  const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                            {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  for (const auto& f : faces) mesh.AddTriangle(base + f[0], base + f[1], base + f[2]);
+}
+TriangleMesh Box(Vec3 lo, Vec3 hi) {
+  TriangleMesh m;
+  AddBox(m, lo, hi);
+  return m;
+}
+SettleBody Body(const std::string& id, TriangleMesh mesh, bool welded = false) { return {id, std::move(mesh), welded}; }
+
+const std::vector<TriangleMesh> kFloor = {Box({-3, -3, -0.2}, {3, 3, 0})};
+
+TEST_CASE("A cup floating above a table falls and is reported, the table and a cup resting on it stay", "[physics]") {
+  TriangleMesh table;
+  AddBox(table, {-0.4, -0.4, 0.71}, {0.4, 0.4, 0.75});  // top
+  for (double x : {-0.35, 0.35})
+    for (double y : {-0.35, 0.35}) AddBox(table, {x - 0.03, y - 0.03, 0}, {x + 0.03, y + 0.03, 0.71});
+  const std::vector<SettleBody> bodies = {Body("table", table), Body("cup", Box({-0.2, -0.04, 0.75}, {-0.12, 0.04, 0.85})),
+                                          Body("floating", Box({0.1, -0.04, 0.80}, {0.18, 0.04, 0.90}))};
+  auto settled = Settle(kFloor, bodies);
+  REQUIRE(settled.ok());
+  const SettleResult& r = *settled;
+  CHECK(r.free == 3);
+  CHECK(r.bodies[0].parts == 5);
+  CHECK(r.bodies[0].strict);
+  CHECK(r.bodies[1].strict);
+  CHECK(r.bodies[1].moved < 0.005);
+  CHECK_FALSE(r.bodies[2].strict);
+  CHECK(r.bodies[2].loose);
+  CHECK(r.bodies[2].shift.z == Approx(-0.05).margin(0.005));
+  CHECK(r.strict == 2);
+  CHECK(r.starts_inside == 0);
+}
+
+TEST_CASE("A welded picture stays on its wall, the same picture unwelded falls to the floor", "[physics]") {
+  const TriangleMesh picture = Box({-0.3, 0.97, 1.3}, {0.3, 1.0, 1.7});
+  for (const bool welded : {true, false}) {
+    auto settled = Settle(kFloor, {Body("picture", picture, welded)});
+    REQUIRE(settled.ok());
+    const BodyMotion& m = settled->bodies[0];
+    CHECK(m.welded == welded);
+    CHECK(settled->free == (welded ? 0 : 1));
+    if (welded) CHECK(m.moved == 0.0);
+    else CHECK(m.moved > 1.0);
+  }
+}
+
+TEST_CASE("A book taller than its shelf starts inside the board above, named with how deep", "[physics]") {
+  TriangleMesh shelf;
+  AddBox(shelf, {-0.4, -0.15, 0.0}, {0.4, 0.15, 0.02});   // bottom board
+  AddBox(shelf, {-0.4, -0.15, 0.24}, {0.4, 0.15, 0.26});  // the board above: 0.22 m clear
+  AddBox(shelf, {-0.42, -0.15, 0.0}, {-0.4, 0.15, 0.26});
+  AddBox(shelf, {0.4, -0.15, 0.0}, {0.42, 0.15, 0.26});
+  for (const double h : {0.20, 0.25}) {
+    auto settled = Settle(kFloor, {Body("shelf", shelf), Body("book", Box({-0.1, -0.1, 0.02}, {0.0, 0.1, 0.02 + h}))}, {.seconds = 0.1});
+    REQUIRE(settled.ok());
+    const BodyMotion& book = settled->bodies[1];
+    if (h < 0.22) {
+      CHECK(book.start_depth < 0.002);
+      CHECK(settled->starts_inside == 0);
+    } else {
+      CHECK(book.start_depth == Approx(0.03).margin(0.004));
+      CHECK(book.start_against == "shelf");
+      CHECK(settled->starts_inside == 2);  // the book and the shelf
+    }
+  }
+}
+
+TEST_CASE("A mesh's convex parts are its connected pieces", "[physics]") {
+  TriangleMesh m = Box({0, 0, 0}, {1, 1, 1});
+  AddBox(m, {2, 0, 0}, {3, 1, 1});
+  const auto pieces = ConnectedPieces(m);
+  REQUIRE(pieces.size() == 2);
+  CHECK(pieces[0].size() == 8);
+  CHECK(pieces[1][0].x == 2.0);
+  SettleOptions bad;
+  bad.seconds = 0.0;
+  CHECK(Settle({}, {}, bad).error() == "settle: seconds must be in (0, 60], got 0.000000");
+}
+
+TEST_CASE("villa physics names a missing file and exits 2", "[physics][cli]") {
+  const testing::CliRun missing = testing::RunVilla("physics /nonexistent/x.glb");
+  CHECK(missing.status == 2);
+  CHECK(missing.out.find("/nonexistent/x.glb: no such file") != std::string::npos);
+}
+
+TEST_CASE("villa physics settles a furnished room's .glb: everything stays within the loose rule", "[physics][cli]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("villa_physics_" + std::to_string(::getpid()));
+  const testing::CliRun furnished =
+      testing::RunVilla("furnish " + std::string(VILLA_FIXTURE_DIR) + "/layouts/living_angled_tv.json -o " + dir.string() +
+                        " --room living-room_0/0 --seed 2027 --no-reach --critic none --force");
+  REQUIRE(furnished.status == 0);
+  const testing::CliRun run = testing::RunVilla("physics " + (dir / "furnished.glb").string() + " --json");
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  const auto j = nlohmann::json::parse(run.out.substr(run.out.find('{')));
+  CHECK(j["format"] == "villa-physics/1");
+  CHECK(j["all"]["free"].get<int>() >= 15);
+  CHECK(j["all"]["loose_share"] == 1.0);
+  CHECK(j["all"]["strict_share"].get<double>() >= 0.9);
+  CHECK(j["by_room_type"].contains("living-room"));
+  CHECK(j["decals"].get<int>() >= 1);  // the living room's rug
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace villa::physics
