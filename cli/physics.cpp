@@ -20,6 +20,7 @@ struct PhysicsCommand {
   std::string glb;
   physics::SettleOptions options;
   int movers = 10;
+  std::vector<std::string> only;
   bool json = false;
 };
 
@@ -32,7 +33,7 @@ void Run(const PhysicsCommand& command) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(command.glb, ec)) throw UsageError("physics: " + command.glb + ": no such file");
   if (std::string bad = command.options.Check(); !bad.empty()) throw UsageError("physics: " + bad);
-  auto settled = physics::SettleGlb(command.glb, command.options);
+  auto settled = physics::SettleGlb(command.glb, command.options, command.only);
   if (!settled.ok()) {
     std::cerr << "villa physics: " << settled.error() << "\n";
     SetExitCode(kExitFailure);
@@ -55,7 +56,8 @@ void Run(const PhysicsCommand& command) {
     nlohmann::ordered_json moved = nlohmann::ordered_json::array();
     for (auto* o : movers)
       moved.push_back({{"id", o->id}, {"category", o->category}, {"moved_m", o->motion.moved}, {"turned_rad", o->motion.turned},
-                       {"shift_m", {o->motion.shift.x, o->motion.shift.y, o->motion.shift.z}}});
+                       {"shift_m", {o->motion.shift.x, o->motion.shift.y, o->motion.shift.z}},
+                       {"start_depth_m", o->motion.start_depth}, {"start_against", o->motion.start_against}});
     nlohmann::ordered_json out{{"format", "villa-physics/1"},     {"glb", command.glb},
                                {"seconds_simulated", command.options.seconds}, {"all", CountJson(s.all)},
                                {"by_room_type", by_type},        {"movers", moved},
@@ -101,6 +103,7 @@ Registration registration{86, [](CLI::App& app) {
   sub->add_option("--density", command->options.density, "kg/m3 of every convex part (default 600)")->check(CLI::Range(1.0, 20000.0));
   sub->add_option("--friction", command->options.friction, "friction coefficient (default 0.6)")->check(CLI::Range(0.01, 2.0));
   sub->add_option("--movers", command->movers, "list this many of the objects that moved most (default 10)")->check(CLI::Range(0, 100000));
+  sub->add_option("--only", command->only, "only this object is free, the rest welded where they stand (repeatable)");
   sub->add_flag("--json", command->json, "print a machine-readable report instead");
   sub->callback([command] { Run(*command); });
 }};

@@ -1,5 +1,6 @@
 #include "physics/glb_settle.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "building/export.h"
@@ -39,7 +40,8 @@ std::string RoomType(const std::string& room) {
 
 }  // namespace
 
-Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options) {
+Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options,
+                                   const std::vector<std::string>& only) {
   auto info = ReadSceneInfo(glb);
   if (!info.ok()) return Error{info.error()};
   GlbSettleSummary summary;
@@ -64,7 +66,8 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
     }
     SettleBody b;
     b.id = Meta(n, "id").empty() ? n.name : Meta(n, "id");
-    b.welded = relation == "on_wall" || relation == "hanging" || category == "hanging-clothes";
+    b.welded = relation == "on_wall" || relation == "hanging" || category == "hanging-clothes" ||
+               (!only.empty() && std::find(only.begin(), only.end(), b.id) == only.end());
     b.mesh = std::move(mesh);
     GlbObjectMotion o;
     o.id = b.id;

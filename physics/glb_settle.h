@@ -34,6 +34,9 @@ struct GlbSettleSummary {
   double seconds = 0.0;
 };
 
-Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options = {});
+// `only`: when not empty, only these objects (ids) are free; the others are welded where they stand (to
+// see what one object does among the rest).
+Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options = {},
+                                   const std::vector<std::string>& only = {});
 
 }  // namespace villa::physics

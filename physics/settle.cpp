@@ -7,6 +7,7 @@
 #include <memory>
 
 #include <btBulletDynamicsCommon.h>
+#include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
 #include <LinearMath/btConvexHullComputer.h>
 
 namespace villa::physics {
@@ -43,6 +44,16 @@ Hull HullOf(const std::vector<btVector3>& points) {
   if (h.volume > 1e-12) h.centroid = weighted / h.volume;
   else h.volume = 0.0;
   return h;
+}
+
+// Contacts with the building's triangles take the normals of the surface, not of the edges between its
+// triangles (Bullet's internal-edge fix): a box standing across two floor triangles is not nudged sideways
+// by the edge between them. Called for contacts of a body flagged CF_CUSTOM_MATERIAL_CALLBACK.
+bool SmoothTriangleContact(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int part_a, int index_a,
+                           const btCollisionObjectWrapper* b, int part_b, int index_b) {
+  btAdjustInternalEdgeContacts(cp, b, a, part_b, index_b);  // each returns at once unless its first is a triangle
+  btAdjustInternalEdgeContacts(cp, a, b, part_a, index_a);
+  return true;
 }
 
 }  // namespace
@@ -109,14 +120,25 @@ Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std:
   auto triangles = std::make_unique<btTriangleMesh>(true, false);
   for (const TriangleMesh& m : statics)
     for (const auto& t : m.triangles) {
-      triangles->addTriangle(Bt(m.vertices[t[0]]), Bt(m.vertices[t[1]]), Bt(m.vertices[t[2]]));
+      const btVector3 a = Bt(m.vertices[t[0]]), b = Bt(m.vertices[t[1]]), c = Bt(m.vertices[t[2]]);
+      // Downward faces (slab and stair undersides, wall bottoms) hold nothing up; a wall's bottom lies in the
+      // floor's plane, and Bullet's contacts with it walked a heavy box standing 2 cm from the wall sideways
+      // (a fridge drifted 3-5 cm).
+      const btVector3 n = (b - a).cross(c - a);
+      if (n.length2() > 0.0 && n.z() < -0.5 * n.length()) continue;
+      triangles->addTriangle(a, b, c);
       ++result.static_triangles;
     }
   std::unique_ptr<btTriangleMesh> keep_triangles;
+  std::unique_ptr<btTriangleInfoMap> edge_info;
   if (result.static_triangles > 0) {
     auto shape = std::make_unique<btBvhTriangleMeshShape>(triangles.get(), true);
     shape->setMargin(options.margin);
-    add_body(shape.get(), 0.0, {0, 0, 0}, btTransform::getIdentity());
+    edge_info = std::make_unique<btTriangleInfoMap>();
+    btGenerateInternalEdgeInfo(shape.get(), edge_info.get());
+    gContactAddedCallback = SmoothTriangleContact;
+    btRigidBody* building = add_body(shape.get(), 0.0, {0, 0, 0}, btTransform::getIdentity());
+    building->setCollisionFlags(building->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
     shapes.push_back(std::move(shape));
     keep_triangles = std::move(triangles);
   }

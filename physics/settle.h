@@ -1,6 +1,8 @@
 #pragma once
 // Dropping a furnished scene into a physics engine (issue 28): Bullet (double precision, Debian
-// libbullet-dev) as the paper's PyBullet. The building is static with its exact triangles; every free
+// libbullet-dev) as the paper's PyBullet. The building is static with its exact triangles (those facing
+// down left out: nothing rests on an underside, and a wall's bottom in the floor's plane gave contacts
+// that walked heavy boxes sideways); every free
 // object is a rigid body whose collision shape is the convex hulls of its mesh's connected pieces (our
 // procedural assets are built from convex pieces, so for them the shape is exact; an imported model's
 // non-convex piece becomes its hull); welded objects (wall- and ceiling-hung, garments on a rail) hold

@@ -173,24 +173,13 @@ void MeshBuilder::Cushion(int part, Vec3 lo, Vec3 hi, double inset, double waist
 }
 
 void MeshBuilder::Tray(int part, Vec3 lo, Vec3 hi, double wall, double floor) {
-  TriangleMesh& m = Mesh(part);
-  auto ring = [&](const std::array<Vec3, 4>& r) {
-    std::array<int, 4> out;
-    for (int i = 0; i < 4; ++i) out[i] = Vertex(m, r[i]);
-    return out;
-  };
-  auto o = ring(RectRing(lo.x, lo.y, hi.x, hi.y, lo.z));                                      // outer bottom
-  auto p = ring(RectRing(lo.x, lo.y, hi.x, hi.y, hi.z));                                      // outer top
-  auto q = ring(RectRing(lo.x + wall, lo.y + wall, hi.x - wall, hi.y - wall, hi.z));          // inner top
-  auto r = ring(RectRing(lo.x + wall, lo.y + wall, hi.x - wall, hi.y - wall, lo.z + floor));  // inner floor
-  Quad(m, o[0], o[3], o[2], o[1]);
-  for (int i = 0; i < 4; ++i) {
-    int j = (i + 1) % 4;
-    Quad(m, o[i], o[j], p[j], p[i]);  // outer wall
-    Quad(m, p[i], p[j], q[j], q[i]);  // rim, facing up
-    Quad(m, q[i], q[j], r[j], r[i]);  // inner wall, facing the pocket
-  }
-  Quad(m, r[0], r[1], r[2], r[3]);
+  // Five boxes, not one hollow piece: every piece of a procedural mesh is convex, so a physics engine's
+  // hull of each is the mesh itself (a hollow tray's hull would fill its pocket; issue 28).
+  Box(part, {lo.x + wall, lo.y + wall, lo.z}, {hi.x - wall, hi.y - wall, lo.z + floor});
+  Box(part, {lo.x, lo.y, lo.z}, {hi.x, lo.y + wall, hi.z});
+  Box(part, {lo.x, hi.y - wall, lo.z}, {hi.x, hi.y, hi.z});
+  Box(part, {lo.x, lo.y + wall, lo.z}, {lo.x + wall, hi.y - wall, hi.z});
+  Box(part, {hi.x - wall, lo.y + wall, lo.z}, {hi.x, hi.y - wall, hi.z});
 }
 
 void MeshBuilder::Lathe(int part, const std::vector<Point>& profile, Vec3 origin, Vec3 ex, Vec3 ey, Vec3 axis,
