@@ -409,10 +409,27 @@ const SceneNodeInfo* SceneInfo::Find(std::string_view name) const {
   return nullptr;
 }
 
+namespace {
+SceneInfo SceneInfoOf(const aiScene* scene);
+}  // namespace
+
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode) return Error{path.string() + ": " + importer.GetErrorString()};
+  return SceneInfoOf(scene);
+}
+
+Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure,
+                                                     extension.c_str());
+  if (!scene || !scene->mRootNode) return Error{std::string("in-memory .") + extension + ": " + importer.GetErrorString()};
+  return SceneInfoOf(scene);
+}
+
+namespace {
+SceneInfo SceneInfoOf(const aiScene* scene) {
   SceneInfo info;
   for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
     const aiMaterial* m = scene->mMaterials[i];
@@ -492,5 +509,6 @@ Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
   walk(scene->mRootNode, "", aiMatrix4x4());
   return info;
 }
+}  // namespace
 
 }  // namespace villa

@@ -97,5 +97,7 @@ struct SceneInfo {
   const SceneNodeInfo* Find(std::string_view name) const;
 };
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path);
+// The same from a file's bytes; `extension` tells the format ("glb").
+Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension);
 
 }  // namespace villa

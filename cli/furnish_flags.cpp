@@ -24,6 +24,8 @@ void AddFurnishFlags(CLI::App* sub, solver::FurnishOptions& o, const FurnishFlag
     sub->add_flag("--no-reach", [&o](std::int64_t) { o.check_reach = false; },
                   s + "skip reachability (a person walking from the entrance to every room and interaction zone, and "
                       "the feedback that clears what furniture blocks); RCH and ACC are then not measured");
+    sub->add_flag("--no-physics", [&o](std::int64_t) { o.check_physics = false; },
+                  s + "skip the physics check (the villa dropped into Bullet for 2 s: how many objects stay put)");
     sub->add_option("--radius", o.reach.reach.radius, s + "the person's radius for reachability, m")
         ->capture_default_str()
         ->check(NumberIn(0.0, 2.0, /*above_min=*/true));

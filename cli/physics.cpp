@@ -24,11 +24,6 @@ struct PhysicsCommand {
   bool json = false;
 };
 
-nlohmann::ordered_json CountJson(const physics::StabilityCount& c) {
-  auto share = [&](int n) { return c.free > 0 ? static_cast<double>(n) / c.free : 1.0; };
-  return {{"free", c.free}, {"strict", c.strict}, {"loose", c.loose}, {"strict_share", share(c.strict)}, {"loose_share", share(c.loose)}};
-}
-
 void Run(const PhysicsCommand& command) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(command.glb, ec)) throw UsageError("physics: " + command.glb + ": no such file");
@@ -51,19 +46,8 @@ void Run(const PhysicsCommand& command) {
   std::sort(movers.begin(), movers.end(), [](auto* a, auto* b) { return a->motion.moved > b->motion.moved; });
   if (static_cast<int>(movers.size()) > command.movers) movers.resize(command.movers);
   if (command.json) {
-    nlohmann::ordered_json by_type = nlohmann::ordered_json::object();
-    for (const auto& [type, c] : s.by_room_type) by_type[type] = CountJson(c);
-    nlohmann::ordered_json moved = nlohmann::ordered_json::array();
-    for (auto* o : movers)
-      moved.push_back({{"id", o->id}, {"category", o->category}, {"moved_m", o->motion.moved}, {"turned_rad", o->motion.turned},
-                       {"shift_m", {o->motion.shift.x, o->motion.shift.y, o->motion.shift.z}},
-                       {"start_depth_m", o->motion.start_depth}, {"start_against", o->motion.start_against}});
-    nlohmann::ordered_json out{{"format", "villa-physics/1"},     {"glb", command.glb},
-                               {"seconds_simulated", command.options.seconds}, {"all", CountJson(s.all)},
-                               {"by_room_type", by_type},        {"movers", moved},
-                               {"starts_inside", s.starts_inside},
-                               {"decals", s.decals},             {"convex_parts", s.parts},
-                               {"static_triangles", s.static_triangles}, {"seconds", s.seconds}};
+    nlohmann::ordered_json out{{"format", "villa-physics/1"}, {"glb", command.glb}};
+    out.update(physics::SettleSummaryJson(s, command.options, command.movers));
     std::cout << out.dump(2) << "\n";
     return;
   }

@@ -40,9 +40,10 @@ std::string RoomType(const std::string& room) {
 
 }  // namespace
 
-Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options,
-                                   const std::vector<std::string>& only) {
-  auto info = ReadSceneInfo(glb);
+namespace {
+
+Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::string& glb, const SettleOptions& options,
+                                     const std::vector<std::string>& only) {
   if (!info.ok()) return Error{info.error()};
   GlbSettleSummary summary;
   std::vector<TriangleMesh> statics;
@@ -52,7 +53,7 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
     TriangleMesh mesh = WorldMesh(*info, n);
     for (const Vec3& v : mesh.vertices)
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-        return Error{glb.string() + ": node " + n.name + ": a vertex is not finite"};
+        return Error{glb + ": node " + n.name + ": a vertex is not finite"};
     const std::string room = Meta(n, "room");
     if (room.empty()) {
       statics.push_back(std::move(mesh));
@@ -78,7 +79,7 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
     bodies.push_back(std::move(b));
   }
   auto settled = Settle(statics, bodies, options);
-  if (!settled.ok()) return Error{glb.string() + ": " + settled.error()};
+  if (!settled.ok()) return Error{glb + ": " + settled.error()};
   for (size_t i = 0; i < bodies.size(); ++i) {
     GlbObjectMotion& o = summary.objects[i];
     o.motion = settled->bodies[i];
@@ -94,6 +95,44 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
   summary.static_triangles = settled->static_triangles;
   summary.seconds = settled->seconds;
   return summary;
+}
+
+}  // namespace
+
+Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options,
+                                   const std::vector<std::string>& only) {
+  return SettleScene(ReadSceneInfo(glb), glb.string(), options, only);
+}
+
+Result<GlbSettleSummary> SettleGlbBytes(const std::string& glb, const SettleOptions& options) {
+  return SettleScene(ReadSceneInfoFromMemory(glb, "glb"), "furnished.glb", options, {});
+}
+
+nlohmann::ordered_json StabilityJson(const StabilityCount& c) {
+  auto share = [&](int n) { return c.free > 0 ? static_cast<double>(n) / c.free : 1.0; };
+  return {{"free", c.free}, {"strict", c.strict}, {"loose", c.loose}, {"strict_share", share(c.strict)}, {"loose_share", share(c.loose)}};
+}
+
+nlohmann::ordered_json SettleSummaryJson(const GlbSettleSummary& s, const SettleOptions& options, int movers) {
+  std::vector<const GlbObjectMotion*> moved;
+  for (const auto& o : s.objects)
+    if (!o.motion.welded && !o.motion.strict) moved.push_back(&o);
+  std::sort(moved.begin(), moved.end(), [](auto* a, auto* b) { return a->motion.moved > b->motion.moved; });
+  if (static_cast<int>(moved.size()) > movers) moved.resize(movers);
+  nlohmann::ordered_json by_type = nlohmann::ordered_json::object();
+  for (const auto& [type, c] : s.by_room_type) by_type[type] = StabilityJson(c);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (auto* o : moved)
+    list.push_back({{"id", o->id},
+                    {"category", o->category},
+                    {"moved_m", o->motion.moved},
+                    {"turned_rad", o->motion.turned},
+                    {"shift_m", {o->motion.shift.x, o->motion.shift.y, o->motion.shift.z}},
+                    {"start_depth_m", o->motion.start_depth},
+                    {"start_against", o->motion.start_against}});
+  return {{"seconds_simulated", options.seconds}, {"all", StabilityJson(s.all)}, {"by_room_type", by_type},
+          {"movers", list}, {"starts_inside", s.starts_inside}, {"decals", s.decals},
+          {"convex_parts", s.parts}, {"static_triangles", s.static_triangles}, {"seconds", s.seconds}};
 }
 
 }  // namespace villa::physics

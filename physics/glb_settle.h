@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "physics/settle.h"
 #include "util/result.h"
 
@@ -38,5 +40,13 @@ struct GlbSettleSummary {
 // see what one object does among the rest).
 Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options = {},
                                    const std::vector<std::string>& only = {});
+// The same for a .glb's bytes (a furnished villa before it is written).
+Result<GlbSettleSummary> SettleGlbBytes(const std::string& glb, const SettleOptions& options = {});
+
+// {"free", "strict", "loose", "strict_share", "loose_share"}.
+nlohmann::ordered_json StabilityJson(const StabilityCount& count);
+// report.json's "physics": {"seconds_simulated", "all", "by_room_type", "movers" (up to `movers`, the
+// largest first: id, moved_m, turned_rad), "starts_inside", "decals", "seconds"}.
+nlohmann::ordered_json SettleSummaryJson(const GlbSettleSummary& summary, const SettleOptions& options, int movers = 10);
 
 }  // namespace villa::physics

@@ -22,13 +22,15 @@ struct Hull {
   btVector3 centroid{0, 0, 0};
 };
 
-Hull HullOf(const std::vector<btVector3>& points) {
+// `margin`: the points kept are the hull shrunk by it (up to a quarter of its thickness), so that Bullet's
+// collision margin round them gives back the piece's own surface: resting contacts start touching, not
+// a margin deep (two margins between bodies), which kicked tall furniture into a sway.
+Hull HullOf(const std::vector<btVector3>& points, double margin) {
   Hull h;
   btConvexHullComputer hc;
   hc.compute(&points[0].x(), sizeof(btVector3), static_cast<int>(points.size()), 0.0, 0.0);
-  for (int v = 0; v < hc.vertices.size(); ++v) h.points.push_back(hc.vertices[v]);
-  if (h.points.size() < 4) return h;
-  const btVector3 o = h.points[0];
+  if (hc.vertices.size() < 4) return h;
+  const btVector3 o = hc.vertices[0];
   btVector3 weighted(0, 0, 0);
   for (int f = 0; f < hc.faces.size(); ++f) {
     const btConvexHullComputer::Edge* first = &hc.edges[hc.faces[f]];
@@ -43,6 +45,12 @@ Hull HullOf(const std::vector<btVector3>& points) {
   }
   if (h.volume > 1e-12) h.centroid = weighted / h.volume;
   else h.volume = 0.0;
+  btConvexHullComputer shrunk;
+  const bool shrinks = margin > 0.0 && h.volume > 0.0 &&
+                       shrunk.compute(&points[0].x(), sizeof(btVector3), static_cast<int>(points.size()), margin, 0.25) >= 0.0 &&
+                       shrunk.vertices.size() >= 4;
+  const btConvexHullComputer& kept = shrinks ? shrunk : hc;
+  for (int v = 0; v < kept.vertices.size(); ++v) h.points.push_back(kept.vertices[v]);
   return h;
 }
 
@@ -102,6 +110,7 @@ Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std:
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
   world.setGravity({0, 0, -9.81});
+  gDeactivationTime = 0.2;
 
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> rigid;
@@ -160,13 +169,13 @@ Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std:
     for (const std::vector<Vec3>& piece : ConnectedPieces(b.mesh)) {
       std::vector<btVector3> local;
       for (const Vec3& v : piece) local.push_back(Bt(v) - origin);
-      Hull h = HullOf(local);
+      Hull h = HullOf(local, options.margin);
       if (h.volume > 0.0) hulls.push_back(std::move(h));
     }
     if (hulls.empty()) {  // only flat pieces (a picture's quad): the hull of the whole
       std::vector<btVector3> local;
       for (const Vec3& v : b.mesh.vertices) local.push_back(Bt(v) - origin);
-      Hull h = HullOf(local);
+      Hull h = HullOf(local, options.margin);
       if (h.points.size() < 4) continue;
       h.volume = std::max(h.volume, 1e-6);
       hulls.push_back(std::move(h));
@@ -198,6 +207,9 @@ Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std:
       for (int k = 0; k < compound->getNumChildShapes(); ++k)
         centred->addChildShape(principal.inverse() * compound->getChildTransform(k), compound->getChildShape(k));
       body = add_body(centred.get(), mass, inertia, at * principal);
+      // A body that has come to rest (under 5 mm/s and 0.01 rad/s for 0.2 s) sleeps until something
+      // touches it: most of a furnished villa stands still, and sleeping bodies cost nothing.
+      body->setSleepingThresholds(0.005, 0.01);
       shapes.push_back(std::move(centred));
       ++result.free;
     }

@@ -26,6 +26,7 @@
 #include "assets/asset_library.h"
 #include "building/building.h"
 #include "layout/layout.h"
+#include "physics/glb_settle.h"
 #include "render/plan_render.h"
 #include "render/view3d.h"
 #include "scene/acquire.h"
@@ -117,6 +118,10 @@ struct FurnishOptions {
   // RCH, ACC and the paths go into report.json and plan.png. Off (`--no-reach`): not measured (null).
   bool check_reach = true;
   ReachFeedbackOptions reach;
+  // Issue 28: the finished villa dropped into Bullet (physics/glb_settle.h) as its .glb, to measure how
+  // many objects stay put; report.json's "physics" and the summary say it. Off (`--no-physics`): null.
+  bool check_physics = true;
+  physics::SettleOptions settle;
   // Issue 14: a critic reviews each solved room and acts through its solver session (critic/critic.h
   // makes one); unset: the rule agent alone.
   RoomCritic critic;
@@ -176,6 +181,11 @@ struct FurnishSummary {
   int reach_actions = 0;     // actions the rooms' agents took to clear walkways
   std::string reach_note;    // how the feedback ended, or why reachability was not measured
   double reach_seconds = 0.0;
+  // Physics (when settled): free objects and those stable by the strict and loose rules, the settle's time.
+  bool physics_checked = false;
+  physics::StabilityCount stability;
+  int starts_inside = 0;
+  double physics_seconds = 0.0, physics_simulated = 0.0;
   std::vector<std::string> written;  // files written, relative to the output folder
 
   // CR, FR, OBR over every object of the furnished rooms; CSR over their inside edges (1 when none).
@@ -201,6 +211,7 @@ struct FurnishedVilla {
   std::shared_ptr<const scene::AssetAcquirer> assets;  // records of every asset used (Find)
   std::string library_note;                  // "procedural assets only" ...
   std::optional<ReachFigures> reach;
+  std::optional<physics::GlbSettleSummary> physics;  // the settle, when check_physics
   FurnishSummary summary;
 };
 

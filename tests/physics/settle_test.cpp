@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -120,6 +121,12 @@ TEST_CASE("villa physics settles a furnished room's .glb: everything stays withi
   CHECK(j["all"]["strict_share"].get<double>() >= 0.9);
   CHECK(j["by_room_type"].contains("living-room"));
   CHECK(j["decals"].get<int>() >= 1);  // the living room's rug
+  // The furnish report's physics is the same settle of the same bytes.
+  std::ifstream in(dir / "report.json");
+  const auto report = nlohmann::json::parse(in);
+  CHECK(report["physics"]["all"] == j["all"]);
+  CHECK(report["physics"]["by_room_type"] == j["by_room_type"]);
+  CHECK(furnished.out.find("physics: ") != std::string::npos);
   std::filesystem::remove_all(dir);
 }
 
