@@ -366,6 +366,15 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
                                                    solver::FailingLine(*r.functional));
           }
           summary.functional_all.Add(villa->summary.functional);
+          if (villa->physics) {
+            summary.physics_measured = true;
+            for (const auto& [type, c] : villa->physics->by_room_type) {
+              physics::StabilityCount& to = summary.stability[type];
+              to.free += c.free, to.strict += c.strict, to.loose += c.loose;
+            }
+            const physics::StabilityCount& c = villa->physics->all;
+            summary.stability_all.free += c.free, summary.stability_all.strict += c.strict, summary.stability_all.loose += c.loose;
+          }
           summary.room_seconds += villa->summary.room_seconds;
           summary.furnished_rooms += villa->summary.furnished;
           if (villa->reach) {
@@ -542,6 +551,30 @@ std::string MacroLine(const SceneEvalSummary& s, bool markdown) {
 
 }  // namespace
 
+namespace {
+
+// "physics": {"all": {...}, "by_room_type": {...}} (physics::StabilityJson), null when not measured.
+Json PhysicsJsonOf(const SceneEvalSummary& s) {
+  if (!s.physics_measured) return nullptr;
+  Json by_type = Json::object();
+  for (const auto& [type, c] : s.stability) by_type[type] = physics::StabilityJson(c);
+  return {{"all", physics::StabilityJson(s.stability_all)}, {"by_room_type", by_type}};
+}
+
+// One line per room type and one over all: free objects, the strict and loose stable shares.
+std::string PhysicsLine(const SceneEvalSummary& s) {
+  if (!s.physics_measured) return "";
+  auto line = [](const std::string& name, const physics::StabilityCount& c) {
+    return "  " + name + ": " + std::to_string(c.free) + " free, " + FormatPercent(c.strict, c.free) + " strict, " +
+           FormatPercent(c.loose, c.free) + " loose\n";
+  };
+  std::string out = "Physics (2 s in Bullet; strict: <= 1 cm and 0.1 rad, loose: <= 20 cm and 8 degrees):\n";
+  for (const auto& [type, c] : s.stability) out += line(type, c);
+  return out + line("all", s.stability_all) + "\n";
+}
+
+}  // namespace
+
 std::string SceneEvalText(const SceneEvalSummary& s) {
   std::ostringstream out;
   TextTable scenes({"#", "request", "scene", "seed", "rooms", "objects", "CR %", "FR %", "OBR %", "CSR %", "E<=1", "s"});
@@ -570,6 +603,7 @@ std::string SceneEvalText(const SceneEvalSummary& s) {
       << " scenes per layout, then over layouts):\n";
   out << MicroTableText(s.micro) << "\n";
   out << FunctionalText(s) << "\n";
+  out << PhysicsLine(s);
   out << "Macro level:\n" << MacroLine(s, false) << "\n";
   out << TimesLine(s);
   return out.str();
@@ -626,6 +660,7 @@ Json SceneEvalJson(const SceneEvalSummary& s) {
                      {"RR_entrance", ratio(s.macro.rr_entrance())}, {"VCR", ratio(s.macro.vcr())},
                      {"brief_adherence", ratio(s.adherence)}}},
           {"reach", s.reach_measured ? "measured" : "not measured"},
+          {"physics", PhysicsJsonOf(s)},
           {"library", s.library_note},
           {"kept", s.kept},
           {"seconds", {{"total", Round4(s.seconds)}, {"plan", Round4(s.plan_seconds)}, {"furnish", Round4(s.furnish_seconds)},

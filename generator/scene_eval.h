@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -128,6 +129,11 @@ struct SceneEvalSummary {
   MetricsSummary macro;             // over every layout
   std::optional<double> adherence;  // mean over the planned requests
   bool reach_measured = false;
+  // Issue 28: the settle of every scene (physics/glb_settle.h), free objects and the stable ones summed per
+  // room type and over all; none measured with --no-physics.
+  std::map<std::string, physics::StabilityCount> stability;
+  physics::StabilityCount stability_all;
+  bool physics_measured = false;
   std::string library_note;
   double seconds = 0.0;             // wall, the whole run
   double plan_seconds = 0.0;        // wall, planning

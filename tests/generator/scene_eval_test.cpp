@@ -188,6 +188,10 @@ TEST_CASE("villa eval --scenes furnishes every layout three times and prints the
   CHECK(j["macro"]["FSR"] == 1.0);
   CHECK(j["reach"].is_string());
   CHECK(j["seconds"]["per_room"].get<double>() > 0.0);
+  // Issue 28: every scene settled in Bullet, summed per room type.
+  CHECK(j["physics"]["all"]["free"].get<int>() > 90);
+  CHECK(j["physics"]["all"]["loose_share"].get<double>() >= 0.98);
+  CHECK(j["physics"]["by_room_type"].contains("kitchen"));
   // Issue 27's functional checks per room type and over all rooms: the same rooms as the micro table, every
   // room's essentials there, every desk with its chair, nightstands and pillows at the bed's head, nothing
   // odd (these small houses hold them all), and each failing room listed with what fails.
