@@ -122,6 +122,8 @@ struct FurnishOptions {
   // many objects stay put; report.json's "physics" and the summary say it. Off (`--no-physics`): null.
   bool check_physics = true;
   physics::SettleOptions settle;
+  // Settles after which optional pieces that moved are taken out and the villa settled again, [0, 10].
+  int physics_rounds = 1;
   // Issue 14: a critic reviews each solved room and acts through its solver session (critic/critic.h
   // makes one); unset: the rule agent alone.
   RoomCritic critic;
@@ -186,6 +188,7 @@ struct FurnishSummary {
   physics::StabilityCount stability;
   int starts_inside = 0;
   double physics_seconds = 0.0, physics_simulated = 0.0;
+  int physics_removed = 0;  // optional pieces (with what they held) taken out because they moved
   std::vector<std::string> written;  // files written, relative to the output folder
 
   // CR, FR, OBR over every object of the furnished rooms; CSR over their inside edges (1 when none).
