@@ -125,15 +125,10 @@ struct ShowCommand {
 };
 
 // The four views of the asset with its surfaces and cavities, two by two, into `path` (atomically).
-bool RenderShown(const AssetLibrary& library, const AssetRecord& record, const ShowCommand& command) {
-  auto mesh = library.Mesh(record.id);
-  if (!mesh.ok()) {
-    std::cerr << "villa assets show: " << mesh.error() << "\n";
-    return false;
-  }
+bool RenderShown(const AssetRecord& record, const AssetMesh& mesh, const ShowCommand& command) {
   AssetViewOptions options;
   options.size_px = command.size;
-  auto views = RenderAssetViews(record, **mesh, options);
+  auto views = RenderAssetViews(record, mesh, options);
   if (!views.ok()) {
     std::cerr << "villa assets show: " << views.error() << "\n";
     return false;
@@ -150,13 +145,28 @@ bool RenderShown(const AssetLibrary& library, const AssetRecord& record, const S
 void RunShow(const ShowCommand& command) {
   if (!command.render.empty() && std::filesystem::path(command.render).extension() != ".png")
     throw UsageError("assets show: --render " + command.render + ": the picture's name must end in .png");
-  std::optional<AssetLibrary> library = OpenLibrary(command.library, "show");
-  if (!library) return;
-  const AssetRecord* r = library->Find(command.id);
-  if (!r) {
-    std::cerr << "villa assets show: " << command.id << ": no such asset in " << library->dir().string() << "\n";
-    SetExitCode(kExitFailure);
-    return;
+  // A procedural id is made from the id itself: no library needed.
+  std::optional<ProceduralAsset> made;
+  std::optional<AssetLibrary> library;
+  const AssetRecord* r = nullptr;
+  if (command.id.rfind("proc:", 0) == 0 && command.library.empty()) {
+    auto asset = MakeProceduralAsset(command.id);
+    if (!asset.ok()) {
+      std::cerr << "villa assets show: " << asset.error() << "\n";
+      SetExitCode(kExitFailure);
+      return;
+    }
+    made = std::move(*asset);
+    r = &made->record;
+  } else {
+    library = OpenLibrary(command.library, "show");
+    if (!library) return;
+    r = library->Find(command.id);
+    if (!r) {
+      std::cerr << "villa assets show: " << command.id << ": no such asset in " << library->dir().string() << "\n";
+      SetExitCode(kExitFailure);
+      return;
+    }
   }
   TextTable table({"field", "value"});
   table.AddRow({"id", r->id});
@@ -194,7 +204,17 @@ void RunShow(const ShowCommand& command) {
   if (!r->front_decided_by.empty()) table.AddRow({"front decided by", r->front_decided_by});
   std::cout << table.Render();
   if (!command.render.empty()) {
-    if (!RenderShown(*library, *r, command)) {
+    std::shared_ptr<const AssetMesh> mesh;
+    if (made) {
+      mesh = std::make_shared<const AssetMesh>(made->mesh);
+    } else if (auto loaded = library->Mesh(r->id); loaded.ok()) {
+      mesh = *loaded;
+    } else {
+      std::cerr << "villa assets show: " << loaded.error() << "\n";
+      SetExitCode(kExitFailure);
+      return;
+    }
+    if (!RenderShown(*r, *mesh, command)) {
       SetExitCode(kExitFailure);
       return;
     }

@@ -114,6 +114,20 @@ TEST_CASE("villa assets: usage errors exit 2, failures exit 1 and name the folde
   Run unknown = box.Villa("assets show nope --library " + box.Quoted("lib"));
   CHECK(unknown.code == 1);
   CHECK(unknown.err == "villa assets show: nope: no such asset in " + (box.dir() / "lib").string() + "\n");
+  Run bad = box.Villa("assets show 'proc:wardrobe?h=9'");
+  CHECK(bad.code == 1);
+  CHECK(bad.err.find("villa assets show: proc:wardrobe?h=9: h = 9") == 0);
+}
+
+TEST_CASE("villa assets show makes a procedural asset from its id, with no library installed", "[assets][cli]") {
+  Sandbox box;  // an empty home: no library
+  Run show = box.Villa("assets show 'proc:wardrobe?cols=2&w=1.2&d=0.6&h=2.0&style=modern&seed=1' --render " + box.Quoted("w.png"));
+  INFO(show.err);
+  REQUIRE(show.code == 0);
+  CHECK(show.out.find("category          wardrobe") != std::string::npos);
+  CHECK(show.out.find("cavity 0          w 0.65, d 0.59, h 1.46 m, at z 0.098, open -y, on surface 0, hanging rail at z 1.586") !=
+        std::string::npos);
+  CHECK(std::filesystem::file_size(box.dir() / "w.png") > 1000);
 }
 
 }  // namespace
