@@ -11,6 +11,7 @@
 
 #include "cli/command.h"
 #include "physics/glb_settle.h"
+#include "physics/mjcf.h"
 #include "util/text_table.h"
 
 namespace villa::cli {
@@ -21,6 +22,7 @@ struct PhysicsCommand {
   physics::SettleOptions options;
   int movers = 10;
   std::vector<std::string> only;
+  std::string mjcf;  // --mjcf DIR
   bool json = false;
 };
 
@@ -28,6 +30,17 @@ void Run(const PhysicsCommand& command) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(command.glb, ec)) throw UsageError("physics: " + command.glb + ": no such file");
   if (std::string bad = command.options.Check(); !bad.empty()) throw UsageError("physics: " + bad);
+  if (!command.mjcf.empty()) {
+    auto written = physics::WriteMjcf(command.glb, command.mjcf, command.options);
+    if (!written.ok()) {
+      std::cerr << "villa physics: " << written.error() << "\n";
+      SetExitCode(kExitFailure);
+      return;
+    }
+    std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << written->bodies << " bodies ("
+              << written->free << " free), " << written->geoms << " object geoms, " << written->static_geoms
+              << " building geoms, " << written->meshes << " meshes\n";
+  }
   auto settled = physics::SettleGlb(command.glb, command.options, command.only);
   if (!settled.ok()) {
     std::cerr << "villa physics: " << settled.error() << "\n";
@@ -88,6 +101,8 @@ Registration registration{86, [](CLI::App& app) {
   sub->add_option("--friction", command->options.friction, "friction coefficient (default 0.6)")->check(CLI::Range(0.01, 2.0));
   sub->add_option("--movers", command->movers, "list this many of the objects that moved most (default 10)")->check(CLI::Range(0, 100000));
   sub->add_option("--only", command->only, "only this object is free, the rest welded where they stand (repeatable)");
+  sub->add_option("--mjcf", command->mjcf,
+                  "also write the scene for MuJoCo: DIR/villa.xml and DIR/meshes/*.stl (a convex part each)");
   sub->add_flag("--json", command->json, "print a machine-readable report instead");
   sub->callback([command] { Run(*command); });
 }};

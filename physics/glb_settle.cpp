@@ -40,29 +40,23 @@ std::string RoomType(const std::string& room) {
 
 }  // namespace
 
-namespace {
-
-Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::string& glb, const SettleOptions& options,
-                                     const std::vector<std::string>& only) {
-  if (!info.ok()) return Error{info.error()};
-  GlbSettleSummary summary;
-  std::vector<TriangleMesh> statics;
-  std::vector<SettleBody> bodies;
-  for (const SceneNodeInfo& n : info->nodes) {
+static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string& glb, const std::vector<std::string>& only) {
+  GlbBodies out;
+  for (const SceneNodeInfo& n : info.nodes) {
     if (n.meshes.empty()) continue;
-    TriangleMesh mesh = WorldMesh(*info, n);
+    TriangleMesh mesh = WorldMesh(info, n);
     for (const Vec3& v : mesh.vertices)
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
         return Error{glb + ": node " + n.name + ": a vertex is not finite"};
     const std::string room = Meta(n, "room");
     if (room.empty()) {
-      statics.push_back(std::move(mesh));
+      out.statics.push_back(std::move(mesh));
       continue;
     }
     const std::string category = Meta(n, "category"), relation = Meta(n, "relation");
     const Box3 box = mesh.Bounds();
     if (category == "rug" || (Meta(n, "parent") == "floor" && box.max.z - box.min.z <= 0.003)) {
-      ++summary.decals;
+      ++out.decals;
       continue;
     }
     SettleBody b;
@@ -75,9 +69,30 @@ Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::s
     o.room = room;
     o.category = category;
     o.room_type = RoomType(room);
-    summary.objects.push_back(std::move(o));
-    bodies.push_back(std::move(b));
+    out.objects.push_back(std::move(o));
+    out.bodies.push_back(std::move(b));
   }
+  return out;
+}
+
+Result<GlbBodies> ReadGlbBodies(const std::filesystem::path& glb) {
+  auto info = ReadSceneInfo(glb);
+  if (!info.ok()) return Error{info.error()};
+  return ReadGlbBodies(*info, glb.string(), {});
+}
+
+namespace {
+
+Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::string& glb, const SettleOptions& options,
+                                     const std::vector<std::string>& only) {
+  if (!info.ok()) return Error{info.error()};
+  auto scene = ReadGlbBodies(*info, glb, only);
+  if (!scene.ok()) return Error{scene.error()};
+  GlbSettleSummary summary;
+  summary.objects = std::move(scene->objects);
+  summary.decals = scene->decals;
+  const std::vector<TriangleMesh>& statics = scene->statics;
+  const std::vector<SettleBody>& bodies = scene->bodies;
   auto settled = Settle(statics, bodies, options);
   if (!settled.ok()) return Error{glb + ": " + settled.error()};
   for (size_t i = 0; i < bodies.size(); ++i) {

@@ -38,6 +38,16 @@ struct GlbSettleSummary {
 
 // `only`: when not empty, only these objects (ids) are free; the others are welded where they stand (to
 // see what one object does among the rest).
+// What a .glb holds for a simulator: the building's meshes (static), the objects as bodies (welded or free,
+// rugs left out as decals), each object's names, all in the plan frame (z up).
+struct GlbBodies {
+  std::vector<TriangleMesh> statics;
+  std::vector<SettleBody> bodies;
+  std::vector<GlbObjectMotion> objects;  // parallel to bodies (no motion yet)
+  int decals = 0;
+};
+Result<GlbBodies> ReadGlbBodies(const std::filesystem::path& glb);
+
 Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const SettleOptions& options = {},
                                    const std::vector<std::string>& only = {});
 // The same for a .glb's bytes (a furnished villa before it is written).

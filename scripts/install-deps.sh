@@ -11,7 +11,7 @@ packages=(
   libassimp-dev nlohmann-json3-dev libcurl4-openssl-dev
   catch2 libcli11-dev libncurses-dev libtbb-dev libfcl-dev libembree-dev
   libpng-dev zlib1g-dev libstb-dev libcairo2-dev fonts-dejavu-core libcpp-httplib-dev
-  sweethome3d-furniture libssl-dev tmux libbullet-dev
+  sweethome3d-furniture libssl-dev tmux libbullet-dev libmujoco-dev
 )
 
 missing=()
