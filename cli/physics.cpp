@@ -39,7 +39,7 @@ void Run(const PhysicsCommand& command) {
     }
     std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << written->bodies << " bodies ("
               << written->free << " free), " << written->geoms << " object geoms, " << written->static_geoms
-              << " building geoms, " << written->meshes << " meshes\n";
+              << " building geoms (" << written->boxes << " of them boxes), " << written->meshes << " meshes\n";
   }
   auto settled = physics::SettleGlb(command.glb, command.options, command.only);
   if (!settled.ok()) {

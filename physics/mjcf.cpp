@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "physics/glb_settle.h"
@@ -33,6 +34,49 @@ std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
     out.push_back(std::move(piece));
   }
   return out;
+}
+
+// A piece that is a box (8 corners, three perpendicular edges): MuJoCo collides box geoms at several
+// points (two meshes touch at one, and rock), so box pieces (most of ours) are written as boxes.
+struct BoxFit {
+  Vec3 centre, x, y;  // centre, the box's x and y axes (unit; z = x cross y)
+  Vec3 half;          // half sizes along x, y, z
+};
+std::optional<BoxFit> AsBox(const TriangleMesh& piece) {
+  std::vector<Vec3> corners;
+  for (const Vec3& v : piece.vertices) {
+    bool seen = false;
+    for (const Vec3& c : corners) seen = seen || Norm(v - c) < 1e-6;
+    if (!seen) corners.push_back(v);
+    if (corners.size() > 8) return std::nullopt;
+  }
+  if (corners.size() != 8) return std::nullopt;
+  const Vec3 v0 = corners[0];
+  std::vector<Vec3> rest(corners.begin() + 1, corners.end());
+  std::sort(rest.begin(), rest.end(), [&](const Vec3& a, const Vec3& b) { return Norm(a - v0) < Norm(b - v0); });
+  // The edges from v0: the nearest corners whose directions are perpendicular to those taken (a face's
+  // diagonal can be nearer than the longest edge).
+  std::vector<Vec3> e;
+  for (const Vec3& c : rest) {
+    const Vec3 d = c - v0;
+    if (Norm(d) < 1e-5) return std::nullopt;
+    bool perpendicular = true;
+    for (const Vec3& f : e) perpendicular = perpendicular && std::abs(Dot(d, f)) <= 1e-3 * Norm(d) * Norm(f);
+    if (perpendicular) e.push_back(d);
+    if (e.size() == 3) break;
+  }
+  if (e.size() != 3) return std::nullopt;
+  for (const Vec3& c : corners)
+    for (int i = 0; i < 3; ++i) {
+      const double t = Dot(c - v0, e[i]) / Dot(e[i], e[i]);
+      if (std::abs(t) > 1e-3 && std::abs(t - 1.0) > 1e-3) return std::nullopt;
+    }
+  BoxFit fit;
+  fit.centre = v0 + (e[0] + e[1] + e[2]) * 0.5;
+  fit.x = Normalized(e[0]);
+  fit.y = Normalized(e[1]);
+  fit.half = {0.5 * Norm(e[0]), 0.5 * Norm(e[1]), 0.5 * Norm(e[2])};
+  return fit;
 }
 
 // Binary STL of `mesh` moved by -origin.
@@ -88,11 +132,26 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     assets << "    <mesh name=\"" << name << "\" file=\"" << name << ".stl\"/>\n";
     return name;
   };
+  // A piece as a box geom when it is one, else as a mesh geom; `indent` and `origin` (the body's).
+  auto add_geom = [&](std::ostringstream& out, const TriangleMesh& piece, const Vec3& origin, const std::string& indent,
+                      const char* kind) -> Status {
+    if (const std::optional<BoxFit> box = AsBox(piece)) {
+      const Vec3 c = box->centre - origin;
+      out << indent << "<geom type=\"box\" size=\"" << Num(box->half.x) << " " << Num(box->half.y) << " " << Num(box->half.z)
+          << "\" pos=\"" << Num(c.x) << " " << Num(c.y) << " " << Num(c.z) << "\" xyaxes=\"" << Num(box->x.x) << " "
+          << Num(box->x.y) << " " << Num(box->x.z) << " " << Num(box->y.x) << " " << Num(box->y.y) << " " << Num(box->y.z)
+          << "\" class=\"" << kind << "\"/>\n";
+      ++summary.boxes;
+      return Status::Ok();
+    }
+    auto name = add_mesh(piece, origin);
+    if (!name.ok()) return Error{name.error()};
+    out << indent << "<geom type=\"mesh\" mesh=\"" << *name << "\" class=\"" << kind << "\"/>\n";
+    return Status::Ok();
+  };
   for (const TriangleMesh& m : scene->statics)
     for (const TriangleMesh& piece : SolidPieces(m)) {
-      auto name = add_mesh(piece, {0, 0, 0});
-      if (!name.ok()) return Error{name.error()};
-      world << "    <geom type=\"mesh\" mesh=\"" << *name << "\" class=\"building\"/>\n";
+      if (Status s = add_geom(world, piece, {0, 0, 0}, "    ", "building"); !s) return Error{s.error()};
       ++summary.static_geoms;
     }
   for (const SettleBody& b : scene->bodies) {
@@ -106,9 +165,7 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
       ++summary.free;
     }
     for (const TriangleMesh& piece : pieces) {
-      auto name = add_mesh(piece, origin);
-      if (!name.ok()) return Error{name.error()};
-      world << "      <geom type=\"mesh\" mesh=\"" << *name << "\" class=\"object\"/>\n";
+      if (Status s = add_geom(world, piece, origin, "      ", "object"); !s) return Error{s.error()};
       ++summary.geoms;
     }
     world << "    </body>\n";
