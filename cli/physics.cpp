@@ -48,6 +48,8 @@ void Run(const PhysicsCommand& command) {
     return;
   }
   const physics::GlbSettleSummary& s = *settled;
+  if (s.objects.empty())
+    std::cerr << "villa physics: " << command.glb << ": no object nodes (none whose extras name a room): nothing to settle\n";
   std::vector<const physics::GlbObjectMotion*> movers;
   std::vector<const physics::GlbObjectMotion*> inside;
   for (const auto& o : s.objects) {
