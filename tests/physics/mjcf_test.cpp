@@ -38,8 +38,8 @@ TEST_CASE("The MJCF of a furnished room loads in MuJoCo and its free objects sta
   std::vector<double> start(d->xpos, d->xpos + 3 * m->nbody);
   const int steps = static_cast<int>(std::lround(2.0 / m->opt.timestep));
   for (int k = 0; k < steps; ++k) mj_step(m, d);
-  // MuJoCo 2.2 collides two meshes at one point, so a few small things (a remote, decor) rock and fall
-  // (docs/PHYSICS.md); the furniture standing on the floor stays put, and most of what stands on it.
+  // The furniture standing on the floor stays put, and (elliptic cones, stiff contacts: docs/PHYSICS.md)
+  // what stands on it.
   int free = 0, still = 0, furniture = 0, furniture_still = 0;
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_type[j] != mjJNT_FREE) continue;
@@ -57,7 +57,7 @@ TEST_CASE("The MJCF of a furnished room loads in MuJoCo and its free objects sta
   }
   INFO(still << " of " << free << " free bodies and " << furniture_still << " of " << furniture << " pieces of furniture within 1 cm");
   CHECK(free >= 15);
-  CHECK(still >= 0.85 * free);
+  CHECK(still >= 0.95 * free);
   CHECK(furniture >= 5);
   CHECK(furniture_still == furniture);
   mj_deleteData(d);
