@@ -92,7 +92,8 @@ int main(int argc, char** argv) {
   Row total;
   std::vector<std::string> lines;
   int reach_rooms = 0, rooms_reachable = 0, reach_zones = 0, zones_reachable = 0, removed = 0;
-  int free = 0, strict = 0, loose = 0, starts_inside = 0, physics_removed = 0, furnished_rooms = 0;
+  physics::StabilityCount stability;
+  int starts_inside = 0, physics_removed = 0, furnished_rooms = 0;
   double physics_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (const bench::BenchVilla& v : all) {
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
     reach_rooms += fs.reach_rooms, rooms_reachable += fs.rooms_reachable;
     reach_zones += fs.reach_zones, zones_reachable += fs.zones_reachable;
     removed += fs.removed;
-    free += fs.stability.free, strict += fs.stability.strict, loose += fs.stability.loose;
+    stability += fs.stability;
     starts_inside += fs.starts_inside, physics_removed += fs.physics_removed;
     physics_seconds += fs.physics_seconds, furnished_rooms += fs.furnished;
     for (const solver::RoomReport& r : furnished->rooms) {
@@ -146,7 +147,7 @@ int main(int argc, char** argv) {
               rooms_reachable, reach_rooms, zones_reachable, reach_zones, removed);
   std::printf("physics (2 s in Bullet): %d/%d free objects strict (1 cm, 0.1 rad), %d loose (20 cm, 8 deg), %d start inside "
               "another; %d optional pieces that moved taken out; settle %.2f s a room\n",
-              strict, free, loose, starts_inside, physics_removed, furnished_rooms ? physics_seconds / furnished_rooms : 0.0);
+              stability.strict, stability.free, stability.loose, starts_inside, physics_removed, furnished_rooms ? physics_seconds / furnished_rooms : 0.0);
   if (failing) {
     std::printf("\nrooms whose functional check fails (%zu):\n", lines.size());
     for (const std::string& l : lines) std::printf("  %s\n", l.c_str());

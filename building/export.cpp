@@ -403,6 +403,28 @@ Status ExportBuilding(const BuildingMesh& building, const std::filesystem::path&
 
 namespace villa {
 
+std::string SceneNodeInfo::Meta(const std::string& key) const {
+  auto it = metadata.find(key);
+  return it == metadata.end() ? std::string() : it->second;
+}
+
+TriangleMesh PlanFrameMesh(const SceneInfo& info, const SceneNodeInfo& node, bool world) {
+  TriangleMesh out;
+  const auto& m = node.global;
+  for (int k : node.meshes) {
+    const TriangleMesh& src = info.meshes[k].mesh;
+    const int base = static_cast<int>(out.vertices.size());
+    for (const Vec3& v : src.vertices) {
+      const Vec3 f = world ? Vec3{m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3], m[4] * v.x + m[5] * v.y + m[6] * v.z + m[7],
+                                  m[8] * v.x + m[9] * v.y + m[10] * v.z + m[11]}
+                           : v;
+      out.vertices.push_back({f.x, -f.z, f.y});
+    }
+    for (const auto& t : src.triangles) out.AddTriangle(base + t[0], base + t[1], base + t[2]);
+  }
+  return out;
+}
+
 const SceneNodeInfo* SceneInfo::Find(std::string_view name) const {
   for (const SceneNodeInfo& n : nodes)
     if (n.name == name) return &n;

@@ -74,6 +74,7 @@ struct SceneNodeInfo {
   std::map<std::string, std::string> metadata;  // key -> value as text ("utility-room", "16", "0")
   std::array<double, 16> local{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};   // row-major, to the parent's frame
   std::array<double, 16> global{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // row-major, to the file's frame
+  std::string Meta(const std::string& key) const;  // the metadata value, "" when absent
 };
 struct SceneMeshInfo {
   std::string name;
@@ -97,6 +98,9 @@ struct SceneInfo {
   const SceneNodeInfo* Find(std::string_view name) const;
 };
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path);
+// A node's meshes in the plan frame (z up; glTF's file frame is +Y up: file (x, y, z) is plan (x, -z, y)),
+// in the node's own frame (`world` false) or moved by its global transform.
+TriangleMesh PlanFrameMesh(const SceneInfo& info, const SceneNodeInfo& node, bool world);
 // The same from a file's bytes; `extension` tells the format ("glb").
 Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension);
 

@@ -368,12 +368,8 @@ Result<SceneEvalSummary> EvaluateScenes(const std::vector<SceneRequest>& request
           summary.functional_all.Add(villa->summary.functional);
           if (villa->physics) {
             summary.physics_measured = true;
-            for (const auto& [type, c] : villa->physics->by_room_type) {
-              physics::StabilityCount& to = summary.stability[type];
-              to.free += c.free, to.strict += c.strict, to.loose += c.loose;
-            }
-            const physics::StabilityCount& c = villa->physics->all;
-            summary.stability_all.free += c.free, summary.stability_all.strict += c.strict, summary.stability_all.loose += c.loose;
+            for (const auto& [type, c] : villa->physics->by_room_type) summary.stability[type] += c;
+            summary.stability_all += villa->physics->all;
           }
           summary.room_seconds += villa->summary.room_seconds;
           summary.furnished_rooms += villa->summary.furnished;

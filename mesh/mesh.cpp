@@ -1,6 +1,7 @@
 #include "mesh/mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -90,6 +91,30 @@ std::vector<int> PieceRoots(const TriangleMesh& mesh) {
   }
   for (size_t v = 0; v < parent.size(); ++v) parent[v] = find(static_cast<int>(v));
   return parent;
+}
+
+std::vector<TriangleMesh> SplitPieces(const TriangleMesh& mesh) {
+  const std::vector<int> root = PieceRoots(mesh);
+  std::vector<int> piece_of(mesh.vertices.size(), -1), index(mesh.vertices.size(), -1);
+  std::vector<TriangleMesh> out;
+  for (const auto& t : mesh.triangles) {
+    int& p = piece_of[root[t[0]]];
+    if (p < 0) {
+      p = static_cast<int>(out.size());
+      out.emplace_back();
+    }
+    TriangleMesh& piece = out[p];
+    std::array<int, 3> local;
+    for (int k = 0; k < 3; ++k) {
+      if (index[t[k]] < 0) {
+        index[t[k]] = static_cast<int>(piece.vertices.size());
+        piece.vertices.push_back(mesh.vertices[t[k]]);
+      }
+      local[k] = index[t[k]];
+    }
+    piece.triangles.push_back(local);
+  }
+  return out;
 }
 
 }  // namespace villa

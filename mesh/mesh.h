@@ -49,6 +49,9 @@ struct TriangleMesh {
 
 // For every vertex, the root vertex of its piece (triangles joined through shared vertex indices).
 std::vector<int> PieceRoots(const TriangleMesh& mesh);
+// The mesh split into those pieces, each with its own vertices (the ones its triangles use), in the order
+// of their first triangle.
+std::vector<TriangleMesh> SplitPieces(const TriangleMesh& mesh);
 
 // The result of checking a mesh for being a closed, consistently oriented solid.
 struct SolidCheck {

@@ -9,30 +9,6 @@
 namespace villa::physics {
 namespace {
 
-std::string Meta(const SceneNodeInfo& n, const std::string& key) {
-  auto it = n.metadata.find(key);
-  return it == n.metadata.end() ? std::string() : it->second;
-}
-
-// A node's meshes moved by its global transform, in the plan frame (glTF +Y up: file (x, y, z) is plan
-// (x, -z, y)).
-TriangleMesh WorldMesh(const SceneInfo& info, const SceneNodeInfo& n) {
-  TriangleMesh out;
-  const auto& m = n.global;
-  for (int k : n.meshes) {
-    const TriangleMesh& src = info.meshes[k].mesh;
-    const int base = static_cast<int>(out.vertices.size());
-    for (const Vec3& v : src.vertices) {
-      const double x = m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3];
-      const double y = m[4] * v.x + m[5] * v.y + m[6] * v.z + m[7];
-      const double z = m[8] * v.x + m[9] * v.y + m[10] * v.z + m[11];
-      out.vertices.push_back({x, -z, y});
-    }
-    for (const auto& t : src.triangles) out.AddTriangle(base + t[0], base + t[1], base + t[2]);
-  }
-  return out;
-}
-
 std::string RoomType(const std::string& room) {
   if (auto name = ParseRoomName(room)) return std::string(CategoryName(name->category));
   return room.substr(0, room.find('_'));
@@ -44,23 +20,23 @@ static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string&
   GlbBodies out;
   for (const SceneNodeInfo& n : info.nodes) {
     if (n.meshes.empty()) continue;
-    TriangleMesh mesh = WorldMesh(info, n);
+    TriangleMesh mesh = PlanFrameMesh(info, n, true);
     for (const Vec3& v : mesh.vertices)
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
         return Error{glb + ": node " + n.name + ": a vertex is not finite"};
-    const std::string room = Meta(n, "room");
+    const std::string room = n.Meta("room");
     if (room.empty()) {
       out.statics.push_back(std::move(mesh));
       continue;
     }
-    const std::string category = Meta(n, "category"), relation = Meta(n, "relation");
+    const std::string category = n.Meta("category"), relation = n.Meta("relation");
     const Box3 box = mesh.Bounds();
-    if (category == "rug" || (Meta(n, "parent") == "floor" && box.max.z - box.min.z <= 0.003)) {
+    if (category == "rug" || (n.Meta("parent") == "floor" && box.max.z - box.min.z <= 0.003)) {
       ++out.decals;
       continue;
     }
     SettleBody b;
-    b.id = Meta(n, "id").empty() ? n.name : Meta(n, "id");
+    b.id = n.Meta("id").empty() ? n.name : n.Meta("id");
     b.welded = relation == "on_wall" || relation == "hanging" || category == "hanging-clothes" ||
                (!only.empty() && std::find(only.begin(), only.end(), b.id) == only.end());
     b.mesh = std::move(mesh);
@@ -99,11 +75,9 @@ Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::s
     GlbObjectMotion& o = summary.objects[i];
     o.motion = settled->bodies[i];
     if (o.motion.welded) continue;
-    for (StabilityCount* c : {&summary.all, &summary.by_room_type[o.room_type]}) {
-      ++c->free;
-      c->strict += o.motion.strict;
-      c->loose += o.motion.loose;
-    }
+    const StabilityCount one{1, o.motion.strict, o.motion.loose};
+    summary.all += one;
+    summary.by_room_type[o.room_type] += one;
   }
   summary.parts = settled->parts;
   summary.starts_inside = settled->starts_inside;

@@ -24,6 +24,10 @@ struct GlbObjectMotion {
 
 struct StabilityCount {
   int free = 0, strict = 0, loose = 0;
+  StabilityCount& operator+=(const StabilityCount& o) {
+    free += o.free, strict += o.strict, loose += o.loose;
+    return *this;
+  }
 };
 
 struct GlbSettleSummary {

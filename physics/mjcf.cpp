@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 
@@ -19,16 +18,8 @@ namespace fs = std::filesystem;
 // The triangles of each connected piece of `mesh` whose box is at least 0.1 mm thick every way (MuJoCo
 // needs a volume).
 std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
-  const std::vector<int> root = PieceRoots(mesh);
-  std::map<int, TriangleMesh> pieces;
-  for (const auto& t : mesh.triangles) {
-    TriangleMesh& piece = pieces[root[t[0]]];
-    const int base = static_cast<int>(piece.vertices.size());
-    for (int k = 0; k < 3; ++k) piece.vertices.push_back(mesh.vertices[t[k]]);
-    piece.AddTriangle(base, base + 1, base + 2);
-  }
   std::vector<TriangleMesh> out;
-  for (auto& [r, piece] : pieces) {
+  for (TriangleMesh& piece : SplitPieces(mesh)) {
     const Box3 b = piece.Bounds();
     if (b.max.x - b.min.x < 1e-4 || b.max.y - b.min.y < 1e-4 || b.max.z - b.min.z < 1e-4) continue;
     out.push_back(std::move(piece));

@@ -78,22 +78,9 @@ std::string SettleOptions::Check() const {
 }
 
 std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh) {
-  const std::vector<int> root = PieceRoots(mesh);
-  std::vector<int> slot(mesh.vertices.size(), -1);
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (const auto& t : mesh.triangles)
-    for (int v : t) used[v] = true;
   std::vector<std::vector<Vec3>> out;
-  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (!used[v]) continue;
-    const int r = root[v];
-    if (slot[r] < 0) {
-      slot[r] = static_cast<int>(out.size());
-      out.emplace_back();
-    }
-    out[slot[r]].push_back(mesh.vertices[v]);
-  }
-  std::erase_if(out, [](const std::vector<Vec3>& piece) { return piece.size() < 4; });
+  for (TriangleMesh& piece : SplitPieces(mesh))
+    if (piece.vertices.size() >= 4) out.push_back(std::move(piece.vertices));
   return out;
 }
 

@@ -191,15 +191,6 @@ struct ExactChecker::Impl {
 
 namespace {
 
-// Whether object i hangs from its parent cavity's rail (a garment on a hanger).
-bool HangsOnRail(const RoomState& st, int i) {
-  const int p = st.parent[i];
-  if (p < 0 || st.objects[i].relation != Relation::kInside || !HangsFromRail(st.objects[i].category)) return false;
-  const std::vector<Cavity>& cavities = st.objects[p].asset.cavities;
-  const int k = st.placements[i].cavity;
-  return k >= 0 && k < static_cast<int>(cavities.size()) && cavities[k].rail.has_value();
-}
-
 bool SamePose(const Pose& a, const Pose& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z && a.yaw == b.yaw && a.scale == b.scale;
 }
@@ -376,7 +367,7 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
       const double t = opt.containment_tolerance;
       const OrientedBox box = st.WorldBox(i);
       // A hanging garment's hook reaches over the rail, above the box.
-      const double top = HangsOnRail(st, i) ? *cav.rail + 2.0 * kHookRise : cav.max.z;
+      const double top = st.HangsOnRail(i) ? *cav.rail + 2.0 * kHookRise : cav.max.z;
       bool within = box.z0 - f.z >= cav.min.z * f.scale - t && box.z1 - f.z <= top * f.scale + t;
       for (Point corner : box.Footprint()) {
         const Point q = f.ToLocal(corner);
@@ -385,7 +376,7 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
       }
       // A hanger's hook rests on the rail as a book on its shelf: lifted, it is free.
       const bool touches = AabbOverlap(boxes[p], boxes[i]) &&
-                           (HangsOnRail(st, i) ? im.Enters(object(p), object(i), opt.nudge)
+                           (st.HangsOnRail(i) ? im.Enters(object(p), object(i), opt.nudge)
                                                : decide(st.objects[p].id, st.placements[p].pose, st.objects[i].id, pose,
                                                         [&] { return im.Collide(object(p), object(i)); }));
       c.contained = within && !touches && c.support_gap <= opt.tau;

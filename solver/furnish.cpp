@@ -638,22 +638,11 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
     if (!r.error.empty()) return Error{r.error};
   FurnishSummary& sum = villa.summary;
   // Reachability before the rooms are gathered: its feedback may still change them.
+  std::string reach_unmeasured;  // why, when it was asked for and could not be measured
   if (options.check_reach) {
     auto reach = CheckReachability(villa.layout, villa.building, results, options);
-    if (reach.ok()) {
-      villa.reach = std::move(*reach);
-      sum.reach_checked = true;
-      sum.reach_rooms = villa.reach->rooms;
-      sum.rooms_reachable = villa.reach->rooms_reachable;
-      sum.reach_zones = villa.reach->zones;
-      sum.zones_reachable = villa.reach->zones_reachable;
-      sum.reach_acc = villa.reach->acc_mean;
-      sum.reach_actions = villa.reach->actions;
-      sum.reach_note = villa.reach->outcome;
-      sum.reach_seconds = villa.reach->seconds;
-    } else {
-      sum.reach_note = "not measured: " + reach.error();
-    }
+    if (reach.ok()) villa.reach = std::move(*reach);
+    else reach_unmeasured = "not measured: " + reach.error();
   }
 
   // The scene, the summary's room figures and each room's functional check from the rooms as their solvers
@@ -665,12 +654,16 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
     s.library = library_ref;
     s.build = {options.build.slab_thickness, options.build.exterior_wall_thickness, options.build.interior_wall_thickness};
     villa.rooms.clear();
-    FurnishSummary fresh;
-    fresh.reach_checked = sum.reach_checked, fresh.reach_rooms = sum.reach_rooms, fresh.rooms_reachable = sum.rooms_reachable;
-    fresh.reach_zones = sum.reach_zones, fresh.zones_reachable = sum.zones_reachable, fresh.reach_acc = sum.reach_acc;
-    fresh.reach_actions = sum.reach_actions, fresh.reach_note = sum.reach_note, fresh.reach_seconds = sum.reach_seconds;
-    sum = fresh;
+    sum = FurnishSummary{};
     sum.rooms = static_cast<int>(n);
+    sum.reach_note = reach_unmeasured;
+    if (const std::optional<ReachFigures>& reach = villa.reach) {
+      sum.reach_checked = true;
+      sum.reach_rooms = reach->rooms, sum.rooms_reachable = reach->rooms_reachable;
+      sum.reach_zones = reach->zones, sum.zones_reachable = reach->zones_reachable;
+      sum.reach_acc = reach->acc_mean, sum.reach_actions = reach->actions;
+      sum.reach_note = reach->outcome, sum.reach_seconds = reach->seconds;
+    }
     for (const RoomResult& r : results) {
       s.rooms.push_back(r.entry);
       s.objects.insert(s.objects.end(), r.objects.begin(), r.objects.end());
@@ -758,6 +751,7 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
         sum.physics_simulated = options.settle.seconds;
         sum.physics_removed = taken;
         villa.physics = std::move(*settled);
+        villa.glb = std::move(*glb);  // the bytes settled are the ones written
         break;
       }
       for (size_t i : changed) TakeSolution(results[i]);
@@ -833,6 +827,7 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
 }
 
 Result<std::string> FurnishedGlb(const FurnishedVilla& villa) {
+  if (!villa.glb.empty()) return villa.glb;
   ExportFurniture furniture;
   std::map<std::string, int> mesh_of;
   std::vector<std::shared_ptr<const AssetMesh>> keep;  // the borrowed meshes live until the export is done

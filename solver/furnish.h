@@ -215,6 +215,9 @@ struct FurnishedVilla {
   std::string library_note;                  // "procedural assets only" ...
   std::optional<ReachFigures> reach;
   std::optional<physics::GlbSettleSummary> physics;  // the settle, when check_physics
+  // furnished.glb's bytes as the physics check settled them (FurnishLayout's final villa; empty without
+  // the check): FurnishedGlb() returns them rather than exporting again.
+  std::string glb;
   FurnishSummary summary;
 };
 
@@ -241,6 +244,7 @@ Result<FurnishSummary> FurnishLayoutFile(const std::filesystem::path& layout, co
 
 // The parts of the outputs, for tests and `villa generate`.
 nlohmann::ordered_json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& options);
+// The furnished .glb (villa.glb when FurnishLayout settled it, else exported now).
 Result<std::string> FurnishedGlb(const FurnishedVilla& villa);
 
 std::string FurnishCredits(const FurnishedVilla& villa);  // "" when no placed asset needs credit

@@ -34,12 +34,8 @@ Vec3 Apply(const Matrix& m, const Vec3& p) {
 // A node's transform acting on plan-frame points.
 Vec3 PlanApply(const Matrix& m, const Vec3& p) { return FromFile(Apply(m, ToFile(p))); }
 
-std::string Meta(const SceneNodeInfo& n, const std::string& key) {
-  auto it = n.metadata.find(key);
-  return it == n.metadata.end() ? std::string() : it->second;
-}
 std::optional<int> MetaInt(const SceneNodeInfo& n, const std::string& key) {
-  const std::string v = Meta(n, key);
+  const std::string v = n.Meta(key);
   if (v.empty()) return std::nullopt;
   try {
     size_t used = 0;
@@ -52,7 +48,7 @@ std::optional<int> MetaInt(const SceneNodeInfo& n, const std::string& key) {
 }
 // A node's exact name: extras.name (viewers rewrite names holding "/"), else its name.
 std::string NameOf(const SceneNodeInfo& n) {
-  const std::string name = Meta(n, "name");
+  const std::string name = n.Meta("name");
   return name.empty() ? n.name : name;
 }
 
@@ -63,18 +59,6 @@ Category CategoryOfRoom(const std::string& room, const std::string& category_tex
   return Category::kRoom;
 }
 
-// The meshes of a node in the plan frame: in the node's own frame (`world` false) or moved by its global
-// transform.
-TriangleMesh NodeMesh(const SceneInfo& info, const SceneNodeInfo& n, bool world) {
-  TriangleMesh out;
-  for (int m : n.meshes) {
-    const TriangleMesh& src = info.meshes[m].mesh;
-    const int base = static_cast<int>(out.vertices.size());
-    for (const Vec3& v : src.vertices) out.vertices.push_back(world ? FromFile(Apply(n.global, v)) : FromFile(v));
-    for (const auto& t : src.triangles) out.AddTriangle(base + t[0], base + t[1], base + t[2]);
-  }
-  return out;
-}
 
 // The top of a floor mesh: the largest boundary loop of its upward faces at its highest level (CCW),
 // and that height.
@@ -207,14 +191,14 @@ class Measurer {
     AssetMeshPart part;
     Pose pose;
     if (uniform) {  // the solver's own form: the asset frame and a pose
-      part.mesh = NodeMesh(info_, *f.node, false);
+      part.mesh = PlanFrameMesh(info_, *f.node, false);
       pose = {origin.x, origin.y, origin.z, std::atan2(c0.y, c0.x), sx};
     } else if (upright) {  // scaled per axis: the scale goes into the mesh
-      part.mesh = NodeMesh(info_, *f.node, false);
+      part.mesh = PlanFrameMesh(info_, *f.node, false);
       for (Vec3& v : part.mesh.vertices) v = {v.x * sx, v.y * sy, v.z * sz};
       pose = {origin.x, origin.y, origin.z, std::atan2(c0.y, c0.x), 1.0};
     } else {  // tilted or sheared: the moved mesh is the asset
-      part.mesh = NodeMesh(info_, *f.node, true);
+      part.mesh = PlanFrameMesh(info_, *f.node, true);
       pose = {0, 0, 0, 0, 1.0};
     }
     mesh->parts.push_back(std::move(part));
@@ -366,16 +350,16 @@ class Measurer {
 std::vector<FileObject> ObjectsOf(const SceneInfo& info) {
   std::vector<FileObject> out;
   for (const SceneNodeInfo& n : info.nodes) {
-    if (Meta(n, "room").empty()) continue;
+    if (n.Meta("room").empty()) continue;
     FileObject f;
     f.node = &n;
-    f.id = Meta(n, "id").empty() ? NameOf(n) : Meta(n, "id");
-    f.room = Meta(n, "room");
-    f.category = Meta(n, "category");
-    f.asset = Meta(n, "asset");
+    f.id = n.Meta("id").empty() ? NameOf(n) : n.Meta("id");
+    f.room = n.Meta("room");
+    f.category = n.Meta("category");
+    f.asset = n.Meta("asset");
     f.level = MetaInt(n, "level").value_or(0);
-    if (!Meta(n, "parent").empty()) f.parent = Meta(n, "parent");
-    if (auto r = ParseRelation(Meta(n, "relation"))) f.relation = *r;
+    if (!n.Meta("parent").empty()) f.parent = n.Meta("parent");
+    if (auto r = ParseRelation(n.Meta("relation"))) f.relation = *r;
     f.surface = MetaInt(n, "surface");
     f.cavity = MetaInt(n, "cavity");
     f.wall_edge = MetaInt(n, "wall");
@@ -458,7 +442,7 @@ Result<GlbMetricsSummary> MeasureFurnishedGlb(const fs::path& glb, const GlbMetr
     std::set<std::string> seen;
     for (const SceneNodeInfo& n : info->nodes) {
       const std::string name = NameOf(n);
-      if (Meta(n, "room").empty() && (!Meta(n, "area_m2").empty() || by_room.count(name)) && seen.insert(name).second)
+      if (n.Meta("room").empty() && (!n.Meta("area_m2").empty() || by_room.count(name)) && seen.insert(name).second)
         rooms.push_back(&n);
     }
     for (const auto& [room, list] : by_room)
@@ -480,7 +464,7 @@ Result<GlbMetricsSummary> MeasureFurnishedGlb(const fs::path& glb, const GlbMetr
     for (const SceneNodeInfo* node : rooms) {
       RoomProblem p;
       p.room = NameOf(*node);
-      auto [floor, top] = FloorTop(NodeMesh(*info, *node, true));
+      auto [floor, top] = FloorTop(PlanFrameMesh(*info, *node, true));
       const std::vector<const FileObject*>& list = by_room[p.room];
       if (floor.size() < 3) {
         // No floor to measure against: a square around the objects keeps floor objects in bounds.
@@ -501,11 +485,11 @@ Result<GlbMetricsSummary> MeasureFurnishedGlb(const fs::path& glb, const GlbMetr
         const Box3& b = part.bounds;
         if (b.max.z <= p.floor_z + 1e-3 || b.min.z >= p.floor_z + p.clear_height) continue;
         if (!near.Touches({b.min.x, b.min.y, b.max.x, b.max.y}, 0.5)) continue;
-        p.building.push_back({NameOf(*part.node), NodeMesh(*info, *part.node, true)});
+        p.building.push_back({NameOf(*part.node), PlanFrameMesh(*info, *part.node, true)});
       }
       GlbRoomMetrics m = measurer.Measure(std::move(p), list);
       m.room = NameOf(*node);
-      m.category = CategoryOfRoom(m.room, Meta(*node, "category"));
+      m.category = CategoryOfRoom(m.room, node->Meta("category"));
       m.level = MetaInt(*node, "level").value_or(list.empty() ? 0 : list.front()->level);
       summary.rooms.push_back(std::move(m));
     }

@@ -237,13 +237,13 @@ Layer ChildLayer(const RoomState& state, int parent, Layer::Kind kind, int group
     b.yaw_class = std::round(b.p[3] / kHalfPi) * kHalfPi;
     // A garment on a hanger: its hook on the rail (which runs along x over the cavity's middle), turned
     // across it, sliding along it.
-    const Cavity* c = kind == Layer::Kind::kCavity ? &pa.cavities[group] : nullptr;
-    if (motion != Motion::kFixed && c && c->rail && HangsFromRail(state.objects[i].category)) {
+    // (A movable body's placement names this layer's cavity: the solver sets it before making the layer.)
+    if (motion != Motion::kFixed && kind == Layer::Kind::kCavity && state.HangsOnRail(i)) {
       b.hangs = true;
       b.motion = Motion::kAlongWall;
       b.wall_dir = {1.0, 0.0};
       b.p[1] = 0.5 * (layer.cavity.min.y + layer.cavity.max.y);
-      b.p[2] = *c->rail * sp - (b.height - kHookRise) * b.s[0];
+      b.p[2] = *pa.cavities[group].rail * sp - (b.height - kHookRise) * b.s[0];
       b.p[3] = b.yaw_class = b.p[3] < 0.0 ? -kHalfPi : kHalfPi;
     }
     return b;

@@ -60,6 +60,14 @@ bool RoomState::Hung(int i) const {
   return objects[i].relation == Relation::kOnWall || objects[i].relation == Relation::kHanging;
 }
 
+bool RoomState::HangsOnRail(int i) const {
+  const int p = parent[i];
+  if (p < 0 || objects[i].relation != Relation::kInside || !HangsFromRail(objects[i].category)) return false;
+  const std::vector<Cavity>& cavities = objects[p].asset.cavities;
+  const int k = std::max(0, placements[i].cavity);
+  return k < static_cast<int>(cavities.size()) && cavities[k].rail.has_value();
+}
+
 std::vector<int> RoomState::Descendants(int i) const {
   std::vector<int> out;
   std::vector<int> stack = children[i];
@@ -87,8 +95,7 @@ double RoomState::SupportHeight(int i) const {
   if (objects[i].relation == Relation::kInside) {
     const Cavity& c = pa.cavities[std::max(0, placements[i].cavity)];
     // A hanging garment: its hook on the rail.
-    if (c.rail && HangsFromRail(objects[i].category))
-      return pp.z + pp.scale * *c.rail - (objects[i].asset.size.z - kHookRise) * placements[i].pose.scale;
+    if (HangsOnRail(i)) return pp.z + pp.scale * *c.rail - (objects[i].asset.size.z - kHookRise) * placements[i].pose.scale;
     return pp.z + pp.scale * c.min.z;
   }
   const int k = std::max(0, placements[i].surface);

@@ -39,6 +39,8 @@ struct RoomState {
   // i is j's parent or j is i's.
   bool ParentChild(int i, int j) const;
   bool Hung(int i) const;  // on_wall or hanging: not a V_con object
+  // A garment on a hanger inside its parent's cavity that has a rail: it hangs from the rail by its hook.
+  bool HangsOnRail(int i) const;
   std::vector<int> Descendants(int i) const;
 
   OrientedBox WorldBox(int i) const;

@@ -123,7 +123,7 @@ TEST_CASE("Turning an asset to its picked front turns its mesh, size, surfaces a
   r.id = "sh3d:Test#thing";
   r.size = {1.0, 0.5, 0.8};
   r.support_surfaces = {{0.4, {{-0.5, -0.25}, {0.5, -0.25}, {0.5, 0.25}, {-0.5, 0.25}}, 0.4, "mesh"}};
-  r.cavities = {{{-0.4, -0.2, 0.1}, {0.0, 0.2, 0.4}, "-y", 0}};
+  r.cavities = {{{-0.4, -0.2, 0.1}, {0.0, 0.2, 0.4}, "-y", 0, std::nullopt}};
   AssetMesh mesh;
   mesh.parts.push_back({{}, {}});
   mesh.parts[0].mesh.vertices = {{0.5, -0.25, 0.0}, {-0.5, 0.25, 0.8}};

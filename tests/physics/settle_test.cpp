@@ -55,14 +55,18 @@ TEST_CASE("A cup floating above a table falls and is reported, the table and a c
 
 TEST_CASE("A welded picture stays on its wall, the same picture unwelded falls to the floor", "[physics]") {
   const TriangleMesh picture = Box({-0.3, 0.97, 1.3}, {0.3, 1.0, 1.7});
+  // A wall shelf with a cup on it: welded, it holds the cup; free, both fall.
+  const TriangleMesh shelf = Box({-0.4, 0.8, 1.0}, {0.4, 1.0, 1.02}), cup = Box({-0.04, 0.86, 1.02}, {0.04, 0.94, 1.12});
   for (const bool welded : {true, false}) {
-    auto settled = Settle(kFloor, {Body("picture", picture, welded)});
+    auto settled = Settle(kFloor, {Body("picture", picture, welded), Body("shelf", shelf, welded), Body("cup", cup)});
     REQUIRE(settled.ok());
     const BodyMotion& m = settled->bodies[0];
     CHECK(m.welded == welded);
-    CHECK(settled->free == (welded ? 0 : 1));
+    CHECK(settled->free == (welded ? 1 : 3));
     if (welded) CHECK(m.moved == 0.0);
     else CHECK(m.moved > 1.0);
+    CHECK(settled->bodies[2].strict == welded);  // the cup stays only on a welded shelf
+    if (!welded) CHECK(settled->bodies[2].shift.z < -0.9);
   }
 }
 
