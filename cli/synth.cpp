@@ -1,9 +1,9 @@
 // villa synth --count N --out DIR [--seed S] [--floors 2:4:4] [--grid 0.5] [--threads T] [--shard i/n]
 //             [--previews K] [--force]
+// --shard auto takes the shard from a Slurm array task or a Kubernetes indexed job (util/shard.h).
 // Synthesizes a layout dataset with the procedural partitioner: DIR/layouts.jsonl, DIR/manifest.json,
 // DIR/stats.json and optional preview pictures. Byte-identical for any --threads; shards concatenated in
 // order equal the unsharded run.
-#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "cli/flags.h"
 #include "partitioner/dataset.h"
 #include "util/progress.h"
+#include "util/shard.h"
 #ifdef VILLA_HAVE_RENDER
 #include "render/plan_render.h"
 #endif
@@ -33,12 +34,6 @@ struct SynthCommand {
   int previews = 0;
   bool force = false;
 };
-
-bool ParseUnsigned(std::string_view text, uint64_t* value) {
-  if (text.empty()) return false;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *value);
-  return ec == std::errc() && end == text.data() + text.size();
-}
 
 // "2:4:4" -> weights of single, two and three story buildings.
 void ParseFloors(const std::string& text, double weights[3]) {
@@ -67,20 +62,16 @@ void ParseFloors(const std::string& text, double weights[3]) {
   }
 }
 
-void ParseShard(const std::string& text, uint64_t* index, uint64_t* count) {
-  const std::size_t slash = text.find('/');
-  if (slash == std::string::npos || !ParseUnsigned(std::string_view(text).substr(0, slash), index) ||
-      !ParseUnsigned(std::string_view(text).substr(slash + 1), count))
-    throw UsageError("synth: --shard \"" + text + "\": expected i/n, e.g. 0/4");
-}
-
 void Run(const SynthCommand& command) {
   SynthOptions options;
   options.count = command.count;
   options.seed = command.seed;
   ParseFloors(command.floors, options.floor_weights);
   options.floors_text = command.floors;
-  ParseShard(command.shard, &options.shard_index, &options.shard_count);
+  Result<Shard> shard = ParseShard(command.shard);
+  if (!shard) throw UsageError("synth: " + shard.error());
+  options.shard_index = shard->index;
+  options.shard_count = shard->count;
   options.threads = command.threads;
   options.previews = command.previews;
   options.force = command.force;
@@ -88,7 +79,13 @@ void Run(const SynthCommand& command) {
   options.out = command.out;
   std::string problem;
   if (!options.IsValid(&problem)) throw UsageError("synth: " + problem);
-  if (Status output = CheckSynthOutput(options); !output) throw UsageError("synth: " + output.error());
+  Result<bool> done = CheckSynthOutput(options);
+  if (!done) throw UsageError("synth: " + done.error());
+  if (*done) {
+    std::cout << "villa synth: shard " << shard->Text() << " in " << options.out.string()
+              << " is already done (its manifest has this recipe and layouts.jsonl verifies); nothing to do\n";
+    return;
+  }
 
   // Previews are floor plans (render/): the partitioner itself draws nothing.
   PreviewWriter preview;
@@ -101,9 +98,7 @@ void Run(const SynthCommand& command) {
 #else
   if (options.previews > 0) throw UsageError("synth: --previews needs the render component, which this build lacks");
 #endif
-  const uint64_t first = options.count * options.shard_index / options.shard_count;
-  const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
-  ProgressBar bar("synth", last - first);
+  ProgressBar bar("synth", shard->Last(options.count) - shard->First(options.count));
   Result<SynthSummary> summary = SynthesizeDataset(options, preview, [&](std::size_t n) { bar.Advance(n); });
   bar.Finish();
   if (!summary) throw std::runtime_error(summary.error());
@@ -132,7 +127,10 @@ Registration registration{30, [](CLI::App& app) {
                   "ratio of single:two:three story buildings, exact by index (default 2:4:4)");
   sub->add_option("--grid", command->grid, "coordinate grid in metres (default 0.5)")->check(NumberIn(0.01, 1.0));
   sub->add_option("--threads", command->threads, "worker threads (default 0 = all cores)")->transform(WholeIn(0, 1024));
-  sub->add_option("--shard", command->shard, "write only shard i of n, e.g. 3/8 (default 0/1)");
+  sub->add_option("--shard", command->shard,
+                  "write only shard i of n, e.g. 3/8 (default 0/1); auto: this Slurm array task's (SLURM_ARRAY_TASK_ID of "
+                  "SLURM_ARRAY_TASK_COUNT) or Kubernetes indexed job's (JOB_COMPLETION_INDEX of auto/n or VILLA_SHARD_COUNT). A "
+                  "shard already done with the same recipe is skipped; a torn one is redone");
   sub->add_option("--previews", command->previews, "render the first K layouts to DIR/previews/*.png")
       ->transform(WholeIn(0, 100000));
   sub->add_flag("--force", command->force, "write into a non-empty directory, replacing its dataset files");

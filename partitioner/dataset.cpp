@@ -11,6 +11,7 @@
 
 #include "util/atomic_file.h"
 #include "util/hash.h"
+#include "util/shard.h"
 #include "util/text_table.h"
 #include "util/version.h"
 
@@ -87,6 +88,39 @@ Json SynthStats::ToJson() const {
   j["categories"] = cat;
   j["seconds"] = std::round(seconds * 1000.0) / 1000.0;
   return j;
+}
+
+SynthStats SynthStats::FromJson(const Json& j) {
+  SynthStats s;
+  s.layouts = j.value("layouts", uint64_t{0});
+  s.first_index = j.value("first_index", uint64_t{0});
+  s.failures = j.value("failures", uint64_t{0});
+  s.validated = j.value("validated", uint64_t{0});
+  s.retries = j.value("retries", uint64_t{0});
+  s.angled = j.value("angled_layouts", uint64_t{0});
+  // (value() returns a copy: held here, since items() of a temporary would dangle in the loop)
+  const Json floors = j.value("floors", Json::object()), shapes = j.value("shapes", Json::object()),
+             per_floor = j.value("rooms_per_floor", Json::object()), categories = j.value("categories", Json::object());
+  for (const auto& [k, v] : floors.items()) s.floors[std::stoi(k)] = v.get<uint64_t>();
+  for (const auto& [k, v] : shapes.items()) s.shapes[k] = v.get<uint64_t>();
+  for (const auto& [k, v] : per_floor.items()) s.rooms_per_floor[std::stoi(k)] = v.get<uint64_t>();
+  for (const auto& [k, v] : categories.items()) s.categories[k] = v.get<uint64_t>();
+  s.seconds = j.value("seconds", 0.0);
+  return s;
+}
+
+SynthStats& SynthStats::operator+=(const SynthStats& o) {
+  layouts += o.layouts;
+  failures += o.failures;
+  retries += o.retries;
+  validated += o.validated;
+  angled += o.angled;
+  for (const auto& [k, v] : o.floors) floors[k] += v;
+  for (const auto& [k, v] : o.shapes) shapes[k] += v;
+  for (const auto& [k, v] : o.rooms_per_floor) rooms_per_floor[k] += v;
+  for (const auto& [k, v] : o.categories) categories[k] += v;
+  seconds += o.seconds;
+  return *this;
 }
 
 std::string SynthStats::Report() const {
@@ -169,16 +203,6 @@ Outcome MakeOne(const SynthOptions& o, const std::vector<int>& floor_plan, uint6
   return out;
 }
 
-void Merge(SynthStats& into, const SynthStats& from) {
-  into.layouts += from.layouts;
-  into.validated += from.validated;
-  into.angled += from.angled;
-  for (const auto& [k, v] : from.floors) into.floors[k] += v;
-  for (const auto& [k, v] : from.shapes) into.shapes[k] += v;
-  for (const auto& [k, v] : from.rooms_per_floor) into.rooms_per_floor[k] += v;
-  for (const auto& [k, v] : from.categories) into.categories[k] += v;
-}
-
 }  // namespace
 
 SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void(const std::string&)>& write_line,
@@ -220,7 +244,7 @@ SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void
         if (failures) failures->push_back(r.failure);
         continue;
       }
-      Merge(stats, r.part);
+      stats += r.part;
       write_line(r.line);
     }
   }
@@ -228,16 +252,94 @@ SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void
   return stats;
 }
 
-Status CheckSynthOutput(const SynthOptions& options) {
+Json SynthRecipe(const SynthOptions& options) {
+  const Shard shard{options.shard_index, options.shard_count};
+  Json recipe = Json::object();
+  recipe["count"] = options.count;
+  recipe["seed"] = options.seed;
+  recipe["floors"] = {options.floor_weights[0], options.floor_weights[1], options.floor_weights[2]};
+  recipe["grid"] = options.partition.grid;
+  recipe["shard"] = shard.Text();
+  recipe["index_range"] = {shard.First(options.count), shard.Last(options.count)};
+  recipe["layout_seed"] = "DatasetLayoutSeed(seed, index); floors by index from DatasetFloorPlan(count, floors)";
+  return recipe;
+}
+
+Json SynthManifest(const Json& recipe, const std::string& floors_text, uint64_t records, uint64_t checksum,
+                   const std::vector<std::string>& previews) {
+  Json manifest = Json::object();
+  manifest["tool"] = "villa";
+  manifest["version"] = kVersion;
+  manifest["command"] = "synth";
+  char hex[32];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum));
+  manifest["recipe"] = recipe;
+  std::ostringstream grid_text;
+  grid_text << recipe.at("grid").get<double>();
+  manifest["regenerate"] = "villa synth --count " + std::to_string(recipe.at("count").get<uint64_t>()) + " --seed " +
+                           std::to_string(recipe.at("seed").get<uint64_t>()) + " --floors " + floors_text + " --grid " +
+                           grid_text.str() + " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
+  manifest["record"] = "{\"id\", \"seed\", \"shape\", \"floors\", \"layout\"} one a line (layout: FORMAT.md JSON)";
+  manifest["files"] = {{"layouts.jsonl", {{"records", records}, {"fnv1a64", hex}}},
+                       {"stats.json", Json::object()},
+                       {"previews", previews}};
+  return manifest;
+}
+
+Status VerifySynthFolder(const std::filesystem::path& dir, Json* manifest_out) {
+  const std::filesystem::path manifest_path = dir / "manifest.json";
+  Result<std::string> text = ReadFile(manifest_path);
+  if (!text) return Error{text.error()};
+  Json manifest = Json::parse(*text, nullptr, false);
+  if (manifest.is_discarded() || !manifest.is_object() || manifest.value("command", "") != "synth" ||
+      !manifest.contains("recipe") || !manifest.contains("files"))
+    return Error{manifest_path.string() + ": not a villa synth manifest"};
+  try {
+    const Json& entry = manifest.at("files").at("layouts.jsonl");
+    const uint64_t records = entry.at("records").get<uint64_t>();
+    const std::string want = entry.at("fnv1a64").get<std::string>();
+    Result<std::string> layouts = ReadFile(dir / "layouts.jsonl");
+    if (!layouts) return Error{layouts.error()};
+    char hex[32];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(Fnv1a64(*layouts)));
+    if (want != hex)
+      return Error{(dir / "layouts.jsonl").string() + ": FNV-1a " + hex + " differs from the manifest's " + want + " (changed or torn)"};
+    const uint64_t lines = static_cast<uint64_t>(std::count(layouts->begin(), layouts->end(), '\n'));
+    if (lines != records)
+      return Error{(dir / "layouts.jsonl").string() + ": " + std::to_string(lines) + " lines, the manifest says " + std::to_string(records)};
+    for (const std::string& preview : manifest.at("files").value("previews", std::vector<std::string>{}))
+      if (!std::filesystem::is_regular_file(dir / preview)) return Error{(dir / preview).string() + ": listed in the manifest, missing"};
+  } catch (const Json::exception& e) {
+    return Error{manifest_path.string() + ": " + e.what()};
+  }
+  if (manifest_out) *manifest_out = std::move(manifest);
+  return Status{};
+}
+
+Result<bool> CheckSynthOutput(const SynthOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const std::string dir = options.out.string();
-  if (fs::exists(options.out, ec)) {
-    if (!fs::is_directory(options.out, ec)) return Error{"--out " + dir + ": exists and is not a directory"};
-    if (!fs::is_empty(options.out, ec) && !options.force)
-      return Error{"--out " + dir + ": directory is not empty (use --force to write into it)"};
+  if (!fs::exists(options.out, ec)) return false;
+  if (!fs::is_directory(options.out, ec)) return Error{"--out " + dir + ": exists and is not a directory"};
+  if (fs::is_empty(options.out, ec) || options.force) return false;
+  // A shard run before: the same recipe, whole and verified, is done; another recipe is another dataset.
+  if (fs::exists(options.out / "manifest.json", ec)) {
+    Json manifest;
+    if (VerifySynthFolder(options.out, &manifest)) {
+      if (manifest.at("recipe") == SynthRecipe(options) && manifest.value("version", "") == kVersion) return true;
+      return Error{"--out " + dir + ": holds another dataset (its manifest's recipe is " + manifest.at("recipe").dump() +
+                   "; use --force to replace it)"};
+    }
   }
-  return Status{};
+  // Only this command's own files, without a verified manifest: a run killed midway, redone.
+  for (const fs::directory_entry& e : fs::directory_iterator(options.out, ec)) {
+    const std::string name = e.path().filename().string();
+    const bool own = name == "layouts.jsonl" || name == "stats.json" || name == "manifest.json" || name == "previews" ||
+                     (name.starts_with(".") && name.find(".tmp-") != std::string::npos);
+    if (!own) return Error{"--out " + dir + ": directory is not empty (use --force to write into it)"};
+  }
+  return false;
 }
 
 Result<SynthSummary> SynthesizeDataset(const SynthOptions& options, const PreviewWriter& preview,
@@ -248,8 +350,6 @@ Result<SynthSummary> SynthesizeDataset(const SynthOptions& options, const Previe
   fs::create_directories(dir, ec);
   if (ec) return Error{dir.string() + ": cannot create directory: " + ec.message()};
 
-  const uint64_t first = options.count * options.shard_index / options.shard_count;
-  const uint64_t last = options.count * (options.shard_index + 1) / options.shard_count;
   AtomicFileWriter layouts(dir / "layouts.jsonl");
   if (!layouts.ok()) return Error{layouts.error()};
   uint64_t checksum = kFnv1a64Offset;
@@ -286,31 +386,8 @@ Result<SynthSummary> SynthesizeDataset(const SynthOptions& options, const Previe
   if (!WriteFileAtomic(dir / "stats.json", summary.stats.ToJson().dump(2) + "\n"))
     return Error{(dir / "stats.json").string() + ": cannot write"};
 
-  Json& manifest = summary.manifest;
-  manifest = Json::object();
-  manifest["tool"] = "villa";
-  manifest["version"] = kVersion;
-  manifest["command"] = "synth";
-  char hex[32];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum));
-  Json recipe = Json::object();
-  recipe["count"] = options.count;
-  recipe["seed"] = options.seed;
-  recipe["floors"] = {options.floor_weights[0], options.floor_weights[1], options.floor_weights[2]};
-  recipe["grid"] = options.partition.grid;
-  recipe["shard"] = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
-  recipe["index_range"] = {first, last};
-  recipe["layout_seed"] = "DatasetLayoutSeed(seed, index); floors by index from DatasetFloorPlan(count, floors)";
-  manifest["recipe"] = recipe;
-  std::ostringstream grid_text;
-  grid_text << options.partition.grid;
-  manifest["regenerate"] = "villa synth --count " + std::to_string(options.count) + " --seed " +
-                           std::to_string(options.seed) + " --floors " + options.floors_text + " --grid " +
-                           grid_text.str() + " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
-  manifest["record"] = "{\"id\", \"seed\", \"shape\", \"floors\", \"layout\"} one a line (layout: FORMAT.md JSON)";
-  manifest["files"] = {{"layouts.jsonl", {{"records", summary.stats.layouts}, {"fnv1a64", hex}}},
-                       {"stats.json", Json::object()},
-                       {"previews", summary.preview_files}};
+  summary.manifest = SynthManifest(SynthRecipe(options), options.floors_text, summary.stats.layouts, checksum, summary.preview_files);
+  const Json& manifest = summary.manifest;
   if (!WriteFileAtomic(dir / "manifest.json", manifest.dump(2) + "\n"))
     return Error{(dir / "manifest.json").string() + ": cannot write"};
   return summary;

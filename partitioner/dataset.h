@@ -54,6 +54,8 @@ struct SynthStats {
   double seconds = 0.0;
 
   Json ToJson() const;
+  static SynthStats FromJson(const Json& j);  // stats.json read back (`villa dataset merge` sums shards')
+  SynthStats& operator+=(const SynthStats& o);  // counts summed; first_index kept
   std::string Report() const;  // the summary printed by `villa synth`
 };
 
@@ -65,9 +67,23 @@ SynthStats SynthesizeShard(const SynthOptions& options, const std::function<void
                            const std::function<void(std::size_t)>& on_progress,
                            std::vector<std::string>* failures = nullptr);
 
-// Why `options.out` cannot take a dataset ("exists and is not a directory", "directory is not empty (use
-// --force to write into it)"), or OK. A usage problem: nothing is written.
-Status CheckSynthOutput(const SynthOptions& options);
+// Whether `options.out` can take this shard: false (write it: a missing or empty folder, --force, or only
+// the torn files of a run killed midway), true (already done: its manifest has this very recipe and tool
+// version and layouts.jsonl matches the manifest's checksum and record count; nothing to do), or a usage
+// error ("exists and is not a directory", "directory is not empty (use --force to write into it)", "holds
+// another dataset"). Nothing is written.
+Result<bool> CheckSynthOutput(const SynthOptions& options);
+
+// The manifest's "recipe" of a shard (count, seed, floors, grid, shard "i/n", index_range) and the whole
+// manifest.json as SynthesizeDataset writes it (`floors_text` as the user wrote --floors; `checksum` the
+// FNV-1a of layouts.jsonl). `villa dataset merge` writes a merged dataset's manifest with these, so it
+// equals the one-machine run's byte for byte.
+Json SynthRecipe(const SynthOptions& options);
+Json SynthManifest(const Json& recipe, const std::string& floors_text, uint64_t records, uint64_t checksum,
+                   const std::vector<std::string>& previews);
+// A synth folder whose manifest.json is a synth manifest and whose layouts.jsonl matches its checksum and
+// record count (and whose listed previews exist); the manifest is returned through `manifest`.
+Status VerifySynthFolder(const std::filesystem::path& dir, Json* manifest = nullptr);
 
 // Draws the preview of one layout into a PNG file (the CLI passes the floor-plan renderer; the
 // partitioner does not depend on render/).

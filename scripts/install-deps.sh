@@ -12,6 +12,7 @@ packages=(
   catch2 libcli11-dev libncurses-dev libtbb-dev libfcl-dev libembree-dev
   libpng-dev zlib1g-dev libstb-dev libcairo2-dev fonts-dejavu-core libcpp-httplib-dev
   sweethome3d-furniture libssl-dev tmux libbullet-dev libmujoco-dev
+  slurm-wlm munge
 )
 
 missing=()

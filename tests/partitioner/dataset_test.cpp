@@ -17,6 +17,12 @@
 using namespace villa;
 namespace fs = std::filesystem;
 
+// CheckSynthOutput as a number: -1 refused, 0 to write, 1 already done.
+int Done(const SynthOptions& options) {
+  const Result<bool> r = CheckSynthOutput(options);
+  return r.ok() ? (*r ? 1 : 0) : -1;
+}
+
 TEST_CASE("a synthesized dataset holds its layouts, stats and a manifest with the layouts' checksum", "[synth]") {
   const fs::path dir = fs::temp_directory_path() / ("villa_dataset_test_" + std::to_string(getpid()));
   fs::remove_all(dir);
@@ -30,7 +36,7 @@ TEST_CASE("a synthesized dataset holds its layouts, stats and a manifest with th
   options.out = dir;
   std::string problem;
   REQUIRE(options.IsValid(&problem));
-  REQUIRE(CheckSynthOutput(options).ok());
+  REQUIRE(Done(options) == 0);
   std::vector<std::string> titles;
   const PreviewWriter preview = [&](const Layout& layout, const std::string& title, const fs::path& png) {
     titles.push_back(title);
@@ -60,12 +66,27 @@ TEST_CASE("a synthesized dataset holds its layouts, stats and a manifest with th
   CHECK(m["files"]["layouts.jsonl"]["records"] == 5);
   CHECK(m["regenerate"] == "villa synth --count 5 --seed 3 --floors 1:1:1 --grid 0.5 --shard 0/1 --out DIR");
   CHECK(fs::exists(dir / "stats.json"));
-  // A second run into the same folder needs force.
-  const Status again = CheckSynthOutput(options);
+  // A second run of the same recipe finds the shard done; another recipe is another dataset (force
+  // replaces it); a stranger's file in the folder is refused.
+  CHECK(Done(options) == 1);
+  CHECK(VerifySynthFolder(dir).ok());
+  options.seed = 4;
+  const Result<bool> other = CheckSynthOutput(options);
+  REQUIRE_FALSE(other.ok());
+  CHECK(other.error().find(": holds another dataset (its manifest's recipe is {\"count\":5,") != std::string::npos);
+  options.force = true;
+  CHECK(Done(options) == 0);
+  options.force = false;
+  options.seed = 3;
+  // A torn run (layouts.jsonl changed after the manifest) is redone, not kept.
+  REQUIRE(WriteFileAtomic(dir / "layouts.jsonl", layouts->substr(0, layouts->size() / 2)).ok());
+  CHECK(VerifySynthFolder(dir).error().find("differs from the manifest's") != std::string::npos);
+  CHECK(Done(options) == 0);
+  REQUIRE(WriteFileAtomic(dir / "notes.txt", "mine").ok());
+  const Result<bool> again = CheckSynthOutput(options);
   REQUIRE_FALSE(again.ok());
   CHECK(again.error() == "--out " + dir.string() + ": directory is not empty (use --force to write into it)");
   options.force = true;
-  CHECK(CheckSynthOutput(options).ok());
   // Previews without a writer are an error, not a crash.
   options.previews = 1;
   CHECK_FALSE(SynthesizeDataset(options, nullptr, nullptr).ok());
