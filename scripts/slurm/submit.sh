@@ -36,7 +36,7 @@ out=$(cd "$out" && pwd)
 
 # Measured on one core (docs/BENCHMARKS.md): synth ~1,000 layouts/s; scenes ~10 s a villa with procedural
 # assets (the default 2:4:4 floor mix, physics and reachability on), ~25 s with the imported library, and
-# at most ~0.2 GB (procedural) or ~3 GB (library) resident. Tasks are sized for ~30 minutes of work.
+# at most ~0.13 GB (procedural) or ~0.4 GB (library) resident. Tasks are sized for ~30 minutes of work.
 if [[ $kind == synth ]]; then
   [[ -n $count ]] || { echo "submit.sh: synth needs --count N" >&2; exit 2; }
   items=$count
@@ -56,7 +56,7 @@ else
   tasks=${tasks:-$(( (items * per_villa + 1799) / 1800 ))}
   (( tasks > items )) && tasks=$items
   per_task_s=$(( ((items + tasks - 1) / tasks) * per_villa * 2 / cpus + 300 ))
-  mem=${mem:-$(( library ? 4 : 1 ))G}
+  mem=${mem:-$(( library ? 2 : 1 ))G}
   args="--seed $seed ${extra[*]:-}"
 fi
 (( tasks >= 1 )) || tasks=1
