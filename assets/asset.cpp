@@ -417,6 +417,9 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
 }
 
 Result<std::vector<AssetRecord>> ReadAssetRecords(const std::string& path) {
+  // A folder, a FIFO or a device is no library (a folder once read as an empty one: furnishing went
+  // procedural without a word).
+  if (Status s = CheckReadable(path, std::uintmax_t{1} << 30); !s) return Error{s.error()};
   std::ifstream in(path);
   if (!in) return Error{path + ": cannot open for reading"};
   std::vector<AssetRecord> out;

@@ -13,6 +13,7 @@ constexpr char kMagic[8] = {'V', 'M', 'E', 'S', 'H', '1', '\0', '\0'};
 // Sanity bounds on what a file may declare before anything is allocated.
 constexpr std::uint32_t kMaxParts = 1u << 16;
 constexpr std::uint32_t kMaxCount = 1u << 26;
+constexpr double kMaxCoordinate = 1000.0;  // m from the asset's origin: no piece of furniture comes near
 
 void PutU32(std::string* out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out->push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
@@ -49,6 +50,7 @@ class Cursor {
     return true;
   }
   size_t pos() const { return pos_; }
+  size_t Left() const { return data_.size() - pos_; }
   bool AtEnd() const { return pos_ == data_.size(); }
 
  private:
@@ -120,11 +122,20 @@ Result<AssetMesh> ReadAssetMesh(const std::filesystem::path& path) {
     if (!c.U32(&name_size) || name_size > 4096 || !c.Bytes(name_size, &p.material.name)) return broken("bad material name");
     if (!c.F32(&p.material.r) || !c.F32(&p.material.g) || !c.F32(&p.material.b) || !c.F32(&p.material.alpha))
       return broken("bad material colour");
+    // Counts are checked against the bytes there before anything is allocated (issue 33: a 36-byte file
+    // declaring 2^26 vertices took 3 GB), and coordinates against a building's scale (3e38 crashed the ray tracer).
     if (!c.U32(&vertices) || vertices > kMaxCount) return broken("bad vertex count");
+    if (std::uint64_t{vertices} * 12 > c.Left())
+      return broken(std::to_string(vertices) + " vertices declared, " + std::to_string(c.Left()) + " bytes left (truncated)");
     p.mesh.vertices.resize(vertices);
-    for (Vec3& v : p.mesh.vertices)
+    for (Vec3& v : p.mesh.vertices) {
       if (!c.F32(&v.x) || !c.F32(&v.y) || !c.F32(&v.z)) return broken("truncated or non-finite vertex");
+      if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate || std::abs(v.z) > kMaxCoordinate)
+        return broken("a vertex beyond 1000 m of the asset's origin");
+    }
     if (!c.U32(&triangles) || triangles > kMaxCount) return broken("bad triangle count");
+    if (std::uint64_t{triangles} * 12 > c.Left())
+      return broken(std::to_string(triangles) + " triangles declared, " + std::to_string(c.Left()) + " bytes left (truncated)");
     p.mesh.triangles.resize(triangles);
     for (auto& t : p.mesh.triangles) {
       for (int& i : t) {

@@ -124,9 +124,12 @@ Sh3dCatalog ReadSh3dCatalog(const JavaProperties& p, const std::string& archive_
         return std::nullopt;
       }
       double value = 0;
-      if (!ParseNumber(*v, &value) || (positive && value <= 0)) {
+      // Issue 33: within 100 m either way (a width of 1e308 cm once became "size": [null, ...] in the library).
+      constexpr double kMaxCm = 10000.0;
+      if (!ParseNumber(*v, &value) || !std::isfinite(value) || (positive && value <= 0) || std::abs(value) > kMaxCm) {
         if (problem.empty())
-          problem = where + ": " + key + suffix + ": expected a number" + (positive ? " of cm > 0" : "") + ", got \"" + Excerpt(*v) + "\"";
+          problem = where + ": " + key + suffix + ": expected a number" + (positive ? " of cm in (0, 10000]" : " of cm within 10000") +
+                    ", got \"" + Excerpt(*v) + "\"";
         return std::nullopt;
       }
       return value;

@@ -505,6 +505,12 @@ Result<Sh3dImportSummary> ImportSh3dLibraries(const fs::path& from, const fs::pa
     auto [it, fresh] = mesh_owner.emplace(r.mesh.file, r.id);
     if (!fresh) return Error{"import: " + r.id + " and " + it->second + " map to one mesh file " + r.mesh.file};
   }
+  // Issue 33: an import that made nothing (no archives, or every piece skipped) is a failure, and the
+  // library it would have replaced stays as it was.
+  if (records.empty())
+    return Error{from.string() + ": no model imported (" + std::to_string(summary.archives) + " .sh3f archive(s), " +
+                 std::to_string(summary.models_read) + " piece(s) read, " + std::to_string(summary.skipped) +
+                 " skipped); the library is left as it was"};
   Status committed = staging->Commit(records, report.dump(1) + "\n", kKind);
   if (!committed.ok()) return Error{committed.error()};
   Result<AssetLibrary> written = AssetLibrary::Open(summary.library);

@@ -435,18 +435,110 @@ namespace {
 SceneInfo SceneInfoOf(const aiScene* scene);
 }  // namespace
 
+Status CheckGlbStructure(std::string_view bytes, const std::string& name) {
+  auto u32 = [&](std::size_t at) {
+    uint32_t v = 0;
+    for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+    return v;
+  };
+  if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") return Error{name + ": not a binary glTF (.glb): no \"glTF\" header"};
+  if (u32(4) != 2) return Error{name + ": glTF version " + std::to_string(u32(4)) + ", expected 2"};
+  if (u32(8) != bytes.size())
+    return Error{name + ": the header says " + std::to_string(u32(8)) + " bytes, the file has " + std::to_string(bytes.size()) + " (torn?)"};
+  const uint32_t json_length = u32(12);
+  if (u32(16) != 0x4E4F534Au || json_length > bytes.size() - 20) return Error{name + ": the first chunk is not a whole JSON chunk"};
+  if (json_length > (64u << 20))
+    return Error{name + ": a JSON chunk of " + std::to_string(json_length >> 20) + " MB, more than the 64 MB a scene's may be"};
+  const nlohmann::json j = nlohmann::json::parse(bytes.substr(20, json_length), nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return Error{name + ": its JSON chunk does not parse"};
+  auto bounded = [](const nlohmann::json& a, std::size_t at_least) {
+    if (!a.is_array() || a.size() < at_least) return false;
+    for (const auto& v : a)
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || std::abs(v.get<double>()) > kMaxGlbCoordinate) return false;
+    return true;
+  };
+  const nlohmann::json nodes = j.value("nodes", nlohmann::json::array());
+  if (!nodes.is_array()) return Error{name + ": \"nodes\" is not an array"};
+  if (nodes.size() > kMaxGlbNodes)
+    return Error{name + ": " + std::to_string(nodes.size()) + " nodes, more than the " + std::to_string(kMaxGlbNodes) + " a scene may have"};
+  std::vector<int> parent(nodes.size(), -1);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const nlohmann::json& n = nodes[i];
+    const std::string where = name + ": node " + std::to_string(i);
+    if (!n.is_object()) return Error{where + ": not an object"};
+    for (const char* key : {"translation", "scale", "matrix"})
+      if (n.contains(key) && !bounded(n[key], std::string(key) == "matrix" ? 16 : 3))
+        return Error{where + ": \"" + key + "\" " + n[key].dump().substr(0, 80) + " is not finite numbers within " +
+                     std::to_string(static_cast<long>(kMaxGlbCoordinate)) + " m"};
+    if (!n.contains("children")) continue;
+    if (!n["children"].is_array()) return Error{where + ": \"children\" is not an array"};
+    for (const auto& c : n["children"]) {
+      if (!c.is_number_unsigned() || c.get<std::size_t>() >= nodes.size()) return Error{where + ": child " + c.dump() + " is no node"};
+      const std::size_t k = c.get<std::size_t>();
+      if (parent[k] >= 0)
+        return Error{name + ": node " + std::to_string(k) + " has two parents (" + std::to_string(parent[k]) + " and " + std::to_string(i) + ")"};
+      parent[k] = static_cast<int>(i);
+    }
+  }
+  // Depth (and cycles) without recursion: walk up from each node, remembering depths found.
+  std::vector<int> depth(nodes.size(), -1);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    std::vector<std::size_t> chain;
+    std::size_t k = i;
+    while (depth[k] < 0 && parent[k] >= 0) {
+      chain.push_back(k);
+      if (chain.size() > nodes.size()) return Error{name + ": node " + std::to_string(i) + " is its own ancestor (a cycle)"};
+      k = static_cast<std::size_t>(parent[k]);
+    }
+    int d = depth[k] < 0 ? (depth[k] = 0) : depth[k];
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) depth[*it] = ++d;
+    if (d > kMaxGlbDepth)
+      return Error{name + ": nodes nested " + std::to_string(d) + " deep, more than the " + std::to_string(kMaxGlbDepth) + " a scene may be"};
+  }
+  for (const auto& b : j.value("buffers", nlohmann::json::array()))
+    if (b.is_object() && b.contains("uri") && !(b["uri"].is_string() && b["uri"].get<std::string>().rfind("data:", 0) == 0))
+      return Error{name + ": a buffer refers to an outside file (" + b["uri"].dump().substr(0, 80) + "); only embedded buffers are read"};
+  for (const auto& b : j.value("images", nlohmann::json::array()))
+    if (b.is_object() && b.contains("uri") && !(b["uri"].is_string() && b["uri"].get<std::string>().rfind("data:", 0) == 0))
+      return Error{name + ": an image refers to an outside file (" + b["uri"].dump().substr(0, 80) + "); only embedded images are read"};
+  const nlohmann::json accessors = j.value("accessors", nlohmann::json::array());
+  for (const auto& m : j.value("meshes", nlohmann::json::array()))
+    for (const auto& p : m.value("primitives", nlohmann::json::array())) {
+      if (!p.is_object() || !p.contains("attributes") || !p["attributes"].contains("POSITION")) continue;
+      const auto& a = p["attributes"]["POSITION"];
+      if (!a.is_number_unsigned() || a.get<std::size_t>() >= accessors.size())
+        return Error{name + ": a POSITION accessor " + a.dump() + " that does not exist"};
+      const auto& acc = accessors[a.get<std::size_t>()];
+      if (!bounded(acc.value("min", nlohmann::json()), 3) || !bounded(acc.value("max", nlohmann::json()), 3))
+        return Error{name + ": accessor " + a.dump() + " (POSITION): min/max missing, not finite or beyond " +
+                     std::to_string(static_cast<long>(kMaxGlbCoordinate)) + " m"};
+    }
+  return Status{};
+}
+
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
+  if (Status s = CheckReadable(path); !s) return Error{s.error()};
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".glb") {
+    auto bytes = ReadFile(path);
+    if (!bytes.ok()) return Error{bytes.error()};
+    return ReadSceneInfoFromMemory(*bytes, "glb", path.string());
+  }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode) return Error{path.string() + ": " + importer.GetErrorString()};
   return SceneInfoOf(scene);
 }
 
-Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension) {
+Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension, const std::string& name) {
+  if (extension == "glb")
+    if (Status s = CheckGlbStructure(bytes, name.empty() ? "in-memory .glb" : name); !s) return Error{s.error()};
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure,
                                                      extension.c_str());
-  if (!scene || !scene->mRootNode) return Error{std::string("in-memory .") + extension + ": " + importer.GetErrorString()};
+  if (!scene || !scene->mRootNode)
+    return Error{(name.empty() ? std::string("in-memory .") + extension : name) + ": " + importer.GetErrorString()};
   return SceneInfoOf(scene);
 }
 

@@ -97,11 +97,23 @@ struct SceneInfo {
   Box3 bounds;  // of all meshes, file frame
   const SceneNodeInfo* Find(std::string_view name) const;
 };
+// Reads a .glb (or any file assimp reads) as node and mesh lists. A .glb is checked first
+// (CheckGlbStructure): a file whose extension says .glb must be one.
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path);
+// What a reader of an untrusted .glb checks before the importer sees it (issue 33), naming `name` and the
+// bad value: the GLB header (magic "glTF", version 2, the declared length the file's), a JSON chunk that
+// parses; at most kMaxGlbNodes nodes, each child index in range and a child of one parent only, no cycle,
+// the hierarchy at most kMaxGlbDepth deep; buffers embedded (no uri, or a data: uri: an external path such
+// as /etc/passwd is refused); node translations, matrices and scales finite and within kMaxGlbCoordinate;
+// POSITION accessors' min and max finite and within it (NaN and 1e38 m vertices).
+inline constexpr std::size_t kMaxGlbNodes = 200000;
+inline constexpr int kMaxGlbDepth = 256;
+inline constexpr double kMaxGlbCoordinate = 1.0e5;  // m
+Status CheckGlbStructure(std::string_view bytes, const std::string& name);
 // A node's meshes in the plan frame (z up; glTF's file frame is +Y up: file (x, y, z) is plan (x, -z, y)),
 // in the node's own frame (`world` false) or moved by its global transform.
 TriangleMesh PlanFrameMesh(const SceneInfo& info, const SceneNodeInfo& node, bool world);
-// The same from a file's bytes; `extension` tells the format ("glb").
-Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension);
+// The same from a file's bytes; `extension` tells the format ("glb": checked first); `name` for messages.
+Result<SceneInfo> ReadSceneInfoFromMemory(const std::string& bytes, const std::string& extension, const std::string& name = "");
 
 }  // namespace villa

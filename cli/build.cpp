@@ -125,7 +125,7 @@ Registration registration{60, [](CLI::App& app) {
       "metres) or OBJ (+ .mtl). The layout must pass the geometric rules 1-5 (see `villa validate`).\n"
       "Exit status: 0 built, 1 unreadable or unbuildable layout, 2 usage.");
   sub->add_option("layout", command->input, "layout file (.json)")->required();
-  sub->add_option("-o,--output", command->output, "the 3D file to write (.glb or .obj)")->required();
+  sub->add_option("-o,--output", command->output, "the 3D file to write (.glb or .obj)")->required()->check(PathName());
   sub->add_option("--format", command->format, "glb or obj (default: from the output's extension, else glb)");
   sub->add_option("--preview", command->preview,
                   "also write a PNG: the building from outside and a cut-away of each level, side by side");

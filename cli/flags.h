@@ -70,4 +70,11 @@ inline CLI::Validator NumberIn(double min, double max, bool above_min = false) {
       std::string("NUMBER in ") + (above_min ? "(" : "[") + shown(min) + ", " + shown(max) + "]", "NumberIn");
 }
 
+// A file or folder name that is not empty (`-o ""` is a usage error, not a failure to create "").
+inline CLI::Validator PathName() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string { return text.empty() ? "an empty name is no file or folder" : std::string(); },
+      "PATH", "PathName");
+}
+
 }  // namespace villa::cli

@@ -16,6 +16,7 @@
 #include "critic/graph_planner.h"
 #include "solver/furnish.h"
 #include "util/progress.h"
+#include "util/staged_output.h"
 
 namespace villa::cli {
 namespace {
@@ -59,7 +60,9 @@ void ApplyCriticFlags(FurnishCommand& command) {
                      : command.cache_dir.empty() ? DefaultLlmCacheDir()
                                                  : std::filesystem::path(command.cache_dir);
   c.views.labels = true;
-  if (!command.no_critic_log) c.log_dir = std::filesystem::path(command.output) / "critic";
+  // Written into the run's staging folder and moved into DIR/critic with the other outputs (all or nothing).
+  if (!command.no_critic_log)
+    c.log_dir = std::filesystem::path(command.output) / StagedOutput::kStagingName / solver::kCriticLogFolder;
   if (std::string problem = c.Check(); !problem.empty()) throw UsageError("furnish: " + problem);
   command.options.critic = critic::MakeRoomCritic(c);
   if (graph_model) {
@@ -131,7 +134,7 @@ Registration registration{75, [](CLI::App& app) {
       "Exit status: 0 furnished (whatever the rooms' outcomes), 1 unreadable or unbuildable layout, bad\n"
       "library or write failure, 2 usage (unknown --room, existing outputs without --force, bad values).");
   sub->add_option("layout", command->layout, "layout file (.json)")->required();
-  sub->add_option("-o,--output", command->output, "folder to write into (created if missing)")->required();
+  sub->add_option("-o,--output", command->output, "folder to write into (created if missing)")->required()->check(PathName());
   sub->add_option("--room", o.rooms, "furnish only this room (repeatable), as the layout names it: living-room_0/0");
   sub->add_option("--text", o.text,
                   "the request: \"a cosy living room with two armchairs and bookshelves full of books; a desk by the "

@@ -9,6 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
+#include "cli/flags.h"
 #include "cli/critic_flag.h"
 #include "cli/furnish_flags.h"
 #include "generator/generate.h"
@@ -54,6 +55,7 @@ void Run(GenerateCommand& command) {
   Result<GenerateSummary> summary = GenerateVilla(command.text, options);
   if (progress) progress->Finish();
   if (!summary) {
+    if (summary.error().rfind("usage: ", 0) == 0) throw UsageError("generate: " + summary.error().substr(7));
     std::cerr << "villa generate: " << summary.error() << "\n";
     SetExitCode(kExitFailure);
     return;
@@ -90,7 +92,7 @@ Registration registration{65, [](CLI::App& app) {
       "Exit status: 0 a valid layout built and furnished, 1 the plan, the build or the furnishing failed (what\n"
       "could be written is written, report.json says why), 2 usage.");
   sub->add_option("text", command->text, "the request, in English (\"-\" reads it from stdin)")->required();
-  sub->add_option("-o,--out", command->out, "output folder (created if missing)")->required();
+  sub->add_option("-o,--out", command->out, "output folder (created if missing)")->required()->check(PathName());
   AddBackendFlags(sub, command->backend, command->api_key_env, command->options);
   AddFurnishFlags(sub, f);
   AddCriticChoice(sub, f);

@@ -9,6 +9,7 @@
 
 #include "cli/backend_flags.h"
 #include "cli/command.h"
+#include "util/utf8.h"
 #include "cli/flags.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
@@ -97,6 +98,7 @@ void Run(PlanCommand& command) {
   std::string text = command.text;
   if (text == "-") text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw UsageError("plan: the request text is empty");
+  if (std::string p = RequestTextProblem(text); !p.empty()) throw UsageError("plan: the request: " + p);
 
   const std::filesystem::path out = command.out;
   if (out.extension() != ".json") throw UsageError("-o " + command.out + ": the layout file must end in .json");
@@ -160,7 +162,7 @@ Registration registration{50, [](CLI::App& app) {
       "VCR, rounds, time) and OUT's .png (the floor plans).\n"
       "Exit status: 0 a valid layout was written, 1 no valid layout came out, 2 usage.");
   sub->add_option("text", command->text, "the request, in English (\"-\" reads it from stdin)")->required();
-  sub->add_option("-o,--out", command->out, "layout file to write (.json)")->required();
+  sub->add_option("-o,--out", command->out, "layout file to write (.json)")->required()->check(PathName());
   AddBackendFlags(sub, command->backend, command->api_key_env, command->options);
   sub->add_flag("--force", command->force, "overwrite existing output files");
   sub->add_flag("--no-png", command->no_png, "do not draw the floor-plan picture");

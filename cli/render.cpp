@@ -85,7 +85,7 @@ Registration registration{30, [](CLI::App& app) {
       "wall where the format puts them are red. Exit status: 0 written, 1 unreadable layout or write\n"
       "failure, 2 usage.");
   sub->add_option("file", command->input, "layout (.json), or a JSONL stream (.jsonl) with --line")->required();
-  sub->add_option("-o,--output", command->output, "picture to write: .png or .svg (written atomically)")->required();
+  sub->add_option("-o,--output", command->output, "picture to write: .png or .svg (written atomically)")->required()->check(PathName());
   sub->add_option("--line", command->line, "for a .jsonl stream: the line of the record to draw (default: the first)")
       ->transform(WholeIn(1, std::numeric_limits<int>::max()));
   sub->add_flag("-f,--force", command->force, "overwrite the output file when it exists");

@@ -145,7 +145,7 @@ Registration registration{70, [](CLI::App& app) {
                    "the request: \"two armchairs, bookshelves full of books and a desk by the window\"; objects the text "
                    "gives other rooms (\"a TV in the meeting room\") are left to them");
   plan->add_option("--seed", command->seed, "seed of the priors' draws")->capture_default_str()->transform(Seed());
-  plan->add_option("-o,--output", command->output, "the graph file to write (.json)")->required();
+  plan->add_option("-o,--output", command->output, "the graph file to write (.json)")->required()->check(PathName());
   plan->add_flag("--force", command->force, "overwrite an existing output file");
   plan->add_flag("--allow-invalid", command->allow_invalid, "plan even when the layout breaks the geometric rules");
   plan->add_option("--library", command->library,

@@ -89,7 +89,7 @@ Registration registration{78, [](CLI::App& app) {
       "Exit status: 0 every villa furnished, 1 some failed (their entries say why) or a write failed,\n"
       "2 usage (bad flags, a folder holding another recipe's shard, the shard running elsewhere).");
   sub->add_option("layouts", command->input, "the layouts (.jsonl)")->required();
-  sub->add_option("--out", command->out, "the shard's folder (created if missing)")->required();
+  sub->add_option("--out", command->out, "the shard's folder (created if missing)")->required()->check(PathName());
   sub->add_option("--shard", command->shard, "furnish only shard i of n, e.g. 3/8 (default 0/1); auto: from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX");
   sub->add_option("--seed", o.seed, "the dataset's furnishing seed (each villa's is mixed from it and its id)")->capture_default_str()->transform(Seed());
   sub->add_option("--critic", o.critic, "offline (default) or none")->check(CLI::IsMember({"offline", "none"}));

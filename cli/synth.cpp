@@ -121,7 +121,7 @@ Registration registration{30, [](CLI::App& app) {
       "byte-identical layouts.jsonl for any --threads, and shards concatenated in order equal the\n"
       "unsharded run. Exit status: 0 done, 1 some seed failed, 2 usage.");
   sub->add_option("--count", command->count, "layouts in the whole dataset")->required()->transform(WholeIn<uint64_t>(1, 1000000000));
-  sub->add_option("--out", command->out, "output directory (must be empty unless --force)")->required();
+  sub->add_option("--out", command->out, "output directory (must be empty unless --force)")->required()->check(PathName());
   sub->add_option("--seed", command->seed, "dataset seed (default 0)")->transform(Seed());
   sub->add_option("--floors", command->floors,
                   "ratio of single:two:three story buildings, exact by index (default 2:4:4)");

@@ -13,6 +13,8 @@
 #include "scene/file_digest.h"
 #include "scene/scene.h"
 #include "util/atomic_file.h"
+#include "util/staged_output.h"
+#include "util/utf8.h"
 
 namespace villa {
 namespace {
@@ -106,8 +108,7 @@ Status CheckGenerateOutput(const GenerateOptions& options) {
 
 Result<GenerateSummary> GenerateVilla(const std::string& text, const GenerateOptions& options) {
   const auto run_start = std::chrono::steady_clock::now();
-  const fs::path& dir = options.out;
-  const fs::path layout_path = dir / "layout.json", report_path = dir / "report.json";
+  if (std::string p = RequestTextProblem(text); !p.empty()) return Error{"usage: the request: " + p};
   // The library first: a bad --library is the user's to fix before anything runs.
   scene::FurnishingLibrary library;
   if (options.furnish) {
@@ -116,8 +117,12 @@ Result<GenerateSummary> GenerateVilla(const std::string& text, const GenerateOpt
     library = std::move(*opened);
   }
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) return Error{dir.string() + ": " + ec.message()};
+  // Issue 33: everything is written into a staging folder and moved into `dir` together at the end, under
+  // the folder's lock: a killed run leaves the folder as it was, a second run into it is refused meanwhile.
+  auto stage = StagedOutput::Open(options.out);
+  if (!stage.ok()) return Error{stage.error().rfind("busy: ", 0) == 0 ? "usage: " + stage.error().substr(6) : stage.error()};
+  const fs::path& dir = (*stage)->path();
+  const fs::path layout_path = dir / "layout.json", report_path = dir / "report.json";
 
   GenerateSummary summary;
   PlanSummary& plan = summary.plan;
@@ -243,6 +248,7 @@ Result<GenerateSummary> GenerateVilla(const std::string& text, const GenerateOpt
   summary.building = building_json;
   summary.report = report;
   for (const auto& f : files) summary.files.push_back(f.get<std::string>());
+  if (Status s = (*stage)->Commit(summary.files); !s) return Error{s.error()};
   return summary;
 }
 

@@ -283,7 +283,7 @@ Status KeepScene(const fs::path& keep, const std::string& layout_name, uint64_t 
   solver::FurnishOptions options = furnish;
   options.pictures = false;
   options.force = false;
-  auto written = solver::WriteFurnishedVilla(villa, partial, options);
+  auto written = solver::WriteFurnishedVillaFiles(villa, partial, options);
   if (!written.ok()) return Error{written.error()};
   if (Status s = WriteFileAtomic(partial / "layout.json", layout_text); !s) return s;
   fs::rename(partial, final_dir, ec);

@@ -1,6 +1,7 @@
 #include "layout/layout_io.h"
 
 #include <fstream>
+#include <limits>
 #include <set>
 
 #include "layout/shape_codec.h"
@@ -192,14 +193,22 @@ Status SaveLayout(const Layout& layout, const std::filesystem::path& path) {
   return WriteFileAtomic(path, LayoutToString(layout, 2) + "\n");
 }
 
+namespace {
+constexpr std::size_t kMaxJsonlLine = std::size_t{64} << 20;
+}  // namespace
+
 Status ReadJsonl(const std::filesystem::path& path, const std::function<bool(const Json&, int)>& on_record,
                  const std::function<void(const std::string&)>& on_bad_line) {
+  if (Status s = CheckReadable(path, std::numeric_limits<std::uintmax_t>::max()); !s) return s;
   std::ifstream in(path);
   if (!in) return Error{path.string() + ": cannot open"};
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
     ++number;
+    if (line.size() > kMaxJsonlLine)
+      return Error{path.string() + ":" + std::to_string(number) + ": a line of " + std::to_string(line.size() >> 20) +
+                   " MB, more than the 64 MB a record may be"};
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     Result<Json> record = ParseJson<Json>(line, path.string() + ":" + std::to_string(number));
     if (!record) {

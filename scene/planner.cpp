@@ -642,6 +642,11 @@ class Planning {
       const Wish& wish = request.wishes[w];
       if (wish.count == 0) continue;
       const CategoryInfo& info = *wish.category;
+      if (wish.count < 0) {
+        notes_.push_back("the request asks for " + std::to_string(wish.count) + " x " + std::string(info.name) +
+                         ": a count below zero is no count; none added for it");
+        continue;
+      }
       std::vector<int> parents;
       if (wish.container >= 0) parents = made[wish.container];
       const ItemPrior* item =

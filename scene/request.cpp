@@ -23,8 +23,13 @@ std::vector<Token> Tokenise(std::string_view text) {
     if (!word.empty()) tokens.push_back({word, sentence});
     word.clear();
   };
-  for (char raw : text) {
-    unsigned char c = static_cast<unsigned char>(raw);
+  for (size_t i = 0; i < text.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    // A minus sign before a number keeps it ("-3 armchairs" is no request for three).
+    if (c == '-' && word.empty() && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1]))) {
+      word.push_back('-');
+      continue;
+    }
     if (std::isalnum(c) || c >= 0x80) {
       word.push_back(static_cast<char>(std::tolower(c)));
     } else if (c == '\'') {
@@ -123,8 +128,13 @@ std::optional<int> NumberWord(const std::string& w) {
                                                               "seven", "eight", "nine", "ten", "eleven", "twelve"};
   for (size_t i = 0; i < kWords.size(); ++i)
     if (w == kWords[i]) return static_cast<int>(i);
-  if (!w.empty() && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-    return std::stoi(w);
+  // Digits of any length keep their size (capped at a million: "10000 armchairs" is not two) and their sign.
+  const bool negative = !w.empty() && w[0] == '-';
+  const std::string digits = negative ? w.substr(1) : w;
+  if (!digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+    const int n = digits.size() > 6 ? 1000000 : std::stoi(digits);
+    return negative ? -n : n;
+  }
   return std::nullopt;
 }
 

@@ -21,7 +21,8 @@ namespace villa::scene {
 
 struct Wish {
   const CategoryInfo* category = nullptr;
-  int count = 1;                 // 0: "no rug", "without a TV" (the priors must not add one either)
+  int count = 1;                 // 0: "no rug", "without a TV" (the priors must not add one either); < 0: "-3
+                                 // armchairs", not a count (the planner notes it and adds none)
   bool explicit_count = false;   // a number or article was given; false for a bare plural (2 assumed)
   int container = -1;            // index of the wish it goes on / in ("books" in "bookcase full of books")
   Relation relation = Relation::kOnTop;  // with a container: kOnTop or kInside

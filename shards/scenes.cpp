@@ -353,7 +353,7 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
         failure = villa.error();
       } else {
         villa->library_note = library->note;
-        auto written = solver::WriteFurnishedVilla(*villa, temp, fo);
+        auto written = solver::WriteFurnishedVillaFiles(*villa, temp, fo);
         if (!written) return Error{written.error()};  // a write failure is the machine's, not the villa's: stop
         Json report = solver::FurnishReportJson(*villa, fo);
         StripTimings(report);

@@ -22,6 +22,8 @@
 #include "solver/room_view.h"
 #include "solver/scene_problem.h"
 #include "util/atomic_file.h"
+#include "util/staged_output.h"
+#include "util/utf8.h"
 
 namespace villa::solver {
 namespace {
@@ -516,6 +518,8 @@ Status RefuseExisting(const fs::path& dir, const std::vector<std::string>& names
 
 std::string FurnishOptions::Check() const {
   if (jobs < 0 || jobs > 256) return "jobs = " + std::to_string(jobs) + ": must be in [0, 256]";
+  if (!text.empty())
+    if (std::string p = RequestTextProblem(text); !p.empty()) return "text: " + p;
   if (std::string p = build.Check(); !p.empty()) return p;
   if (std::string p = planner.Check(); !p.empty()) return "planner: " + p;
   if (std::string p = acquire.Check(); !p.empty()) return "assets: " + p;
@@ -1029,15 +1033,11 @@ Result<Image> RenderFurnishedPreview(const FurnishedVilla& villa, const PreviewO
   return RenderPreview(view, options);
 }
 
-Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
-                                                     const FurnishOptions& options) {
+Result<std::vector<std::string>> WriteFurnishedVillaFiles(const FurnishedVilla& villa, const fs::path& dir,
+                                                          const FurnishOptions& options) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) return Error{dir.string() + ": cannot create the folder: " + ec.message()};
-  const std::vector<std::string> names = OutputNames(villa.layout, options.pictures);
-  if (!options.force)
-    if (Status refused = RefuseExisting(dir, names); !refused) return Error{refused.error()};
-
   std::vector<std::string> written;
   auto write = [&](const std::string& name, const std::string& bytes) -> Status {
     if (Status s = WriteFileAtomic(dir / name, bytes); !s) return s;
@@ -1046,6 +1046,13 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
   };
   auto glb = FurnishedGlb(villa);
   if (!glb.ok()) return Error{(dir / kGlbFile).string() + ": " + glb.error()};
+  // The report first: it is the one that can fail on the request's text (a JSON dump), before any bytes.
+  std::string report;
+  try {
+    report = FurnishReportJson(villa, options).dump(2) + "\n";
+  } catch (const nlohmann::json::exception& e) {
+    return Error{"report.json: " + std::string(e.what())};
+  }
   if (Status s = write(kSceneFile, scene::SceneToText(villa.scene)); !s) return Error{s.error()};
   if (Status s = write(kGlbFile, *glb); !s) return Error{s.error()};
   if (Status s = write(kCreditsFile, FurnishCredits(villa)); !s) return Error{s.error()};
@@ -1054,7 +1061,7 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
     if (!plan.ok()) return Error{(dir / kPlanPicture).string() + ": " + plan.error()};
     if (Status s = write(kPlanPicture, *plan); !s) return Error{s.error()};
   }
-  if (Status s = write(kReportFile, FurnishReportJson(villa, options).dump(2) + "\n"); !s) return Error{s.error()};
+  if (Status s = write(kReportFile, report); !s) return Error{s.error()};
   if (options.pictures) {
     fs::create_directories(dir / "rooms", ec);
     if (ec) return Error{(dir / "rooms").string() + ": cannot create the folder: " + ec.message()};
@@ -1068,10 +1075,38 @@ Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa
   return written;
 }
 
+namespace {
+
+// The staged folder of a run; "busy: " (another run holds it) becomes a usage error.
+Result<std::unique_ptr<StagedOutput>> OpenStage(const fs::path& dir) {
+  auto stage = StagedOutput::Open(dir);
+  if (!stage.ok() && stage.error().rfind("busy: ", 0) == 0) return Error{"usage: " + stage.error().substr(6)};
+  return stage;
+}
+
+}  // namespace
+
+Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const fs::path& dir,
+                                                     const FurnishOptions& options) {
+  auto stage = OpenStage(dir);
+  if (!stage.ok()) return Error{stage.error()};
+  if (!options.force)
+    if (Status refused = RefuseExisting(dir, OutputNames(villa.layout, options.pictures)); !refused) return Error{refused.error()};
+  auto written = WriteFurnishedVillaFiles(villa, (*stage)->path(), options);
+  if (!written.ok()) return written;
+  if (Status s = (*stage)->Commit(*written); !s) return Error{s.error()};
+  return written;
+}
+
 Result<FurnishSummary> FurnishLayoutFile(const fs::path& layout_path, const fs::path& dir, const FurnishOptions& options) {
   if (std::string problem = options.Check(); !problem.empty()) return Error{"usage: " + problem};
   std::error_code ec;
   if (!fs::exists(layout_path, ec)) return Error{"usage: " + layout_path.string() + ": no such file"};
+  // Issue 33: the outputs are staged and moved into place together at the end (the critic's log too: the
+  // CLI points it into StagedOutput's folder), under a lock, so a killed or failed run leaves the folder as
+  // it was and a second run into it is refused while this one writes.
+  auto stage = OpenStage(dir);
+  if (!stage.ok()) return Error{stage.error()};
   if (!options.force)
     if (Status refused = RefuseExisting(dir, {kSceneFile, kGlbFile, kReportFile, kCreditsFile, kPlanPicture}); !refused)
       return Error{refused.error()};
@@ -1100,8 +1135,11 @@ Result<FurnishSummary> FurnishLayoutFile(const fs::path& layout_path, const fs::
   auto villa = FurnishLayout(*layout, {layout_file, *digest}, library->library, library->file, options);
   if (!villa.ok()) return Error{villa.error()};
   villa->library_note = library->note;
-  auto written = WriteFurnishedVilla(*villa, dir, options);
+  auto written = WriteFurnishedVillaFiles(*villa, (*stage)->path(), options);
   if (!written.ok()) return Error{written.error()};
+  std::vector<std::string> moved = *written;
+  if (fs::is_directory((*stage)->path() / kCriticLogFolder, ec)) moved.push_back(kCriticLogFolder);
+  if (Status s = (*stage)->Commit(moved); !s) return Error{s.error()};
   FurnishSummary summary = villa->summary;
   summary.written = *written;
   return summary;

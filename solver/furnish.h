@@ -228,13 +228,20 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
                                      std::shared_ptr<const AssetLibrary> library, std::optional<scene::FileRef> library_ref,
                                      const FurnishOptions& options);
 
-// The output files of a run, written atomically into `dir` (created if needed): scene.json,
-// furnished.glb, report.json, CREDITS and plan.png (rooms/<room>.png, the room name with "/" as "_", are
-// reserved: refused without force, not drawn yet).
-// Files of an earlier run are replaced only with options.force; other files in the folder are never
-// touched. Returns the paths written, relative to `dir`.
+// The output files of a run, written into `dir` (created if needed) all or nothing (util/staged_output.h:
+// staged, then moved into place together, under the folder's lock): scene.json, furnished.glb,
+// report.json, CREDITS and plan.png (rooms/<room>.png, the room name with "/" as "_", are reserved: refused
+// without force, not drawn yet). Files of an earlier run are replaced only with options.force; other files
+// in the folder are never touched. Returns the paths written, relative to `dir`. A usage problem (existing
+// outputs, another run writing the folder) starts with "usage: ".
 Result<std::vector<std::string>> WriteFurnishedVilla(const FurnishedVilla& villa, const std::filesystem::path& dir,
                                                      const FurnishOptions& options);
+// The same files written straight into `dir`, a folder the caller makes whole itself (`villa scenes` builds
+// each villa under a temporary name): no lock, no staging, no check of what is there.
+Result<std::vector<std::string>> WriteFurnishedVillaFiles(const FurnishedVilla& villa, const std::filesystem::path& dir,
+                                                          const FurnishOptions& options);
+// The critic's log folder of `villa furnish` (inside the staged folder while the run writes).
+inline constexpr const char* kCriticLogFolder = "critic";
 
 // The whole run from a layout file: read and validate it (rules 1-5 unless allow_invalid), open the
 // library, furnish, write. Errors name the file; a usage problem (an existing output without force, an

@@ -1,5 +1,6 @@
 #include "solver/glb_metrics.h"
 
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "layout/geometry.h"
 #include "layout/layout_io.h"
 #include "scene/acquire.h"
+#include "scene/file_digest.h"
 #include "scene/room_context.h"
 #include "scene/scene.h"
 #include "solver/scene_problem.h"
@@ -388,9 +390,11 @@ Result<GlbMetricsSummary> MeasureFurnishedGlb(const fs::path& glb, const GlbMetr
   // The scene names the layout, the wall thicknesses and the library.
   BuildOptions build;
   fs::path layout_path = options.layout, library_dir = options.library;
+  std::string scene_layout_sha256;
   if (!options.scene.empty()) {
     auto s = scene::ReadScene(options.scene);
     if (!s.ok()) return Error{s.error()};
+    scene_layout_sha256 = s->layout.sha256;
     build.slab_thickness = s->build.slab_thickness;
     build.exterior_wall_thickness = s->build.exterior_wall_thickness;
     build.interior_wall_thickness = s->build.interior_wall_thickness;
@@ -414,6 +418,14 @@ Result<GlbMetricsSummary> MeasureFurnishedGlb(const fs::path& glb, const GlbMetr
   if (!layout_path.empty()) {
     auto layout = LoadLayout(layout_path.string());
     if (!layout.ok()) return Error{layout.error()};
+    // Issue 33: the layout must be the one the scene was made from (a mirrored layout scored OBR 32 %).
+    if (!scene_layout_sha256.empty()) {
+      auto digest = scene::FileSha256(layout_path);
+      if (!digest.ok()) return Error{digest.error()};
+      if (*digest != scene_layout_sha256)
+        return Error{layout_path.string() + ": not the layout " + options.scene.string() + " was made from (its SHA-256 " + *digest +
+                     " differs from the scene's " + scene_layout_sha256 + ")"};
+    }
     for (const auto& [room, list] : by_room)
       if (layout->FindRoom(room) < 0)
         return Error{glb.string() + ": object " + list.front()->id + " is in room " + room + ", which " + layout_path.string() +

@@ -50,7 +50,39 @@ Status WriteFileAtomic(const std::filesystem::path& path, std::string_view conte
   return writer.Commit();
 }
 
-Result<std::string> ReadFile(const std::filesystem::path& path) {
+Status CheckReadable(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || st.type() == fs::file_type::not_found) return Error{path.string() + ": no such file"};
+  const char* kind = nullptr;
+  switch (st.type()) {
+    case fs::file_type::regular: break;
+    case fs::file_type::directory: kind = "a folder"; break;
+    case fs::file_type::fifo: kind = "a FIFO"; break;
+    case fs::file_type::character: kind = "a character device"; break;
+    case fs::file_type::block: kind = "a block device"; break;
+    case fs::file_type::socket: kind = "a socket"; break;
+    default: kind = "not a plain file"; break;
+  }
+  if (kind) return Error{path.string() + ": " + kind + ", not a regular file"};
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) return Error{path.string() + ": cannot tell its size: " + ec.message()};
+  if (size > max_bytes) {
+    auto text = [](std::uintmax_t b) {
+      char t[32];
+      if (b >= (std::uintmax_t{1} << 30)) std::snprintf(t, sizeof t, "%.1f GB", b / 1073741824.0);
+      else if (b >= (std::uintmax_t{1} << 20)) std::snprintf(t, sizeof t, "%.1f MB", b / 1048576.0);
+      else std::snprintf(t, sizeof t, "%ju bytes", b);
+      return std::string(t);
+    };
+    return Error{path.string() + ": " + text(size) + ", more than the " + text(max_bytes) + " this reader takes"};
+  }
+  return Status{};
+}
+
+Result<std::string> ReadFile(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  if (Status s = CheckReadable(path, max_bytes); !s) return Error{s.error()};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{Describe(path, "cannot open")};
   std::ostringstream buffer;

@@ -14,4 +14,9 @@ inline constexpr std::size_t kExcerptLength = 80;
 // never cutting a UTF-8 character in two. `limit` below 4 is taken as 4.
 std::string Excerpt(std::string_view text, std::size_t limit = kExcerptLength);
 
+// `text` safe to print on a terminal (issue 33): control bytes (C0 but for none, DEL, and the C1 controls
+// U+0080-U+009F) and invalid UTF-8 bytes become \xHH, so a name cannot move the cursor, clear the screen or
+// set the window title.
+std::string Printable(std::string_view text);
+
 }  // namespace villa

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstdio>
 
+#include "util/excerpt.h"
+
 namespace villa {
 namespace {
 bool LooksNumeric(const std::string& cell) {
@@ -15,6 +17,7 @@ TextTable::TextTable(std::vector<std::string> header) : header_(std::move(header
 
 void TextTable::AddRow(std::vector<std::string> row) {
   row.resize(header_.size());
+  for (std::string& cell : row) cell = Printable(cell);  // names from outside cannot drive the terminal
   rows_.push_back(std::move(row));
 }
 

@@ -32,6 +32,7 @@ struct Token {
   char punct = 0;       // non-zero: a punctuation token
   bool number = false;  // all digits
   int value = 0;        // its value when `number`
+  bool negative = false;  // a number written with a minus sign before it ("-3 bedrooms"): no count
   int ordinal = 0;      // "1st", "2nd", ... as digits
   int sentence = 0;
   bool consumed = false;  // part of something understood
@@ -128,6 +129,8 @@ std::vector<Token> Tokenise(std::string_view text) {
       if (!word.empty() && std::all_of(word.begin(), word.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); })) {
         t.number = true;
         t.value = word.size() > 6 ? 1000000 : std::stoi(word);
+        // A minus sign right before it, not a hyphen joining words ("-3 bedrooms", not "3-bedroom").
+        t.negative = t.begin > 0 && text[t.begin - 1] == '-' && (t.begin == 1 || !IsWordByte(static_cast<unsigned char>(text[t.begin - 2])));
       } else if (word.size() >= 3 && std::isdigit(static_cast<unsigned char>(word[0]))) {
         std::string digits, suffix;
         std::size_t k = 0;
@@ -181,7 +184,7 @@ const std::unordered_map<std::string, int>& CardinalWords() {
 }
 
 std::optional<int> Cardinal(const Token& t) {
-  if (t.punct) return std::nullopt;
+  if (t.punct || t.negative) return std::nullopt;
   if (t.number) return t.value;
   auto it = CardinalWords().find(t.word);
   if (it != CardinalWords().end()) return it->second;
@@ -1970,6 +1973,10 @@ void Parser::Finish(Brief& brief) {
                            std::to_string(kMaxRoomsPerFloor * floors_for_cap) + " fit in " +
                            std::to_string(floors_for_cap) + " floors (FORMAT.md rule 6)");
   }
+  // Issue 33: a number keeps its sign; a negative one counts nothing, and the report says so.
+  for (const Token& t : tokens_)
+    if (t.number && t.negative)
+      conflicts_.push_back("\"-" + t.word + "\": a number below zero is no count of rooms or floors; not read as " + t.word);
   brief.conflicts = conflicts_;
   brief.british_ordinals = british_;
 

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -142,7 +144,21 @@ TEST_CASE("A .vmesh file round-trips parts, materials and float geometry, and da
   REQUIRE(WriteFileAtomic(path, cut).ok());
   auto damaged = ReadAssetMesh(path);
   REQUIRE_FALSE(damaged.ok());
-  CHECK(damaged.error().find("truncated triangle") != std::string::npos);
+  CHECK(damaged.error().find("1 triangles declared, 10 bytes left (truncated)") != std::string::npos);
+  // Issue 33: a short file declaring 2^26 - 1 vertices is refused before anything is allocated; a vertex at
+  // 3e38 m is no furniture.
+  std::string huge = bytes.substr(0, 8 + 4 + 4 + 4 + 16);  // header, one part, "wood", colour
+  for (int k = 0; k < 4; ++k) huge.push_back(static_cast<char>(((1u << 26) - 1) >> (8 * k)));
+  REQUIRE(WriteFileAtomic(path, huge).ok());
+  auto declared = ReadAssetMesh(path);
+  REQUIRE_FALSE(declared.ok());
+  CHECK(declared.error().find("67108863 vertices declared, 0 bytes left (truncated)") != std::string::npos);
+  AssetMesh far = mesh;
+  far.parts[0].mesh.vertices[1].x = 3e38;
+  REQUIRE(WriteAssetMesh(path, far).ok());
+  auto beyond = ReadAssetMesh(path);
+  REQUIRE_FALSE(beyond.ok());
+  CHECK(beyond.error().find("a vertex beyond 1000 m") != std::string::npos);
   std::filesystem::remove(path);
 }
 
@@ -175,3 +191,16 @@ TEST_CASE("The category vocabulary resolves request words and keeps its sizes an
 
 }  // namespace
 }  // namespace villa
+
+TEST_CASE("an assets.jsonl that is a folder, a FIFO or a device is no library: the error names it", "[assets][issue33]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("villa_assets_folder_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "assets.jsonl");
+  auto folder = villa::ReadAssetRecords((dir / "assets.jsonl").string());
+  REQUIRE_FALSE(folder.ok());
+  CHECK(folder.error() == (dir / "assets.jsonl").string() + ": a folder, not a regular file");
+  auto device = villa::ReadAssetRecords("/dev/zero");
+  REQUIRE_FALSE(device.ok());
+  CHECK(device.error() == "/dev/zero: a character device, not a regular file");
+  std::filesystem::remove_all(dir);
+}

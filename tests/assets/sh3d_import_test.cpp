@@ -58,6 +58,21 @@ TEST_CASE("The catalog reads names across continued lines, escapes, Latin-1, the
   CHECK(catalog.problems[0] == "TestLib.sh3f: PluginFurnitureCatalog.properties: width#10: missing");
 }
 
+TEST_CASE("A catalog size past 100 m (1e308 cm, inf) is a bad piece, never a size of null", "[assets][sh3d][issue33]") {
+  const std::string text =
+      "id=Lib\nid#1=Lib#huge\nname#1=Huge\nmodel#1=/a.obj\nwidth#1=1e308\ndepth#1=50\nheight#1=50\n"
+      "id#2=Lib#inf\nname#2=Inf\nmodel#2=/b.obj\nwidth#2=50\ndepth#2=inf\nheight#2=50\n"
+      "id#3=Lib#ok\nname#3=Ok\nmodel#3=/c.obj\nwidth#3=50\ndepth#3=40\nheight#3=9999\n";
+  auto properties = ParseJavaProperties(text, "L.sh3f: P.properties");
+  REQUIRE(properties.ok());
+  const Sh3dCatalog catalog = ReadSh3dCatalog(*properties, "L.sh3f", "L.sh3f: P.properties");
+  REQUIRE(catalog.pieces.size() == 1);
+  CHECK(catalog.pieces[0].id == "Lib#ok");
+  REQUIRE(catalog.problems.size() == 2);
+  CHECK(catalog.problems[0] == "L.sh3f: P.properties: width#1: expected a number of cm in (0, 10000], got \"1e308\"");
+  CHECK(catalog.problems[1] == "L.sh3f: P.properties: depth#2: expected a number of cm in (0, 10000], got \"inf\"");
+}
+
 TEST_CASE("A stretched off-centre cube lands in the asset frame with its declared size", "[assets][sh3d]") {
   Sh3dPieceImport chest = ImportFixturePiece("Test#chest");
   REQUIRE(chest.outcome == Sh3dPieceImport::Outcome::kImported);

@@ -432,3 +432,27 @@ TEST_CASE("A narrow room gets the narrow end of the bed's sizes: a free long sid
 }
 
 
+
+TEST_CASE("a count below zero adds nothing and says so, ten thousand armchairs are noted, not planned", "[scene][planner][issue33]") {
+  const BuiltLayout b = LoadBuilt("examples/three-floor-villa.json");
+  auto contexts = RoomContexts(b.layout, b.building, b.options);
+  REQUIRE(contexts.ok());
+  const RoomContext* living = nullptr;
+  for (const RoomContext& c : *contexts)
+    if (c.category == Category::kLivingRoom && !living) living = &c;
+  REQUIRE(living);
+  auto notes = [](const RoomPlan& p) {
+    std::string all;
+    for (const std::string& n : p.record.notes) all += n + "\n";
+    return all;
+  };
+  const RoomPlan negative = PlanOf(*living, "-3 armchairs");
+  INFO(notes(negative));
+  CHECK(notes(negative).find("the request asks for -3 x armchair: a count below zero is no count; none added for it") != std::string::npos);
+  CHECK(CountCategory(negative, "armchair", Origin::kPrompt) == 0);
+  const RoomPlan many = PlanOf(*living, "10000 armchairs");
+  INFO(notes(many));
+  const int planned = CountCategory(many, "armchair", Origin::kPrompt);
+  CHECK(planned >= 2);
+  CHECK(notes(many).find("the request asks for 10000 x armchair; " + std::to_string(planned) + " fit") != std::string::npos);
+}

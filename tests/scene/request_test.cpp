@@ -136,3 +136,15 @@ TEST_CASE("longest phrase wins and ambiguous words are left alone", "[scene][req
   CHECK(ParseRoomRequest("", Category::kKitchen).wishes.empty());
   CHECK(ParseRoomRequest("\xff\xfe garbage ;;; ...", Category::kKitchen).wishes.empty());
 }
+
+TEST_CASE("counts keep their sign and size: -3 armchairs is no count, 10000 armchairs is not two", "[scene][request][issue33]") {
+  RoomRequest big = ParseRoomRequest("10000 armchairs and 25 cushions", Category::kLivingRoom);
+  REQUIRE(Named(big, "armchair"));
+  CHECK(Named(big, "armchair")->count == 10000);
+  CHECK(Named(big, "armchair")->explicit_count);
+  RoomRequest negative = ParseRoomRequest("-3 armchairs and a side-table", Category::kLivingRoom);
+  REQUIRE(Named(negative, "armchair"));
+  CHECK(Named(negative, "armchair")->count == -3);
+  REQUIRE(Named(negative, "side-table"));
+  CHECK(Named(negative, "side-table")->count == 1);
+}

@@ -229,6 +229,15 @@ TEST_CASE("villa synth and villa dataset on the command line: shards merged byte
   auto missing = testing::RunVilla("dataset merge " + d + "/m2 " + d + "/s0 " + d + "/s1");
   CHECK(missing.status == 1);
   CHECK(missing.out == "villa dataset merge: missing shard(s) 2/3 of 3\n");
+  // An empty output name is a usage error for every command that writes (issue 33), not a failure to make "".
+  for (const std::string& args : std::vector<std::string>{"scenes " + d + "/one/layouts.jsonl --out ''", "synth --count 2 --out ''",
+                                  "furnish " + std::string(VILLA_SOURCE_DIR) + "/examples/l-shaped-house.json -o ''",
+                                  "generate 'a small villa' -o ''", "plan 'a small villa' -o ''"}) {
+    auto empty = testing::RunVilla(args);
+    INFO(args << "\n" << empty.out);
+    CHECK(empty.status == 2);
+    CHECK(empty.out.find("an empty name is no file or folder") != std::string::npos);
+  }
   auto status = testing::RunVilla("dataset status " + d);
   CHECK(status.status == 0);
   CHECK(status.out.find(" 5 shard(s) ") != std::string::npos);

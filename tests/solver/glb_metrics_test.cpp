@@ -211,4 +211,17 @@ TEST_CASE("Our own furnished.glb scores as its report says, from its layout and 
   auto bad = solver::MeasureFurnishedGlb(dir.path / "furnished.glb", missing);
   REQUIRE_FALSE(bad.ok());
   CHECK(bad.error().find("nope.json") != std::string::npos);
+  // Issue 33: a layout other than the scene's (here the scene's own, one byte changed) is refused.
+  const fs::path other = dir.path / "other.json";
+  fs::copy_file(house, other);
+  {
+    std::ofstream append(other, std::ios::app);
+    append << "\n";
+  }
+  solver::GlbMetricsOptions mismatched = with_scene;
+  mismatched.layout = other;
+  auto wrong = solver::MeasureFurnishedGlb(dir.path / "furnished.glb", mismatched);
+  REQUIRE_FALSE(wrong.ok());
+  CHECK(wrong.error().find("other.json: not the layout ") != std::string::npos);
+  CHECK(wrong.error().find("differs from the scene's") != std::string::npos);
 }

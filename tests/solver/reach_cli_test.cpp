@@ -80,5 +80,48 @@ TEST_CASE("villa reach names the wardrobe that seals a bedroom, as text and as J
   fs::remove_all(dir);
 }
 
+TEST_CASE("villa reach refuses a scene that breaks its contract: a parent cycle, an object in no room of the layout", "[reach][cli][issue33]") {
+  const fs::path dir = fs::temp_directory_path() / ("villa_reach_bad_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(std::string(VILLA_FIXTURE_DIR) + "/layouts/house_one_floor.json", dir / "layout.json");
+  scene::SceneFile file;
+  file.layout = {"layout.json", *scene::FileSha256(dir / "layout.json")};
+  for (const char* room : {"living-room_0/0", "kitchen_0/0", "dining-room_0/0", "bedroom_0/0", "bathroom_0/0", "office_0/0"})
+    file.rooms.push_back({room, {}, {}, {}, {}});
+  auto object = [](const std::string& id, const std::string& room, const std::string& parent) {
+    scene::SceneObject o;
+    o.id = id;
+    o.asset = "test:box";
+    o.category = "decor";
+    o.room = room;
+    o.pose = scene::Pose{2.0, 2.0, 0.9, 0.0};
+    o.size = {0.2, 0.2, 0.2};
+    o.affordances = kConsumer;
+    o.parent = parent;
+    o.relation = scene::Relation::kOnTop;
+    return o;
+  };
+  file.objects.push_back(object("kitchen_0/0/decor-0", "kitchen_0/0", "kitchen_0/0/decor-1"));
+  file.objects.push_back(object("kitchen_0/0/decor-1", "kitchen_0/0", "kitchen_0/0/decor-0"));
+  file.objects.push_back(object("attic_9/0/decor-2", "attic_9/0", "floor"));
+  REQUIRE(scene::WriteScene(file, dir / "scene.json").ok());
+  const auto [status, out] = Villa("reach " + (dir / "scene.json").string(), dir);
+  INFO(out);
+  CHECK(status == 1);
+  CHECK(out.find("scene.json: not a valid scene (") != std::string::npos);
+  CHECK(out.find("attic_9/0") != std::string::npos);
+  CHECK(out.find("kitchen_0/0/decor-0") != std::string::npos);
+  // An object 3e10 m away: refused at once, not rastered (it once took 2.8 GB).
+  file.objects = {object("kitchen_0/0/decor-0", "kitchen_0/0", "floor")};
+  file.objects[0].pose->x = 3e10;
+  REQUIRE(scene::WriteScene(file, dir / "far.json").ok());
+  const auto [far_status, far_out] = Villa("reach " + (dir / "far.json").string(), dir);
+  INFO(far_out);
+  CHECK(far_status == 1);
+  CHECK(far_out.find("object kitchen_0/0/decor-0 stands at (30000000000.000000,") != std::string::npos);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace villa::solver

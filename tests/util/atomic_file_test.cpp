@@ -76,3 +76,19 @@ TEST_CASE("an atomic write refuses to replace a symbolic link or a folder", "[ut
   CHECK(fs::is_directory(folder));
   CHECK(FilesIn(dir.path) == 3);
 }
+
+TEST_CASE("readers take regular files only, up to a size, and say what they found instead", "[issue33]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("villa_read_cap_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "folder");
+  REQUIRE(::mkfifo((dir / "fifo").c_str(), 0644) == 0);
+  REQUIRE(WriteFileAtomic(dir / "ten.txt", "0123456789").ok());
+  CHECK(CheckReadable(dir / "fifo").error() == (dir / "fifo").string() + ": a FIFO, not a regular file");  // no hang
+  CHECK(CheckReadable(dir / "folder").error() == (dir / "folder").string() + ": a folder, not a regular file");
+  CHECK(CheckReadable("/dev/zero").error() == "/dev/zero: a character device, not a regular file");
+  CHECK(CheckReadable(dir / "none").error() == (dir / "none").string() + ": no such file");
+  CHECK(ReadFile(dir / "ten.txt", 9).error() == (dir / "ten.txt").string() + ": 10 bytes, more than the 9 bytes this reader takes");
+  CHECK(*ReadFile(dir / "ten.txt", 10) == "0123456789");
+  fs::remove_all(dir);
+}

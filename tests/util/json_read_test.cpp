@@ -5,6 +5,7 @@
 #include <string>
 
 #include "util/excerpt.h"
+#include "util/text_table.h"
 #include "util/json_read.h"
 
 using namespace villa;
@@ -89,4 +90,14 @@ TEST_CASE("excerpts keep short values whole and cut long ones at 80 bytes", "[ut
   CHECK(cut.size() <= 80);
   CHECK(cut.substr(cut.size() - 3) == "...");
   CHECK((cut.size() - 3) % 2 == 0);
+}
+
+TEST_CASE("text printed on a terminal cannot drive it: control bytes and bad UTF-8 are escaped", "[util][excerpt][issue33]") {
+  CHECK(villa::Printable("Caf\xc3\xa9 chair") == "Caf\xc3\xa9 chair");
+  CHECK(villa::Printable("a\x1b]0;pwned\x07z") == "a\\x1b]0;pwned\\x07z");
+  CHECK(villa::Printable("\xc2\x9b" "2J") == "\\xc2\\x9b2J");  // the C1 CSI
+  CHECK(villa::Printable("x\xff") == "x\\xff");
+  villa::TextTable table({"id", "name"});
+  table.AddRow({"lib:1", "evil\x1b[2Jname"});
+  CHECK(table.Render().find("evil\\x1b[2Jname") != std::string::npos);
 }

@@ -321,8 +321,6 @@ TEST_CASE("a layout is checked against every requirement of a brief") {
   }
 }
 
-}  // namespace villa
-
 namespace villa {
 
 TEST_CASE("any text parses: random word soup keeps every span inside the text") {
@@ -456,6 +454,22 @@ TEST_CASE("make run's request is met, its furniture wishes go to the furnish sta
   CHECK(plan.outcome == PlanOutcome::kMet);
   CHECK(plan.BriefReport().find("furnishing wish") != std::string::npos);
   CHECK(plan.BriefReport().find("not understood") == std::string::npos);
+}
+
+}  // namespace villa
+
+TEST_CASE("a number keeps its sign: -3 bedrooms and -2 floors are no counts, reported, never met", "[issue33]") {
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  PlanSummary plan = PlanLayout("A villa with -3 bedrooms and -2 floors.", options);
+  INFO(plan.BriefReport());
+  CHECK(plan.outcome != PlanOutcome::kMet);
+  REQUIRE(plan.brief.conflicts.size() >= 2);
+  CHECK(plan.brief.conflicts[plan.brief.conflicts.size() - 2] == "\"-3\": a number below zero is no count of rooms or floors; not read as 3");
+  CHECK(plan.BriefReport().find("conflict: \"-2\": a number below zero") != std::string::npos);
+  // A hyphen between words is no sign: a 3-bedroom villa still has three.
+  const Brief hyphen = ParseBrief("A 3-bedroom villa.");
+  CHECK(hyphen.conflicts.empty());
 }
 
 }  // namespace villa
