@@ -31,53 +31,47 @@ std::string LineColumn(std::string_view text, size_t offset) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-// SAX events forwarded to nlohmann's own DOM builder, watching keys and number spellings on the way and
-// keeping the path of the value being read.
+// SAX events building the document, watching keys and number spellings on the way and keeping the path of
+// the value being read. The document is built here, not by nlohmann's DOM builder: its ordered objects look
+// every key up before inserting it, which made a scene of 100,000 objects (one object keyed by id) take
+// half a minute to read (issue 33); keys are checked for duplicates in a set, so members are appended.
 class StrictSax : public nlohmann::json_sax<Json> {
  public:
   StrictSax(Json& root, std::string_view text, std::string source, int max_decimals)
-      : dom_(root, false), text_(text), source_(std::move(source)), max_decimals_(max_decimals) {}
+      : root_(root), text_(text), source_(std::move(source)), max_decimals_(max_decimals) {}
 
   const std::string& error() const { return error_; }
 
-  bool null() override { return Scalar() && dom_.null(); }
-  bool boolean(bool v) override { return Scalar() && dom_.boolean(v); }
-  bool number_integer(number_integer_t v) override { return Scalar() && dom_.number_integer(v); }
-  bool number_unsigned(number_unsigned_t v) override { return Scalar() && dom_.number_unsigned(v); }
+  bool null() override { return Put(Json(nullptr)); }
+  bool boolean(bool v) override { return Put(Json(v)); }
+  bool number_integer(number_integer_t v) override { return Put(Json(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return Put(Json(v)); }
   bool number_float(number_float_t v, const string_t& spelling) override {
     if (spelling.find_first_of("eE") != std::string::npos)
       return Fail(ValuePath(), spelling + ": numbers are written without an exponent");
     size_t dot = spelling.find('.');
     if (dot != std::string::npos && static_cast<int>(spelling.size() - dot - 1) > max_decimals_)
       return Fail(ValuePath(), spelling + ": numbers have at most " + std::to_string(max_decimals_) + " decimals");
-    return Scalar() && dom_.number_float(v, spelling);
+    return Put(Json(v));
   }
-  bool string(string_t& v) override { return Scalar() && dom_.string(v); }
-  bool binary(binary_t& v) override { return Scalar() && dom_.binary(v); }
-  bool start_object(std::size_t n) override {
-    frames_.push_back({true, ValuePath(), 0, {}, {}});
-    return dom_.start_object(n);
+  bool string(string_t& v) override { return Put(Json(std::move(v))); }
+  bool binary(binary_t& v) override { return Put(Json(std::move(v))); }
+  bool start_object(std::size_t) override {
+    frames_.push_back({true, ValuePath(), 0, {}, {}, Json::object()});
+    return true;
   }
   bool key(string_t& k) override {
     Frame& f = frames_.back();
     if (!f.keys.insert(k).second) return Fail(MemberPath(Path(), k), "duplicate key");
     f.key = k;
-    return dom_.key(k);
+    return true;
   }
-  bool end_object() override {
-    frames_.pop_back();
-    Done();
-    return dom_.end_object();
+  bool end_object() override { return Close(); }
+  bool start_array(std::size_t) override {
+    frames_.push_back({false, ValuePath(), 0, {}, {}, Json::array()});
+    return true;
   }
-  bool start_array(std::size_t n) override {
-    frames_.push_back({false, ValuePath(), 0, {}, {}});
-    return dom_.start_array(n);
-  }
-  bool end_array() override {
-    frames_.pop_back();
-    Done();
-    return dom_.end_array();
-  }
+  bool end_array() override { return Close(); }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
     if (error_.empty()) {
       std::string what = e.what();
@@ -96,7 +90,29 @@ class StrictSax : public nlohmann::json_sax<Json> {
     size_t index = 0;  // arrays: index of the next element
     std::set<std::string> keys;
     std::string key;   // objects: the member being read
+    Json value;        // the container being built
   };
+  // A finished value into the innermost container (appended: its key is known to be new), or the root.
+  bool Put(Json value) {
+    if (frames_.empty()) {
+      root_ = std::move(value);
+      return true;
+    }
+    Frame& f = frames_.back();
+    if (f.object) {
+      auto& members = static_cast<std::vector<std::pair<const std::string, Json>>&>(f.value.get_ref<Json::object_t&>());
+      members.emplace_back(f.key, std::move(value));
+    } else {
+      f.value.get_ref<Json::array_t&>().push_back(std::move(value));
+    }
+    Done();
+    return true;
+  }
+  bool Close() {
+    Json done = std::move(frames_.back().value);
+    frames_.pop_back();
+    return Put(std::move(done));
+  }
 
   std::string Path() const { return frames_.empty() ? std::string() : frames_.back().path; }
   // The path of the value about to be read (a member or an element of the innermost container).
@@ -104,10 +120,6 @@ class StrictSax : public nlohmann::json_sax<Json> {
     if (frames_.empty()) return "";
     const Frame& f = frames_.back();
     return f.object ? MemberPath(f.path, f.key) : ElementPath(f.path, f.index);
-  }
-  bool Scalar() {
-    Done();
-    return true;
   }
   void Done() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
@@ -117,7 +129,7 @@ class StrictSax : public nlohmann::json_sax<Json> {
     return false;
   }
 
-  nlohmann::detail::json_sax_dom_parser<Json> dom_;
+  Json& root_;
   std::string_view text_;
   std::string source_;
   int max_decimals_;

@@ -7,6 +7,7 @@
 
 #include "scene/file_digest.h"
 #include "scene/scene.h"
+#include "scene/strict_json.h"
 #include "util/atomic_file.h"
 
 using namespace villa;
@@ -247,4 +248,26 @@ TEST_CASE("file SHA-256 matches the standard test vectors", "[scene][json]") {
   auto missing = FileSha256(path);
   REQUIRE_FALSE(missing.ok());
   CHECK(missing.error().find(path.string()) != std::string::npos);
+}
+
+TEST_CASE("the strict reader builds the document itself: members in file order, duplicates named, nesting kept", "[scene][json][issue33]") {
+  const std::string text = R"({"b":1,"a":{"y":[1,2.5,{"k":"v"}],"x":null},"c":[[],{}],"d":true})";
+  auto j = ParseStrictJson(text, "t.json");
+  REQUIRE(j.ok());
+  CHECK(j->dump() == text);  // appended members keep the file's order
+  auto dup = ParseStrictJson(R"({"a":{"x":1,"y":2,"x":3}})", "t.json");
+  REQUIRE_FALSE(dup.ok());
+  CHECK(dup.error() == "t.json: a.x: duplicate key");
+  auto spelled = ParseStrictJson(R"({"a":[1,2,1e3]})", "t.json");
+  REQUIRE_FALSE(spelled.ok());
+  CHECK(spelled.error() == "t.json: a[2]: 1e3: numbers are written without an exponent");
+  // One object of many members (a scene of 20,000 objects is keyed by id) reads whole and in order.
+  std::string many = "{";
+  for (int i = 0; i < 20000; ++i) many += (i ? ",\"" : "\"") + std::to_string(i) + "\":" + std::to_string(i);
+  many += "}";
+  auto big = ParseStrictJson(many, "many.json");
+  REQUIRE(big.ok());
+  REQUIRE(big->size() == 20000);
+  CHECK(big->begin().key() == "0");
+  CHECK((*big)["19999"] == 19999);
 }
