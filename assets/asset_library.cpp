@@ -21,9 +21,21 @@ std::string Env(const char* name) {
   return v ? std::string(v) : std::string();
 }
 
+constexpr std::string_view kInsideStaging = ".villa-import-staging-";
+
+// Empty, or holding only what an import staged inside it and never finished (no records yet).
 bool IsEmptyDir(const fs::path& dir) {
   std::error_code ec;
-  return fs::is_directory(dir, ec) && fs::directory_iterator(dir, ec) == fs::directory_iterator();
+  if (!fs::is_directory(dir, ec)) return false;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(kInsideStaging, 0) == 0) {
+      fs::remove_all(e.path(), ec);  // a killed import's staging
+      continue;
+    }
+    return false;
+  }
+  return true;
 }
 
 // Copies `from` (a file or a folder) to `to`, creating parents; the error names both.
@@ -89,6 +101,14 @@ Result<LibraryStaging> LibraryStaging::Begin(const fs::path& dir_in) {
   fs::path staging = dir.parent_path() / staging_name;
   fs::remove_all(staging, ec);
   fs::create_directories(staging / kLibraryMeshFolder, ec);
+  if (ec && IsEmptyDir(dir)) {
+    // Issue 33: an empty library folder the user made under a parent we may not write (a read-only
+    // share): staged inside it instead, and moved up on Commit.
+    std::error_code inside_ec;
+    staging = dir / (std::string(kInsideStaging) + std::to_string(::getpid()));
+    fs::create_directories(staging / kLibraryMeshFolder, inside_ec);
+    if (!inside_ec) return LibraryStaging(dir, staging);
+  }
   if (ec) return Error{staging.string() + ": cannot create: " + ec.message()};
   return LibraryStaging(dir, staging);
 }
@@ -137,6 +157,20 @@ Status LibraryStaging::Commit(const std::vector<AssetRecord>& records, const std
   }
   if (Status s = WriteAssetRecords((staging_ / kLibraryRecordsFile).string(), all); !s.ok()) return s;
   if (Status s = WriteFileAtomic(staging_ / kImportReportFile, report); !s.ok()) return s;
+  if (staging_.parent_path() == dir_) {
+    // Staged inside the (empty) library folder: its entries move up, the records last, so a library is
+    // there only once it is whole.
+    for (const fs::directory_entry& e : fs::directory_iterator(staging_, ec)) {
+      if (e.path().filename() == kLibraryRecordsFile) continue;
+      fs::rename(e.path(), dir_ / e.path().filename(), ec);
+      if (ec) return Error{"cannot move " + e.path().string() + " into " + dir_.string() + ": " + ec.message()};
+    }
+    fs::rename(staging_ / kLibraryRecordsFile, dir_ / kLibraryRecordsFile, ec);
+    if (ec) return Error{"cannot move the records into " + dir_.string() + ": " + ec.message()};
+    fs::remove_all(staging_, ec);
+    done_ = true;
+    return {};
+  }
   if (Status s = SwapDirs(staging_, dir_); !s.ok()) return s;
   fs::remove_all(staging_, ec);  // now the old library
   done_ = true;
