@@ -9,6 +9,7 @@
 #include <assimp/scene.h>
 
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <cmath>
 #include <map>
@@ -435,7 +436,20 @@ namespace {
 SceneInfo SceneInfoOf(const aiScene* scene);
 }  // namespace
 
+namespace {
+Status CheckGlbStructureUnsafe(std::string_view bytes, const std::string& name);
+}  // namespace
+
 Status CheckGlbStructure(std::string_view bytes, const std::string& name) {
+  try {
+    return CheckGlbStructureUnsafe(bytes, name);
+  } catch (const nlohmann::json::exception& e) {  // a member of the wrong type ("meshes": [1])
+    return Error{name + ": malformed glTF JSON: " + std::string(e.what())};
+  }
+}
+
+namespace {
+Status CheckGlbStructureUnsafe(std::string_view bytes, const std::string& name) {
   auto u32 = [&](std::size_t at) {
     uint32_t v = 0;
     for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
@@ -515,12 +529,19 @@ Status CheckGlbStructure(std::string_view bytes, const std::string& name) {
     }
   return Status{};
 }
+}  // namespace
 
 Result<SceneInfo> ReadSceneInfo(const std::filesystem::path& path) {
   if (Status s = CheckReadable(path); !s) return Error{s.error()};
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".glb") {
+  char magic[4] = {};
+  {
+    std::ifstream head(path, std::ios::binary);
+    head.read(magic, 4);
+  }
+  // A .glb by name or by its first bytes (a renamed one) is checked before the importer sees it.
+  if (extension == ".glb" || std::string_view(magic, 4) == "glTF") {
     auto bytes = ReadFile(path);
     if (!bytes.ok()) return Error{bytes.error()};
     return ReadSceneInfoFromMemory(*bytes, "glb", path.string());

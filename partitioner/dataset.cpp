@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <vector>
+#include <limits>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -298,13 +301,24 @@ Status VerifySynthFolder(const std::filesystem::path& dir, Json* manifest_out) {
     const Json& entry = manifest.at("files").at("layouts.jsonl");
     const uint64_t records = entry.at("records").get<uint64_t>();
     const std::string want = entry.at("fnv1a64").get<std::string>();
-    Result<std::string> layouts = ReadFile(dir / "layouts.jsonl");
-    if (!layouts) return Error{layouts.error()};
+    // Streamed: a shard of a million layouts is gigabytes.
+    const std::filesystem::path file = dir / "layouts.jsonl";
+    if (Status s = CheckReadable(file, std::numeric_limits<std::uintmax_t>::max()); !s) return Error{s.error()};
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return Error{file.string() + ": cannot open"};
+    uint64_t hash = kFnv1a64Offset, lines = 0;
+    std::vector<char> buffer(1 << 20);
+    while (in) {
+      in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      const std::string_view chunk(buffer.data(), static_cast<size_t>(in.gcount()));
+      hash = Fnv1a64(chunk, hash);
+      lines += static_cast<uint64_t>(std::count(chunk.begin(), chunk.end(), '\n'));
+    }
+    if (in.bad()) return Error{file.string() + ": read error"};
     char hex[32];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(Fnv1a64(*layouts)));
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
     if (want != hex)
-      return Error{(dir / "layouts.jsonl").string() + ": FNV-1a " + hex + " differs from the manifest's " + want + " (changed or torn)"};
-    const uint64_t lines = static_cast<uint64_t>(std::count(layouts->begin(), layouts->end(), '\n'));
+      return Error{file.string() + ": FNV-1a " + hex + " differs from the manifest's " + want + " (changed or torn)"};
     if (lines != records)
       return Error{(dir / "layouts.jsonl").string() + ": " + std::to_string(lines) + " lines, the manifest says " + std::to_string(records)};
     for (const std::string& preview : manifest.at("files").value("previews", std::vector<std::string>{}))

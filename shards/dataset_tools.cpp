@@ -1,9 +1,12 @@
 #include "shards/dataset_tools.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -122,7 +125,8 @@ Result<std::vector<ShardFolder>> ReadShards(const std::vector<fs::path>& dirs, s
 // The output folder, made fresh under a temporary name; Commit renames it into place.
 class StagedFolder {
  public:
-  explicit StagedFolder(fs::path out) : out_(std::move(out)) {
+  explicit StagedFolder(fs::path out) : out_(fs::absolute(out).lexically_normal()) {
+    if (out_.filename().empty()) out_ = out_.parent_path();  // "merged/" names the folder "merged"
     temp_ = out_.parent_path() / ("." + out_.filename().string() + ".merge-" + std::to_string(::getpid()));
   }
   ~StagedFolder() {
@@ -157,14 +161,23 @@ Result<MergeSummary> MergeSynth(const fs::path& out, const std::vector<ShardFold
   MergeSummary summary{"synth", static_cast<int>(shards.size())};
   StagedFolder staged(out);
   if (Status s = staged.Begin(); !s) return Error{s.error()};
-  std::string layouts;
+  // Streamed shard by shard (a dataset is gigabytes), hashed on the way.
+  AtomicFileWriter layouts(staged.path() / "layouts.jsonl");
+  if (!layouts.ok()) return Error{layouts.error()};
+  uint64_t checksum = kFnv1a64Offset;
   SynthStats stats;
   std::vector<std::string> previews;
+  std::vector<char> buffer(1 << 20);
   for (const ShardFolder& s : shards) {
     if (Status ok = VerifySynthFolder(s.dir); !ok) return Error{ok.error()};
-    auto text = ReadFile(s.dir / "layouts.jsonl");
-    if (!text) return Error{text.error()};
-    layouts += *text;
+    std::ifstream in(s.dir / "layouts.jsonl", std::ios::binary);
+    while (in) {
+      in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      const std::string_view chunk(buffer.data(), static_cast<size_t>(in.gcount()));
+      layouts.Write(chunk);
+      checksum = Fnv1a64(chunk, checksum);
+    }
+    if (in.bad()) return Error{(s.dir / "layouts.jsonl").string() + ": read error"};
     auto st = ReadJsonFile(s.dir / "stats.json");
     if (!st) return Error{st.error()};
     SynthStats part = SynthStats::FromJson(*st);
@@ -180,9 +193,9 @@ Result<MergeSummary> MergeSynth(const fs::path& out, const std::vector<ShardFold
   recipe["shard"] = "0/1";
   recipe["index_range"] = {0, recipe.value("count", uint64_t{0})};
   summary.records = stats.layouts;
-  if (Status s = WriteFileAtomic(staged.path() / "layouts.jsonl", layouts); !s) return Error{s.error()};
+  if (Status s = layouts.Commit(); !s) return Error{s.error()};
   if (Status s = WriteFileAtomic(staged.path() / "stats.json", stats.ToJson().dump(2) + "\n"); !s) return Error{s.error()};
-  const Json manifest = SynthManifest(recipe, FloorsText(first), stats.layouts, Fnv1a64(layouts), previews);
+  const Json manifest = SynthManifest(recipe, FloorsText(first), stats.layouts, checksum, previews);
   if (Status s = WriteFileAtomic(staged.path() / kManifest, manifest.dump(2) + "\n"); !s) return Error{s.error()};
   if (Status s = staged.Commit(); !s) return Error{s.error()};
   return summary;
@@ -192,6 +205,9 @@ Result<MergeSummary> MergeSynth(const fs::path& out, const std::vector<ShardFold
 Result<std::vector<Json>> CheckScenes(const fs::path& dir, const Json& manifest, uint64_t* files_hashed) {
   if (!manifest.value("complete", false))
     return Error{dir.string() + ": the shard is not complete (its run was stopped or is still running: rerun it to finish)"};
+  if (!manifest.contains("files") || !manifest["files"].contains(kScenesIndex) || !manifest.contains("index_range") ||
+      !manifest["index_range"].is_array() || manifest["index_range"].size() != 2)
+    return Error{(dir / kManifest).string() + ": not a whole scenes manifest (files, index_range)"};
   auto index = ReadFile(dir / kScenesIndex);
   if (!index) return Error{index.error()};
   const Json& want = manifest["files"][kScenesIndex];
@@ -206,7 +222,8 @@ Result<std::vector<Json>> CheckScenes(const fs::path& dir, const Json& manifest,
     const std::string where = (dir / kScenesIndex).string() + ":" + std::to_string(entries.size() + 1);
     Json e = Json::parse(line, nullptr, false);
     if (e.is_discarded() || !e.is_object() || !e.contains("id") || !e.contains("files")) return Error{where + ": not an index line"};
-    const std::string id = e["id"].get<std::string>();
+    const std::string id = e["id"].is_string() ? e["id"].get<std::string>() : std::string();
+    if (std::string bad = VillaIdProblem(id); !bad.empty()) return Error{where + ": " + bad};
     if (e.value("index", uint64_t{0}) != first + entries.size())
       return Error{where + ": \"" + id + "\" has index " + e["index"].dump() + ", expected " + std::to_string(first + entries.size())};
     if (!ids.insert(id).second) return Error{where + ": \"" + id + "\" twice"};
@@ -264,6 +281,16 @@ Result<MergeSummary> MergeScenes(const fs::path& out, const std::vector<ShardFol
   if (Status s = WriteFileAtomic(staged.path() / kManifest, manifest.dump(2) + "\n"); !s) return Error{s.error()};
   if (Status s = staged.Commit(); !s) return Error{s.error()};
   return summary;
+}
+
+// Whether a run holds the shard's lock now (a villa can take longer than the 10 minutes the progress file
+// is trusted for).
+bool LockHeld(const fs::path& dir) {
+  const int fd = ::open((dir / ".lock").c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0;
+  ::close(fd);
+  return held;
 }
 
 std::string Duration(double seconds) {
@@ -363,7 +390,7 @@ Result<std::string> DatasetStatus(const std::vector<fs::path>& dirs, int64_t now
         state = "complete";
       } else if (progress.empty()) {
         state = "not started";
-      } else if (age <= 600) {
+      } else if (age <= 600 || LockHeld(d)) {
         state = "running (" + Duration(static_cast<double>(age)) + " ago)";
         const double r = progress.value("villas_per_hour", 0.0);
         rate += r;

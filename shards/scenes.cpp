@@ -18,6 +18,7 @@
 #include "scene/acquire.h"
 #include "scene/file_digest.h"
 #include "util/atomic_file.h"
+#include "util/excerpt.h"
 #include "util/hash.h"
 #include "util/version.h"
 
@@ -59,12 +60,13 @@ class FolderLock {
 };
 
 // The index line a villa's folder holds, if it still matches its files and this recipe's view of the villa.
-std::optional<Json> VerifiedEntry(const fs::path& item, const LayoutItem& want, uint64_t seed) {
+std::optional<Json> VerifiedEntry(const fs::path& item, const LayoutItem& want, uint64_t seed, const std::string& recipe_sha256) {
   auto text = ReadFile(item / kEntry);
   if (!text) return std::nullopt;
   Json entry = Json::parse(*text, nullptr, false);
   if (entry.is_discarded() || !entry.is_object() || entry.value("id", "") != want.id || entry.value("seed", uint64_t{0}) != seed ||
-      entry.value("layout_sha256", "") != scene::Sha256Hex(want.layout_json + "\n") || !entry.contains("files"))
+      entry.value("layout_sha256", "") != scene::Sha256Hex(want.layout_json + "\n") ||
+      entry.value("recipe_sha256", "") != recipe_sha256 || !entry.contains("files"))
     return std::nullopt;
   auto files = HashFolder(item);
   if (!files || *files != entry["files"]) return std::nullopt;
@@ -109,15 +111,22 @@ Json Metrics(const solver::FurnishedVilla& villa) {
 
 }  // namespace
 
+std::string VillaIdProblem(const std::string& id) {
+  const bool control = std::any_of(id.begin(), id.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+  if (id.empty() || id.size() > 200 || id.find('/') != std::string::npos || id.starts_with(".") || control)
+    return "\"" + Printable(Excerpt(id)) + "\" cannot name a folder (1 to 200 bytes, no '/', no leading '.', no control bytes)";
+  return "";
+}
+
 uint64_t VillaSeed(uint64_t seed, const std::string& id) { return SplitMix64Hash(seed ^ Fnv1a64(id)); }
 
 Result<LayoutInput> ReadLayoutInput(const fs::path& file) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return Error{file.string() + ": no such file (expected a layouts JSONL file)"};
-  auto bytes = ReadFile(file);
-  if (!bytes) return Error{bytes.error()};
+  auto digest = scene::FileSha256(file);  // streamed: an input may be gigabytes
+  if (!digest) return Error{digest.error()};
   LayoutInput input;
-  input.sha256 = scene::Sha256Hex(*bytes);
+  input.sha256 = *digest;
   std::set<std::string> ids;
   std::string problem;
   Status read = ReadJsonl(file, [&](const Json& record, int line) {
@@ -153,8 +162,8 @@ Result<LayoutInput> ReadLayoutInput(const fs::path& file) {
       problem = layout.error();
       return false;
     }
-    if (item.id.find('/') != std::string::npos || item.id.starts_with(".") || item.id.size() > 200) {
-      problem = where + ": \"id\": \"" + item.id + "\" cannot name a folder (no '/', no leading '.', at most 200 bytes)";
+    if (std::string bad = VillaIdProblem(item.id); !bad.empty()) {
+      problem = where + ": \"id\": " + bad;
       return false;
     }
     if (!ids.insert(item.id).second) {
@@ -236,6 +245,8 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
   const uint64_t first = o.shard.First(total), last = o.shard.Last(total);
   const Json recipe = ScenesRecipe(o, *input, library->file);
   const Json manifest = ScenesManifest(recipe, o.shard, first, last, total);
+  // Every villa carries its recipe's hash: one made under another recipe is never kept.
+  const std::string recipe_sha256 = scene::Sha256Hex(recipe.dump());
 
   std::error_code ec;
   fs::create_directories(o.out / kScenesFolder, ec);
@@ -254,8 +265,11 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
     if (!same && !o.force)
       return Error{"usage: " + (o.out / kManifest).string() +
                    ": this folder holds a shard of another recipe, shard or tool version (use --force to start it over)"};
-    if (!same)
-      for (const char* name : {kManifest, kScenesIndex, kProgress, kScenesFolder}) fs::remove_all(o.out / name, ec);
+    if (!same)  // the villas first, the manifest last: a kill midway leaves the old recipe's manifest to refuse
+      for (const char* name : {kScenesFolder, kScenesIndex, kProgress, kManifest}) {
+        fs::remove_all(o.out / name, ec);
+        if (ec) return Error{(o.out / name).string() + ": cannot remove it to start over: " + ec.message()};
+      }
     fs::create_directories(o.out / kScenesFolder, ec);
   }
   if (Status s = WriteFileAtomic(o.out / kManifest, manifest.dump(2) + "\n"); !s) return Error{s.error()};
@@ -310,7 +324,7 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
     const LayoutItem& item = input->items[i];
     const uint64_t seed = VillaSeed(o.seed, item.id);
     const fs::path folder = o.out / kScenesFolder / item.id;
-    if (auto kept = VerifiedEntry(folder, item, seed)) {
+    if (auto kept = VerifiedEntry(folder, item, seed, recipe_sha256)) {
       ++summary.skipped;
       if (kept->value("status", "") == "failed") ++summary.failed;
       entries.push_back(std::move(*kept));
@@ -331,6 +345,7 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
     entry["index"] = i;
     entry["layout_sha256"] = scene::Sha256Hex(layout_bytes);
     entry["seed"] = seed;
+    entry["recipe_sha256"] = recipe_sha256;
     std::string failure;
     auto layout = ParseLayoutText(item.layout_json, o.input.string() + ":" + std::to_string(item.line));
     if (!layout) failure = layout.error();

@@ -64,6 +64,10 @@ struct ScenesOptions {
   std::function<void(const Json& entry, int done, int failed, int total)> on_villa;
 };
 
+// Why `id` cannot name a villa's folder ("" when it can): empty, over 200 bytes, a '/', a leading '.', or a
+// control byte (a NUL would cut the path short: "scenes/\0x" is "scenes/").
+std::string VillaIdProblem(const std::string& id);
+
 // The furnishing seed of one villa: the same for a villa whatever the shard that furnishes it.
 uint64_t VillaSeed(uint64_t seed, const std::string& id);
 

@@ -1,5 +1,6 @@
 #include "util/shard.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -53,25 +54,35 @@ Result<Shard> ParseShard(const std::string& text, const Environment& env) {
     return Checked(s, text);
   }
   uint64_t stated = 0;
-  if (slash != std::string::npos && !Whole(tail, &stated))
-    return Error{"--shard \"" + text + "\": expected auto/n with n a whole number"};
+  if (slash != std::string::npos && (!Whole(tail, &stated) || stated == 0))
+    return Error{"--shard \"" + text + "\": expected auto/n with n a whole number of at least 1"};
   Shard s;
   if (env("SLURM_ARRAY_TASK_ID")) {
     auto id = WholeVariable(env, "SLURM_ARRAY_TASK_ID", "");
     if (!id) return Error{id.error()};
-    auto count = WholeVariable(env, "SLURM_ARRAY_TASK_COUNT", " (Slurm sets it for job arrays: sbatch --array=0-N)");
-    if (!count) return Error{count.error()};
-    uint64_t min = 0;
-    if (env("SLURM_ARRAY_TASK_MIN")) {
-      auto m = WholeVariable(env, "SLURM_ARRAY_TASK_MIN", "");
-      if (!m) return Error{m.error()};
-      min = *m;
+    if (stated) {
+      // auto/n: the task ids are the shard indices (an array 0..n-1, or one task resubmitted alone with
+      // --array=3, whose MIN and COUNT speak of that submission only).
+      s.index = *id;
+      s.count = stated;
+    } else {
+      auto count = WholeVariable(env, "SLURM_ARRAY_TASK_COUNT", " (Slurm sets it for job arrays: sbatch --array=0-N)");
+      if (!count) return Error{count.error()};
+      uint64_t min = 0, step = 1;
+      if (env("SLURM_ARRAY_TASK_MIN")) {
+        auto m = WholeVariable(env, "SLURM_ARRAY_TASK_MIN", "");
+        if (!m) return Error{m.error()};
+        min = *m;
+      }
+      if (env("SLURM_ARRAY_TASK_STEP")) {
+        auto st = WholeVariable(env, "SLURM_ARRAY_TASK_STEP", "");
+        if (!st) return Error{st.error()};
+        step = std::max<uint64_t>(1, *st);
+      }
+      if (*id < min) return Error{"--shard auto: SLURM_ARRAY_TASK_ID " + std::to_string(*id) + " is below SLURM_ARRAY_TASK_MIN " + std::to_string(min)};
+      s.index = (*id - min) / step;
+      s.count = *count;
     }
-    if (*id < min) return Error{"--shard auto: SLURM_ARRAY_TASK_ID " + std::to_string(*id) + " is below SLURM_ARRAY_TASK_MIN " + std::to_string(min)};
-    s.index = *id - min;
-    s.count = *count;
-    if (stated && stated != s.count)
-      return Error{"--shard " + text + ": the job array has " + std::to_string(s.count) + " tasks, not " + std::to_string(stated)};
   } else if (env("JOB_COMPLETION_INDEX")) {
     auto index = WholeVariable(env, "JOB_COMPLETION_INDEX", "");
     if (!index) return Error{index.error()};

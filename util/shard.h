@@ -2,7 +2,8 @@
 // Which part of a dataset job this process does: shard i of n takes the items [N*i/n, N*(i+1)/n) of N,
 // so shards concatenated in order are the whole job and every shard differs in size by at most one.
 // `--shard` takes "i/n", or "auto" on a cluster: Slurm's job array (SLURM_ARRAY_TASK_ID counted from
-// SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT tasks), else a Kubernetes indexed job
+// SLURM_ARRAY_TASK_MIN in steps of SLURM_ARRAY_TASK_STEP, of SLURM_ARRAY_TASK_COUNT tasks; with "auto/n" the
+// task id itself of n shards, so one task resubmitted alone keeps its shard), else a Kubernetes indexed job
 // (JOB_COMPLETION_INDEX, of VILLA_SHARD_COUNT or "auto/n"'s n shards).
 #include <cstdint>
 #include <functional>

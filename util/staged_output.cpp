@@ -61,7 +61,10 @@ Result<std::unique_ptr<StagedOutput>> StagedOutput::Open(const fs::path& dir) {
       std::vector<std::string> names;
       for (std::string line; std::getline(marker, line);)
         if (!line.empty()) names.push_back(line);
-      if (Status s = RollForward(dir, out->staging_, names); !s) return Error{s.error()};
+      if (Status s = RollForward(dir, out->staging_, names); !s) {
+        out->committed_ = true;  // keep the staging folder and its marker: the next run tries again
+        return Error{s.error()};
+      }
     }
     fs::remove_all(out->staging_, ec);
   }

@@ -64,7 +64,7 @@ time_limit=${time_limit:-$(( (per_task_s + 59) / 60 ))}
 echo "submit.sh: $kind of $items item(s) in $tasks task(s) of $cpus CPU(s), $mem and ${time_limit} min each" >&2
 
 array=$(sbatch --parsable --array=0-$((tasks - 1)) --cpus-per-task="$cpus" --mem="$mem" --time="$time_limit" \
-  --chdir="$out/logs" --export=ALL,VILLA="$villa",VILLA_OUT="$out",VILLA_LAYOUTS="$layouts",VILLA_ARGS="$args" \
+  --chdir="$out/logs" --export=ALL,VILLA="$villa",VILLA_OUT="$out",VILLA_LAYOUTS="$layouts",VILLA_ARGS="$args",VILLA_SHARDS="$tasks" \
   "$here/$kind.sbatch")
 array=${array%%;*}
 merge=$(sbatch --parsable --dependency=afterok:"$array" --kill-on-invalid-dep=yes --cpus-per-task=1 --mem=2G --time=60 \

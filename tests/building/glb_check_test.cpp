@@ -61,4 +61,7 @@ TEST_CASE("a .glb is checked before the importer: header, hierarchy, outside fil
   nan["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}};
   nan["accessors"] = {{{"count", 3}, {"type", "VEC3"}, {"componentType", 5126}, {"min", {0, 0, 0}}, {"max", {1, nullptr, 1}}}};
   CHECK(CheckGlbStructure(Glb(nan), "nan.glb").error().find("nan.glb: accessor 0 (POSITION): min/max missing, not finite") == 0);
+  nlohmann::json wrong = Chain(1);
+  wrong["meshes"] = {1};
+  CHECK(CheckGlbStructure(Glb(wrong), "w.glb").error().find("w.glb: malformed glTF JSON: ") == 0);
 }

@@ -202,6 +202,12 @@ TEST_CASE("the layouts of a synth file, an annotator export and a fine-tune expo
     f << R"({"id":"../x","layout":)" << layout << "}\n";
   }
   CHECK(shards::ReadLayoutInput(tmp.path / "slash.jsonl").error().find(":1: \"id\": \"../x\" cannot name a folder") != std::string::npos);
+  {
+    // A NUL in an id would cut the folder's path to scenes/ itself (and remove every villa there).
+    std::ofstream f(tmp.path / "nul.jsonl");
+    f << R"({"id":"a\u0000b","layout":)" << layout << "}\n";
+  }
+  CHECK(shards::ReadLayoutInput(tmp.path / "nul.jsonl").error().find(":1: \"id\": \"a\\x00b\" cannot name a folder") != std::string::npos);
   CHECK(shards::ReadLayoutInput(tmp.path / "none.jsonl").error().find("none.jsonl: no such file") != std::string::npos);
 }
 

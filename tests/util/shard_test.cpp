@@ -46,8 +46,16 @@ TEST_CASE("the shard flag reads i/n, a Slurm array task and a Kubernetes indexed
   auto slurm = ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_COUNT", "8"}}));
   REQUIRE(slurm.ok());
   CHECK((slurm->index == 3 && slurm->count == 8));
-  CHECK(ParseShard("auto/4", Env({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "8"}})).error() ==
-        "--shard auto/4: the job array has 8 tasks, not 4");
+  // auto/n: the task id is the shard, so task 3 resubmitted alone (--array=3: MIN 3, COUNT 1) stays shard 3.
+  auto alone = ParseShard("auto/8", Env({{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_MIN", "3"}, {"SLURM_ARRAY_TASK_COUNT", "1"}}));
+  REQUIRE(alone.ok());
+  CHECK((alone->index == 3 && alone->count == 8));
+  // A stepped array (--array=0-14:2): ids 0, 2, ..., 14 are shards 0..7.
+  auto stepped = ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "6"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_STEP", "2"},
+                                          {"SLURM_ARRAY_TASK_COUNT", "8"}}));
+  REQUIRE(stepped.ok());
+  CHECK((stepped->index == 3 && stepped->count == 8));
+  CHECK(ParseShard("auto/0", Env({{"SLURM_ARRAY_TASK_ID", "0"}})).error() == "--shard \"auto/0\": expected auto/n with n a whole number of at least 1");
   CHECK(ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "0"}})).error().find("SLURM_ARRAY_TASK_COUNT is not set") != std::string::npos);
   CHECK(ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "9"}, {"SLURM_ARRAY_TASK_COUNT", "8"}})).error() ==
         "--shard auto: shard 9 does not exist among 8 (shards count from 0)");
