@@ -4,7 +4,8 @@
 # to one machine's run; `villa scenes` of 8 villas as a 4-task array, cancelled midway (scancel) and
 # submitted again, its merge equal to one machine's run file for file; `villa dataset verify` on both.
 #   scripts/slurm/selftest.sh VILLA_BINARY [WORK_DIR]
-# Exit 0 when all holds, 1 with the reason, 77 when this machine cannot run a cluster (not root, no Slurm).
+# Exit 0 when all holds, 1 with the reason, 77 when this machine cannot run a cluster (not root, no Slurm,
+# or the daemons do not start).
 set -euo pipefail
 villa=$(readlink -f "$1")
 work=${2:-$(mktemp -d /tmp/villa-slurm-selftest.XXXXXX)}
@@ -15,7 +16,13 @@ fail() { echo "selftest: $*" >&2; exit 1; }
 export VILLA_SLURMCTLD_PORT=${VILLA_SLURMCTLD_PORT:-6917} VILLA_SLURMD_PORT=${VILLA_SLURMD_PORT:-6918}
 cluster=$work/cluster
 trap '"$here/local-cluster.sh" stop "$cluster" >/dev/null 2>&1 || true' EXIT
-"$here/local-cluster.sh" start "$cluster" >/dev/null || fail "the local cluster did not start"
+# A machine where slurmd cannot start (a container without the privileges it needs) cannot run the test:
+# said, with the daemons' last words, and not counted as a failure of villa.
+if ! "$here/local-cluster.sh" start "$cluster" >"$work/cluster-start.log" 2>&1; then
+  echo "selftest: the local cluster did not start on this machine:" >&2
+  tail -n 20 "$work/cluster-start.log" >&2
+  exit 77
+fi
 export SLURM_CONF=$cluster/slurm.conf VILLA=$villa
 
 # Waits for a job (and its array tasks) to leave the queue.
