@@ -408,3 +408,46 @@ TEST_CASE("Nothing tall stands between the sofa and its TV: a plant in the view 
 
 }  // namespace
 }  // namespace villa::solver
+
+namespace villa::solver {
+namespace {
+
+TEST_CASE("A kitchen run laid with gaps is packed along its wall so that the cooker joins it", "[solver][groups][kitchen]") {
+  // villa-000004 of `villa synth --count 50 --seed 2027`, its 3 x 3.5 m kitchen furnished with seed 2027: the
+  // run was laid piece by piece, the fridge 0.49 m off the corner and the last counter's end 0.27 m from
+  // the wall, so the cooker stood alone on the opposite wall. 3.0 m of run on 3.2 m of wall: packed toward
+  // the corner, fridge, counters and cooker stand in one run (fixture: tests/fixtures/layouts/kitchen_run_gap.json).
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("villa_kitchen_run_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  FurnishOptions options;
+  options.rooms = {"kitchen_0/0"};
+  options.seed = 2027;
+  options.procedural_only = true;
+  options.pictures = false;
+  options.check_reach = false;
+  options.check_physics = false;
+  options.jobs = 1;
+  auto summary = FurnishLayoutFile(std::string(VILLA_FIXTURE_DIR) + "/layouts/kitchen_run_gap.json", dir, options);
+  REQUIRE(summary.ok());
+  std::ifstream in(dir / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  nlohmann::json kitchen;
+  for (const auto& r : report["rooms"])
+    if (r["room"] == "kitchen_0/0") kitchen = r;
+  INFO(kitchen["functional"].dump(1));
+  bool packed = false;
+  for (const auto& a : kitchen["actions"])
+    packed = packed || (a.value("id", "") == "kitchen_0/0/cooker-0" && a.value("status", "") == "applied" &&
+                        a.value("reason", "").rfind("off the run of counters: joins it", 0) == 0);
+  CHECK(packed);
+  bool run_ok = false;
+  for (const auto& g : kitchen["functional"]["groups"])
+    if (g["kind"] == "kitchen") run_ok = g["ok"].get<bool>();
+  CHECK(run_ok);
+  CHECK(kitchen["metrics"]["CR"] == 0.0);
+  CHECK(kitchen["metrics"]["OBR"] == 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace villa::solver
