@@ -1655,72 +1655,81 @@ struct RoomSolver::Impl {
         if (run.empty()) continue;
         std::sort(run.begin(), run.end(), [&](int a, int b) { return along(a) < along(b); });
         const std::string id = state.objects[k].id;
+        // Hung pieces above a moved one (behind it on the wall) follow it.
+        auto hung_above = [&](int i) {
+          std::vector<int> out;
+          for (const SemanticEdge& e : state.edges)
+            if (e.target == state.objects[i].id && e.relation == SemanticRelation::kBehind)
+              if (const int h = state.Find(e.source); h >= 0 && state.objects[h].relation == Relation::kOnWall) out.push_back(h);
+          return out;
+        };
+        bool joined = false;
         for (int direction : {+1, -1}) {  // packed toward the wall's start, the stray piece at its end; then the other way
           std::vector<int> order = run;
           if (direction < 0) std::reverse(order.begin(), order.end());
           // The piece at the open end must be a counter for the stray piece to join the run there.
           if (state.objects[order.back()].category != "counter") continue;
-          const RoomState saved = state;
-          const int trouble = GroupTrouble();
-          // Where each piece goes: t along the wall from the packing end, 2 cm apart.
+          // The run's length, 2 cm between pieces; it starts 3 cm off the corner (as the free floor keeps), or
+          // further along past what stands in the corner (a fridge of the next wall's run), 5 cm at a time.
           const double gap = 0.02;
-          double cursor = 0.03;  // off the corner's wall, as the free floor keeps
-          std::vector<std::pair<int, double>> targets;
-          for (int i : order) {
-            targets.push_back({i, cursor + half(i)});
-            cursor += 2.0 * half(i) + gap;
-          }
-          targets.push_back({j, cursor + half(j)});
-          if (cursor + 2.0 * half(j) > length) continue;
-          // Hung pieces above a moved one (behind it on the wall) follow it.
-          auto hung_above = [&](int i) {
-            std::vector<int> out;
-            for (const SemanticEdge& e : state.edges)
-              if (e.target == state.objects[i].id && e.relation == SemanticRelation::kBehind)
-                if (const int h = state.Find(e.source); h >= 0 && state.objects[h].relation == Relation::kOnWall) out.push_back(h);
-            return out;
-          };
-          std::vector<ActionResult> done;
-          for (const auto& [i, t0] : targets) {
-            const double t = direction > 0 ? t0 : length - t0;
-            const Point at = geo::Add(wall.a, geo::Scale(d, t));
-            const Pose from = state.placements[i].pose;
-            Pose want = from;
-            want.x = at.x;
-            want.y = at.y;
-            state.placements[i].wall = w;
-            const Pose to = Snap(i, want);
-            state.SetPose(i, to);
-            for (int h : hung_above(i)) {
-              Pose hp = state.placements[h].pose;
-              hp.x = at.x;
-              hp.y = at.y;
-              state.placements[h].wall = w;
-              state.SetPose(h, Snap(h, hp));
+          double total = 0.0;
+          for (int i : order) total += 2.0 * half(i) + gap;
+          total += 2.0 * half(j);
+          for (double start = 0.03; !joined && start + total <= length + 1e-9; start += 0.05) {
+            const RoomState saved = state;
+            const int trouble = GroupTrouble();
+            double cursor = start;
+            std::vector<std::pair<int, double>> targets;
+            for (int i : order) {
+              targets.push_back({i, cursor + half(i)});
+              cursor += 2.0 * half(i) + gap;
             }
-            if (std::hypot(to.x - from.x, to.y - from.y) < 1e-6) continue;
-            ActionResult r;
-            r.action.kind = ActionKind::kUpdatePose;
-            r.action.id = state.objects[i].id;
-            r.action.pose = to;
-            r.action.wall = w;
-            r.action.reason = i == j ? "off the run of counters: joins it, the run packed along its wall"
-                                     : "the run of counters packed along its wall to make room for " + id;
-            r.status = ActionStatus::kApplied;
-            r.message = "done";
-            r.final_pose = to;
-            done.push_back(std::move(r));
+            targets.push_back({j, cursor + half(j)});
+            std::vector<ActionResult> done;
+            for (const auto& [i, t0] : targets) {
+              const double t = direction > 0 ? t0 : length - t0;
+              const Point at = geo::Add(wall.a, geo::Scale(d, t));
+              const Pose from = state.placements[i].pose;
+              Pose want = from;
+              want.x = at.x;
+              want.y = at.y;
+              state.placements[i].wall = w;
+              const Pose to = Snap(i, want);
+              state.SetPose(i, to);
+              for (int h : hung_above(i)) {
+                Pose hp = state.placements[h].pose;
+                hp.x = at.x;
+                hp.y = at.y;
+                state.placements[h].wall = w;
+                state.SetPose(h, Snap(h, hp));
+              }
+              if (std::hypot(to.x - from.x, to.y - from.y) < 1e-6) continue;
+              ActionResult r;
+              r.action.kind = ActionKind::kUpdatePose;
+              r.action.id = state.objects[i].id;
+              r.action.pose = to;
+              r.action.wall = w;
+              r.action.reason = i == j ? "off the run of counters: joins it, the run packed along its wall"
+                                       : "the run of counters packed along its wall to make room for " + id;
+              r.status = ActionStatus::kApplied;
+              r.message = "done";
+              r.final_pose = to;
+              done.push_back(std::move(r));
+            }
+            // The cheap tests first, the exact check last.
+            bool fine = TouchesCounter(j);
+            for (const auto& [i, t0] : targets) fine = fine && HardBesidesHung(i) <= kFeasible;
+            fine = fine && GroupTrouble() <= trouble && ExactlyClean();
+            if (fine) {
+              for (ActionResult& r : done) summary.actions.push_back(std::move(r));
+              ++summary.iterations;
+              Check();
+              changed = joined = true;
+            } else {
+              state = saved;
+            }
           }
-          bool fine = TouchesCounter(j) && GroupTrouble() <= trouble;
-          for (const auto& [i, t0] : targets) fine = fine && HardBesidesHung(i) <= kFeasible;
-          if (fine && ExactlyClean()) {
-            for (ActionResult& r : done) summary.actions.push_back(std::move(r));
-            ++summary.iterations;
-            Check();
-            changed = true;
-            break;
-          }
-          state = saved;
+          if (joined) break;
         }
       }
     }
