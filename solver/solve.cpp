@@ -1690,19 +1690,7 @@ struct RoomSolver::Impl {
               const double t = direction > 0 ? t0 : length - t0;
               const Point at = geo::Add(wall.a, geo::Scale(d, t));
               const Pose from = state.placements[i].pose;
-              Pose want = from;
-              want.x = at.x;
-              want.y = at.y;
-              state.placements[i].wall = w;
-              const Pose to = Snap(i, want);
-              state.SetPose(i, to);
-              for (int h : hung_above(i)) {
-                Pose hp = state.placements[h].pose;
-                hp.x = at.x;
-                hp.y = at.y;
-                state.placements[h].wall = w;
-                state.SetPose(h, Snap(h, hp));
-              }
+              const Pose to = StandAgainst(i, w, at, hung_above(i));
               if (std::hypot(to.x - from.x, to.y - from.y) < 1e-6) continue;
               ActionResult r;
               r.action.kind = ActionKind::kUpdatePose;
@@ -1731,9 +1719,82 @@ struct RoomSolver::Impl {
           }
           if (joined) break;
         }
+        if (!joined) joined = TurnCorner(j, hung_above);
+        changed = changed || joined;
       }
     }
     return changed;
+  }
+
+  // Object i against wall w at the point `at` of it (snapped: back to the wall, facing the room), the pieces
+  // hung above it following it on that wall. Returns its new pose.
+  Pose StandAgainst(int i, int w, Point at, const std::vector<int>& hung) {
+    for (int k : hung) {
+      Pose hp = state.placements[k].pose;
+      hp.x = at.x;
+      hp.y = at.y;
+      state.placements[k].wall = w;
+      state.SetPose(k, Snap(k, hp));
+    }
+    Pose want = state.placements[i].pose;
+    want.x = at.x;
+    want.y = at.y;
+    state.placements[i].wall = w;
+    const Pose to = Snap(i, want);
+    state.SetPose(i, to);
+    return to;
+  }
+
+  // The run turned round a corner (an L): stray piece j against the next wall, just past a counter whose
+  // end stands against that wall, its side along the counter's front. Kept as PackKitchenRun keeps.
+  template <class HungAbove>
+  bool TurnCorner(int j, const HungAbove& hung_above) {
+    const std::string id = state.objects[j].id;
+    const double half_j = 0.5 * state.objects[j].asset.size.x * state.placements[j].pose.scale;
+    for (size_t c = 0; c < state.objects.size(); ++c) {
+      if (state.objects[c].category != "counter" || state.parent[c] >= 0) continue;
+      const OrientedBox box = state.WorldBox(static_cast<int>(c));
+      for (size_t w2 = 0; w2 < problem.walls.size(); ++w2) {
+        if (static_cast<int>(w2) == state.placements[c].wall) continue;
+        const WallEdge& wall = problem.walls[w2];
+        const Point d = geo::Unit(geo::Sub(wall.b, wall.a));
+        const double length = geo::Dist(wall.a, wall.b);
+        // The counter's extent along this wall and how near it stands to it.
+        double lo = 1e9, hi = -1e9, near = 1e9;
+        for (int sx : {-1, 1})
+          for (int sy : {-1, 1}) {
+            const Point corner = geo::Add(geo::Add(box.c, geo::Scale(box.U(), sx * box.hx)), geo::Scale(box.V(), sy * box.hy));
+            const double t = geo::Dot(geo::Sub(corner, wall.a), d);
+            lo = std::min(lo, t), hi = std::max(hi, t);
+            near = std::min(near, std::abs(geo::Cross(d, geo::Sub(corner, wall.a))));
+          }
+        if (near > 0.1) continue;  // its end does not stand against this wall
+        for (const double t : {hi + 0.02 + half_j, lo - 0.02 - half_j}) {
+          if (t - half_j < 0.0 || t + half_j > length) continue;
+          const RoomState saved = state;
+          const int trouble = GroupTrouble();
+          const Point at = geo::Add(wall.a, geo::Scale(d, t));
+          const Pose to = StandAgainst(j, static_cast<int>(w2), at, hung_above(j));
+          if (TouchesCounter(j) && HardBesidesHung(j) <= kFeasible && GroupTrouble() <= trouble && ExactlyClean()) {
+            ActionResult r;
+            r.action.kind = ActionKind::kUpdatePose;
+            r.action.id = id;
+            r.action.pose = to;
+            r.action.wall = static_cast<int>(w2);
+            r.action.reason = "off the run of counters: joins it round the corner, beside " + state.objects[c].id;
+            r.status = ActionStatus::kApplied;
+            r.message = "done";
+            r.final_pose = to;
+            summary.actions.push_back(std::move(r));
+            ++summary.iterations;
+            Check();
+            return true;
+          }
+          state = saved;
+        }
+      }
+    }
+    return false;
   }
 
   // Issue 27: what the agent, the critic or the reachability feedback removed while the room was still
