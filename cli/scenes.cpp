@@ -43,14 +43,16 @@ void Run(ScenesCommand& command) {
   o.out = command.out;
   o.furnish.pictures = command.pictures;
   const auto start = std::chrono::steady_clock::now();
+  int furnished_now = 0;  // on_villa is called for the villas this run furnishes (not those kept from before)
   if (!command.quiet)
     // One line a villa (a cluster task's log is a file, not a terminal): count, rate, ETA.
     o.on_villa = [&](const shards::Json& entry, int done, int failed, int total) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const int finished = done + failed;
+      const double per_villa = elapsed / ++furnished_now;  // this run's rate: a resumed run's kept villas cost nothing
       std::printf("scenes %s: %d/%d (%d failed) %s %s in %.1f s; %.1f villas/h, ETA %s\n", shard->Text().c_str(), finished, total, failed,
                   entry["id"].get<std::string>().c_str(), entry.value("status", "").c_str(), entry.value("seconds", 0.0),
-                  finished > 0 ? finished / elapsed * 3600.0 : 0.0, finished > 0 ? Clock(elapsed / finished * (total - finished)).c_str() : "-");
+                  3600.0 / per_villa, Clock(per_villa * (total - finished)).c_str());
       std::fflush(stdout);
     };
   auto summary = shards::RunScenesShard(o);

@@ -11,11 +11,8 @@
 
 namespace villa::scene {
 
-std::string Sha256Hex(std::string_view bytes) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  // EVP_Digest is one call: context, update and final inside; it fails only when out of memory.
-  if (EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr) != 1) return "";
+namespace {
+std::string Hex(const unsigned char* digest, unsigned int length) {
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out;
   out.reserve(2 * length);
@@ -24,6 +21,15 @@ std::string Sha256Hex(std::string_view bytes) {
     out.push_back(kHex[digest[i] & 15]);
   }
   return out;
+}
+}  // namespace
+
+std::string Sha256Hex(std::string_view bytes) {
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  // EVP_Digest is one call: context, update and final inside; it fails only when out of memory.
+  if (EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr) != 1) return "";
+  return Hex(digest, length);
 }
 
 Result<std::string> FileSha256(const std::filesystem::path& path) {
@@ -43,13 +49,7 @@ Result<std::string> FileSha256(const std::filesystem::path& path) {
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) return Error{path.string() + ": SHA-256 failed"};
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (unsigned int i = 0; i < length; ++i) {
-    out.push_back(kHex[digest[i] >> 4]);
-    out.push_back(kHex[digest[i] & 15]);
-  }
-  return out;
+  return Hex(digest, length);
 }
 
 }  // namespace villa::scene

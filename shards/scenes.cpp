@@ -1,7 +1,5 @@
 #include "shards/scenes.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,6 +17,7 @@
 #include "scene/file_digest.h"
 #include "util/atomic_file.h"
 #include "util/excerpt.h"
+#include "util/folder_lock.h"
 #include "util/hash.h"
 #include "util/version.h"
 
@@ -37,28 +36,6 @@ std::string IsoTime(std::time_t t) {
   return text;
 }
 
-// An exclusive lock on the shard's folder for the life of the run: a second process on the same shard (a
-// resubmitted task while the first still runs) is refused rather than interleaved.
-class FolderLock {
- public:
-  explicit FolderLock(const fs::path& dir) : path_(dir / ".lock") {
-    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd_);
-      fd_ = -2;
-    }
-  }
-  ~FolderLock() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  bool held() const { return fd_ >= 0; }
-  bool busy() const { return fd_ == -2; }
-
- private:
-  fs::path path_;
-  int fd_ = -1;
-};
-
 // The index line a villa's folder holds, if it still matches its files and this recipe's view of the villa.
 std::optional<Json> VerifiedEntry(const fs::path& item, const LayoutItem& want, uint64_t seed, const std::string& recipe_sha256) {
   auto text = ReadFile(item / kEntry);
@@ -71,17 +48,6 @@ std::optional<Json> VerifiedEntry(const fs::path& item, const LayoutItem& want, 
   auto files = HashFolder(item);
   if (!files || *files != entry["files"]) return std::nullopt;
   return entry;
-}
-
-// report.json without its wall and CPU timings (and --jobs), so that a villa's files are the same bytes
-// whatever machine, load, shard or thread count made them (its seconds are in its index line).
-void StripTimings(Json& j) {
-  if (j.is_object()) {
-    for (const char* key : {"seconds", "seconds_mean", "room_seconds"}) j.erase(key);
-    for (auto& [k, v] : j.items()) StripTimings(v);
-  } else if (j.is_array()) {
-    for (Json& v : j) StripTimings(v);
-  }
 }
 
 Json Metrics(const solver::FurnishedVilla& villa) {
@@ -251,9 +217,9 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
   std::error_code ec;
   fs::create_directories(o.out / kScenesFolder, ec);
   if (ec) return Error{(o.out / kScenesFolder).string() + ": cannot create the folder: " + ec.message()};
-  FolderLock lock(o.out);
-  if (lock.busy()) return Error{"usage: " + o.out.string() + ": another villa scenes run is writing this shard now"};
-  if (!lock.held()) return Error{(o.out / ".lock").string() + ": cannot open the lock file"};
+  // One run a shard: a task resubmitted while the first still runs is refused, not interleaved.
+  auto lock = FolderLock::Take(o.out);
+  if (!lock) return Error{lock.error().rfind("busy: ", 0) == 0 ? "usage: " + lock.error().substr(6) : lock.error()};
 
   // A folder of another recipe or shard is someone else's work: refused unless --force starts over.
   if (fs::exists(o.out / kManifest, ec)) {
@@ -284,6 +250,7 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
   solver::FurnishOptions furnish = o.furnish;
   furnish.critic = critic::MakeRoomCritic(critic_options);
   furnish.force = false;
+  furnish.report_timings = false;  // a villa's files the same on every run: its seconds go to the index
 
   ScenesSummary summary;
   summary.total = static_cast<int>(last - first);
@@ -370,11 +337,6 @@ Result<ScenesSummary> RunScenesShard(const ScenesOptions& o) {
         villa->library_note = library->note;
         auto written = solver::WriteFurnishedVillaFiles(*villa, temp, fo);
         if (!written) return Error{written.error()};  // a write failure is the machine's, not the villa's: stop
-        Json report = solver::FurnishReportJson(*villa, fo);
-        StripTimings(report);
-        report.erase("jobs");  // how many rooms ran at once: the villa is the same whatever it was
-        report["timings"] = "left out of a dataset's villas so that their files are the same on every run: see scenes.jsonl";
-        if (Status s = WriteFileAtomic(temp / "report.json", report.dump(2) + "\n"); !s) return Error{s.error()};
         entry["status"] = "ok";
         entry["metrics"] = Metrics(*villa);
       }

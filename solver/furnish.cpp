@@ -767,6 +767,18 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
   return villa;
 }
 
+namespace {
+// The report without its wall and CPU timings: the same bytes whatever machine, load or thread count.
+void StripTimings(Json& j) {
+  if (j.is_object()) {
+    for (const char* key : {"seconds", "seconds_mean", "room_seconds"}) j.erase(key);
+    for (auto& [k, v] : j.items()) StripTimings(v);
+  } else if (j.is_array()) {
+    for (Json& v : j) StripTimings(v);
+  }
+}
+}  // namespace
+
 Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& options) {
   const FurnishSummary& s = villa.summary;
   Json j;
@@ -827,6 +839,11 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
     j["reachability"] = s.reach_note.empty() ? Json(nullptr) : Json{{"note", s.reach_note}};
   }
   j["physics"] = villa.physics ? physics::SettleSummaryJson(*villa.physics, options.settle) : Json(nullptr);
+  if (!options.report_timings) {
+    StripTimings(j);
+    j.erase("jobs");  // how many rooms ran at once: the villa is the same whatever it was
+    j["timings"] = "left out (FurnishOptions::report_timings) so that the file is the same on every run";
+  }
   return j;
 }
 

@@ -111,6 +111,9 @@ struct FurnishOptions {
   ExactCheckOptions check;
   bool allow_invalid = false;  // furnish a layout that breaks the geometric rules 1-5 (the builder adapts)
   bool pictures = true;        // plan.png and rooms/<room>.png
+  // report.json with its wall and CPU seconds and --jobs; `villa scenes` leaves them out so that a villa's
+  // files are the same bytes on every machine and shard (its seconds go into the dataset's index).
+  bool report_timings = true;
   bool force = false;          // overwrite the outputs of an earlier run in the folder (never other files)
   // Reachability (docs/REACH.md), after every room is solved: a person (a disc of reach.reach.radius) walks
   // from the entrance to every room and interaction zone, across floors by the stairs; what furniture

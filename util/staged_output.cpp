@@ -1,9 +1,5 @@
 #include "util/staged_output.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <fstream>
 #include <sstream>
 
@@ -33,12 +29,12 @@ Status RollForward(const fs::path& dir, const fs::path& staging, const std::vect
 
 }  // namespace
 
-StagedOutput::StagedOutput(fs::path dir, int lock_fd) : dir_(std::move(dir)), staging_(dir_ / kStagingName), lock_fd_(lock_fd) {}
+StagedOutput::StagedOutput(fs::path dir, std::unique_ptr<FolderLock> lock)
+    : dir_(std::move(dir)), staging_(dir_ / kStagingName), lock_(std::move(lock)) {}
 
 StagedOutput::~StagedOutput() {
   std::error_code ec;
   if (!committed_) fs::remove_all(staging_, ec);
-  if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
 Result<std::unique_ptr<StagedOutput>> StagedOutput::Open(const fs::path& dir) {
@@ -46,14 +42,9 @@ Result<std::unique_ptr<StagedOutput>> StagedOutput::Open(const fs::path& dir) {
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) return Error{dir.string() + ": exists and is not a folder"};
   fs::create_directories(dir, ec);
   if (ec) return Error{dir.string() + ": cannot create the folder: " + ec.message()};
-  const fs::path lock = dir / ".villa.lock";
-  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) return Error{lock.string() + ": cannot open the lock file (is the folder writable?)"};
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd);
-    return Error{"busy: " + dir.string() + ": another villa run is writing into this folder now"};
-  }
-  std::unique_ptr<StagedOutput> out(new StagedOutput(dir, fd));
+  auto lock = FolderLock::Take(dir);
+  if (!lock) return Error{lock.error()};
+  std::unique_ptr<StagedOutput> out(new StagedOutput(dir, std::move(*lock)));
   // A killed run's staging folder: finished when it got as far as its marker, else discarded.
   if (fs::exists(out->staging_, ec)) {
     std::ifstream marker(out->staging_ / kMarker);

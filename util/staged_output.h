@@ -3,8 +3,8 @@
 // DIR/.villa-staging/ first; Commit() records the names in a marker file, then renames each into DIR and
 // removes the staging folder. A run killed before the marker leaves DIR as it was (the next run discards
 // the staging folder); one killed after it is finished by the next run (roll forward), so DIR always holds
-// either the previous run's outputs or the new run's, never half of one. A lock (flock on DIR/.villa.lock)
-// keeps two runs from writing one folder at once: the second is refused.
+// either the previous run's outputs or the new run's, never half of one. A lock (util/folder_lock.h) keeps
+// two runs from writing one folder at once: the second is refused.
 //   auto stage = StagedOutput::Open(dir);           // lock, recover, fresh staging folder
 //   WriteFileAtomic(stage->path() / "report.json", ...);
 //   stage->Commit({"report.json", "rooms"});        // a folder moves as a whole, replacing the old one
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "util/folder_lock.h"
 #include "util/result.h"
 
 namespace villa {
@@ -34,9 +35,9 @@ class StagedOutput {
   static constexpr const char* kStagingName = ".villa-staging";
 
  private:
-  StagedOutput(std::filesystem::path dir, int lock_fd);
+  StagedOutput(std::filesystem::path dir, std::unique_ptr<FolderLock> lock);
   std::filesystem::path dir_, staging_;
-  int lock_fd_ = -1;
+  std::unique_ptr<FolderLock> lock_;
   bool committed_ = false;
 };
 

@@ -8,7 +8,15 @@
 # or the daemons do not start).
 set -euo pipefail
 villa=$(readlink -f "$1")
-work=${2:-$(mktemp -d /tmp/villa-slurm-selftest.XXXXXX)}
+# WORK_DIR: where the cluster, the runs and the logs go (kept, to read after a failure); without it a
+# temporary folder, removed when everything held.
+if [[ -n ${2:-} ]]; then
+  work=$2
+  own_work=no
+else
+  work=$(mktemp -d /tmp/villa-slurm-selftest.XXXXXX)
+  own_work=yes
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 [[ $(id -u) == 0 ]] || { echo "selftest: needs root to run slurmd" >&2; exit 77; }
 command -v sbatch >/dev/null && command -v munged >/dev/null || { echo "selftest: slurm-wlm or munge not installed" >&2; exit 77; }
@@ -71,3 +79,6 @@ done < <(cd "$work/scenes-one" && find scenes -type f ! -name entry.json | sort)
 [[ $n -eq 40 ]] || fail "expected 40 villa files, compared $n"
 [[ $(find "$work/scenes/shards" -name '.tmp-*' | wc -l) -eq 0 ]] || fail "a temporary villa folder was kept"
 echo "selftest: scenes 8 villas in 4 tasks (resubmitted), merged equal to one machine's run file for file ($n files)"
+"$here/local-cluster.sh" stop "$cluster" >/dev/null 2>&1 || true
+if [[ $own_work == yes ]]; then rm -rf "$work"; fi
+exit 0
