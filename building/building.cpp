@@ -915,16 +915,21 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         // Swung open as layout/door_swing.h's rule says (the floor plan draws the same swing): into its
         // room, hinged at the jamb it names, 90 degrees, or 180 degrees flat against the wall beside the
         // hinge. Hung closed in its opening when the leaf's sweep would hit a wall or a staircase.
+        SwingClearance clearance;
+        clearance.exterior_wall = options.exterior_wall_thickness;
+        clearance.interior_wall = options.interior_wall_thickness;
+        clearance.leaf_thickness = lt;
+        const DoorSwing swing = SwingOfDoor(layout, *p.element, level, clearance);
+        const int side = Dot(swing.leaf_side, f.normal) >= 0.0 ? 1 : -1;
+        const double s_hinge = f.S(swing.hinge);
+        const int hinge = std::abs(s_hinge - p.cut.s0) <= std::abs(s_hinge - p.cut.s1) ? 0 : 1;
+        // The leaf's direction from its hinge (s, q: a right-handed frame, so turns there are turns in the
+        // plan) closed, open at 90 degrees and flat; the turn from one to another.
+        const double closed_dir = hinge == 0 ? 0.0 : std::numbers::pi, open_dir = side > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+        const double flat_dir = hinge == 0 ? std::numbers::pi : 0.0;
+        auto turn = [](double from, double to) { return std::remainder(to - from, 2 * std::numbers::pi); };
         bool placed_open = false;
         if (options.door_leaves_open) {
-          SwingClearance clearance;
-          clearance.exterior_wall = options.exterior_wall_thickness;
-          clearance.interior_wall = options.interior_wall_thickness;
-          clearance.leaf_thickness = lt;
-          const DoorSwing swing = SwingOfDoor(layout, *p.element, level, clearance);
-          const int side = Dot(swing.leaf_side, f.normal) >= 0.0 ? 1 : -1;
-          const double s_hinge = f.S(swing.hinge);
-          const int hinge = std::abs(s_hinge - p.cut.s0) <= std::abs(s_hinge - p.cut.s1) ? 0 : 1;
           // The leaf's box in the wall's frame: s along it, q across (from the centre line).
           double s0 = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap - lt, s1 = s0 + lt;
           double q0 = side > 0 ? half + gap : -half - gap - width, q1 = q0 + width;
@@ -953,14 +958,24 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
           if (blocker.empty()) {
             part.mesh = BoxInFrame(f, s0, s1, q0, q1, p.cut.z0 + 0.01, p.cut.z1 - gap);
             placed_open = true;
+            // The hinge: the leaf's edge by the opening, on the face toward the wall it stands off.
+            const double hs = swing.flat ? (hinge == 0 ? s1 : s0) : (hinge == 0 ? s0 : s1);
+            const double hq = side > 0 ? q0 : q1;
+            const double from = swing.flat ? flat_dir : open_dir;
+            // A flat leaf closes through the open position (the way it came), not through the wall.
+            const double to_open = turn(from, open_dir);
+            part.hinge = MeshPart::Hinge{f.ToPlan(hs, hq), to_open + turn(open_dir, closed_dir), to_open};
           } else {
             building.warnings.push_back(std::string(ElementKindKey(p.element->kind)) + " " + p.name + ": its swing" +
                                         (swing.into >= 0 ? " into " + layout.rooms[swing.into].name() : "") + " would hit " +
                                         blocker + "; hung closed");
           }
         }
-        if (!placed_open)
+        if (!placed_open) {
           part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s1 - gap, -lt / 2, lt / 2, p.cut.z0 + 0.01, p.cut.z1 - gap);
+          const double hs = hinge == 0 ? p.cut.s0 + gap : p.cut.s1 - gap, hq = side > 0 ? lt / 2 : -lt / 2;
+          part.hinge = MeshPart::Hinge{f.ToPlan(hs, hq), 0.0, turn(closed_dir, open_dir)};
+        }
       }
       building.parts.push_back(std::move(part));
     }

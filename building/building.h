@@ -9,6 +9,7 @@
 // and the roof covers the top level, z in [N*2.8, N*2.8 + slab]: a building of N floors is
 // N*2.8 + slab tall. The slab of level L >= 1 covers the footprint of level L-1 (it is the ceiling of
 // the floor below; the part outside level L's footprint is a flat roof terrace).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,14 @@ struct MeshPart {
   Category category = Category::kRoom;  // floors: the room's category
   std::string element;  // the layout element it comes from ("" for exterior walls, terraces, the roof)
   TriangleMesh mesh;    // closed solid(s), CCW from outside
+  // Door leaves: the vertical axis the leaf turns about (plan point, at its edge by the jamb, on the face
+  // that meets the wall) and the turns (radians, counter-clockwise seen from above, from where it hangs)
+  // that close it and that open it to 90 degrees into its room; a simulator's hinge runs between them.
+  struct Hinge {
+    Point at;
+    double to_closed = 0.0, to_open = 0.0;
+  };
+  std::optional<Hinge> hinge;
 };
 
 struct BuiltRoom {

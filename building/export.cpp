@@ -13,6 +13,7 @@
 #include <functional>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 #include <memory>
 
@@ -295,6 +296,16 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
         node.extras["category"] = std::string(CategoryName(part.category));
         if (r != rooms.end()) node.extras["area_m2"] = std::round(r->second->area * 100.0) / 100.0;
         node.extras["level"] = level;
+      }
+      if (part.hinge) {
+        // The leaf's hinge for a simulator (BUILDING.md): a vertical axis (+Y) through (hinge_x, hinge_z) in
+        // the file's frame, and the turns about it (degrees, right-handed about +Y) to closed and to open.
+        const Vec3 at = ToGltfFrame({part.hinge->at.x, part.hinge->at.y, 0.0});
+        node.extras["part"] = "door";
+        node.extras["hinge_x"] = std::round(at.x * 1e4) / 1e4;
+        node.extras["hinge_z"] = std::round(at.z * 1e4) / 1e4;
+        node.extras["closed_deg"] = std::round(part.hinge->to_closed * 180.0 / std::numbers::pi * 100.0) / 100.0;
+        node.extras["open_deg"] = std::round(part.hinge->to_open * 180.0 / std::numbers::pi * 100.0) / 100.0;
       }
       const int index = add_node(std::move(node));
       switch (part.kind) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "cli/command.h"
 #include "physics/glb_settle.h"
 #include "physics/mjcf.h"
+#include "physics/mujoco_run.h"
 #include "util/text_table.h"
 
 namespace villa::cli {
@@ -30,16 +32,30 @@ void Run(const PhysicsCommand& command) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(command.glb, ec)) throw UsageError("physics: " + command.glb + ": no such file");
   if (std::string bad = command.options.Check(); !bad.empty()) throw UsageError("physics: " + bad);
+  std::optional<physics::MjcfExport> mjcf;
   if (!command.mjcf.empty()) {
-    auto written = physics::WriteMjcf(command.glb, command.mjcf, command.options);
-    if (!written.ok()) {
-      std::cerr << "villa physics: " << written.error() << "\n";
+    auto exported = physics::ExportMjcf(command.glb, command.mjcf, command.options);
+    if (!exported.ok()) {
+      std::cerr << "villa physics: " << exported.error() << "\n";
       SetExitCode(kExitFailure);
       return;
     }
-    std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << written->bodies << " bodies ("
-              << written->free << " free), " << written->geoms << " object geoms, " << written->static_geoms
-              << " building geoms (" << written->boxes << " of them boxes), " << written->meshes << " meshes\n";
+    mjcf = *exported;
+    const physics::MjcfSummary& w = mjcf->written;
+    const physics::MujocoRun& r = mjcf->run;
+    std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << w.bodies << " bodies ("
+              << w.free << " free), " << w.doors << " door leaves on hinges, " << w.geoms << " object geoms (" << w.merged
+              << " boxes merged into their neighbours), " << w.static_geoms << " building geoms (" << w.prisms
+              << " pieces cut into convex prisms, " << w.hulls << " left whole), " << w.boxes << " boxes and "
+              << w.meshes << " meshes; buffers nconmax " << w.nconmax << ", njmax " << w.njmax << "\n"
+              << "MuJoCo " << r.version << " loaded it and ran " << command.options.seconds << " s in "
+              << FormatFixed(r.wall_seconds, 1) << " s: " << r.strict << " of " << r.free << " free objects within 1 cm and 0.1 rad ("
+              << FormatPercent(r.strict, r.free) << "), " << r.loose << " within 20 cm and 8 degrees ("
+              << FormatPercent(r.loose, r.free) << "); up to " << r.max_contacts << " contacts, " << r.max_rows << " rows"
+              << (r.unstable ? "; MuJoCo called the simulation unstable" : "") << "\n";
+    for (size_t i = 0; i < r.movers.size() && static_cast<int>(i) < command.movers; ++i)
+      std::cerr << "  MuJoCo: moved " << FormatFixed(100.0 * r.movers[i].moved, 1) << " cm, turned "
+                << FormatFixed(r.movers[i].turned, 3) << " rad: " << r.movers[i].body << "\n";
   }
   auto settled = physics::SettleGlb(command.glb, command.options, command.only);
   if (!settled.ok()) {
@@ -63,6 +79,22 @@ void Run(const PhysicsCommand& command) {
   if (command.json) {
     nlohmann::ordered_json out{{"format", "villa-physics/1"}, {"glb", command.glb}};
     out.update(physics::SettleSummaryJson(s, command.options, command.movers));
+    if (mjcf) {
+      const physics::MujocoRun& r = mjcf->run;
+      nlohmann::ordered_json movers = nlohmann::ordered_json::array();
+      for (size_t i = 0; i < r.movers.size() && static_cast<int>(i) < command.movers; ++i)
+        movers.push_back({{"id", r.movers[i].body}, {"moved_m", r.movers[i].moved}, {"turned_rad", r.movers[i].turned}});
+      out["mjcf"] = {{"xml", (std::filesystem::path(command.mjcf) / "villa.xml").string()},
+                     {"bodies", mjcf->written.bodies},
+                     {"doors", mjcf->written.doors},
+                     {"mujoco", r.version},
+                     {"all", physics::StabilityJson({r.free, r.strict, r.loose})},
+                     {"max_contacts", r.max_contacts},
+                     {"nconmax", mjcf->written.nconmax},
+                     {"njmax", mjcf->written.njmax},
+                     {"unstable", r.unstable},
+                     {"movers", movers}};
+    }
     std::cout << out.dump(2) << "\n";
     return;
   }
@@ -104,7 +136,8 @@ Registration registration{86, [](CLI::App& app) {
   sub->add_option("--movers", command->movers, "list this many of the objects that moved most (default 10)")->check(CLI::Range(0, 100000));
   sub->add_option("--only", command->only, "only this object is free, the rest welded where they stand (repeatable)");
   sub->add_option("--mjcf", command->mjcf,
-                  "also write the scene for MuJoCo: DIR/villa.xml and DIR/meshes/*.stl (a convex part each)");
+                  "also write the scene for MuJoCo: DIR/villa.xml and DIR/meshes/*.stl (a convex part each), door\n"
+                  "leaves on hinges; MuJoCo runs it for --seconds and reports what stayed put");
   sub->add_flag("--json", command->json, "print a machine-readable report instead");
   sub->callback([command] { Run(*command); });
 }};

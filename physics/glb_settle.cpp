@@ -1,7 +1,10 @@
 #include "physics/glb_settle.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 #include "building/export.h"
 #include "layout/layout.h"
@@ -12,6 +15,14 @@ namespace {
 std::string RoomType(const std::string& room) {
   if (auto name = ParseRoomName(room)) return std::string(CategoryName(name->category));
   return room.substr(0, room.find('_'));
+}
+
+// A node's numeric extra as the scene reader gives it (text); nullopt unless all of it is a finite number.
+std::optional<double> ParseNumber(const std::string& text) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
 }
 
 }  // namespace
@@ -26,6 +37,21 @@ static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string&
         return Error{glb + ": node " + n.name + ": a vertex is not finite"};
     const std::string room = n.Meta("room");
     if (room.empty()) {
+      if (n.Meta("part") == "door" && !n.Meta("hinge_x").empty()) {
+        GlbDoor door;
+        door.name = n.name;
+        door.static_index = static_cast<int>(out.statics.size());
+        const double deg = std::numbers::pi / 180.0;
+        const std::optional<double> x = ParseNumber(n.Meta("hinge_x")), z = ParseNumber(n.Meta("hinge_z")),
+                                    closed = ParseNumber(n.Meta("closed_deg")), open = ParseNumber(n.Meta("open_deg"));
+        if (!x || !z || !closed || !open || std::abs(*closed) > 180.0 || std::abs(*open) > 180.0)
+          return Error{glb + ": door " + n.name + ": its hinge extras (hinge_x, hinge_z, closed_deg, open_deg) are not numbers of a hinge"};
+        door.hinge_x = *x;
+        door.hinge_y = -*z;
+        door.to_closed = *closed * deg;
+        door.to_open = *open * deg;
+        out.doors.push_back(std::move(door));
+      }
       out.statics.push_back(std::move(mesh));
       continue;
     }

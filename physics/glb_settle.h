@@ -44,8 +44,17 @@ struct GlbSettleSummary {
 // see what one object does among the rest).
 // What a .glb holds for a simulator: the building's meshes (static), the objects as bodies (welded or free,
 // rugs left out as decals), each object's names, all in the plan frame (z up).
+// A door leaf with its hinge (the building's node extras, BUILDING.md): the vertical axis through `hinge`
+// (hinge_x, hinge_y: plan frame) and the turns (radians, counter-clockwise from above) to closed and to 90 degrees open.
+struct GlbDoor {
+  std::string name;
+  int static_index = -1;  // its mesh in GlbBodies::statics (a settle keeps leaves where they hang)
+  double hinge_x = 0.0, hinge_y = 0.0;
+  double to_closed = 0.0, to_open = 0.0;
+};
 struct GlbBodies {
   std::vector<TriangleMesh> statics;
+  std::vector<GlbDoor> doors;
   std::vector<SettleBody> bodies;
   std::vector<GlbObjectMotion> objects;  // parallel to bodies (no motion yet)
   int decals = 0;

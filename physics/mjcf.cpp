@@ -1,12 +1,16 @@
 #include "physics/mjcf.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 
+#include "mesh/convex_parts.h"
 #include "physics/glb_settle.h"
 #include "util/atomic_file.h"
 
@@ -24,6 +28,25 @@ std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
     if (b.max.x - b.min.x < 1e-4 || b.max.y - b.min.y < 1e-4 || b.max.z - b.min.z < 1e-4) continue;
     out.push_back(std::move(piece));
   }
+  return out;
+}
+
+// `mesh` with the vertices at one position (to 0.1 um) made one: a file may repeat a corner for each
+// face (a slab's hole is lined by faces of their own), and a solid is found by shared vertices.
+TriangleMesh Welded(const TriangleMesh& mesh) {
+  TriangleMesh out;
+  std::map<std::array<long long, 3>, int> index;
+  std::vector<int> map(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    const std::array<long long, 3> key{std::llround(v.x * 1e7), std::llround(v.y * 1e7), std::llround(v.z * 1e7)};
+    auto [it, added] = index.emplace(key, static_cast<int>(out.vertices.size()));
+    if (added) out.vertices.push_back(v);
+    map[i] = it->second;
+  }
+  for (const auto& t : mesh.triangles)
+    if (map[t[0]] != map[t[1]] && map[t[1]] != map[t[2]] && map[t[0]] != map[t[2]])
+      out.AddTriangle(map[t[0]], map[t[1]], map[t[2]]);
   return out;
 }
 
@@ -68,6 +91,103 @@ std::optional<BoxFit> AsBox(const TriangleMesh& piece) {
   fit.y = Normalized(e[1]);
   fit.half = {0.5 * Norm(e[0]), 0.5 * Norm(e[1]), 0.5 * Norm(e[2])};
   return fit;
+}
+
+// Boxes that together fill (nearly) their common box become that box: a book's pages, covers and spine
+// are one book to a simulator, and MuJoCo makes up to eight contacts per pair of geoms, so four boxes a
+// book on a shelf cost four times the contacts (and the constraint rows, whose memory MuJoCo 2.2 takes
+// as their square). Merged when the boxes' axes are parallel and the common box is at most `slack` more
+// than the volume they fill and none of it lies farther than `depth` from them (summed over a chain of
+// merges).
+struct MergedBox {
+  BoxFit box;
+  double solid = 0.0;  // the volume the merged parts fill (an estimate from below)
+  double slop = 0.0;   // m: how far a point of the box may lie from the parts (0: the parts fill it)
+};
+std::vector<BoxFit> MergeBoxes(const std::vector<BoxFit>& boxes, double slack = 0.08, double depth = 0.005) {
+  std::vector<MergedBox> groups;
+  for (const BoxFit& b : boxes) groups.push_back({b, 8.0 * b.half.x * b.half.y * b.half.z, 0.0});
+  auto axes = [](const BoxFit& b) { return std::array<Vec3, 3>{b.x, b.y, Cross(b.x, b.y)}; };
+  // b's box in a's frame (lo, hi per axis), or nullopt when their axes are not parallel.
+  auto in_frame = [&](const BoxFit& a, const BoxFit& b) -> std::optional<std::array<double, 6>> {
+    const auto fa = axes(a), fb = axes(b);
+    const double hb[3] = {b.half.x, b.half.y, b.half.z};
+    std::array<double, 6> out{};
+    for (int i = 0; i < 3; ++i) {
+      double extent = 0.0;
+      int parallel = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double d = std::abs(Dot(fa[i], fb[k]));
+        if (d > 1.0 - 1e-6) ++parallel;
+        else if (d > 1e-6) return std::nullopt;
+        extent += d * hb[k];
+      }
+      if (parallel != 1) return std::nullopt;
+      const double c = Dot(b.centre - a.centre, fa[i]);
+      out[2 * i] = c - extent;
+      out[2 * i + 1] = c + extent;
+    }
+    return out;
+  };
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t i = 0; i < groups.size() && !merged; ++i)
+      for (size_t j = i + 1; j < groups.size() && !merged; ++j) {
+        const BoxFit& a = groups[i].box;
+        const auto b = in_frame(a, groups[j].box);
+        if (!b) continue;
+        const double ha[3] = {a.half.x, a.half.y, a.half.z};
+        double common = 1.0, overlap = 1.0, lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(-ha[k], (*b)[2 * k]);
+          hi[k] = std::max(ha[k], (*b)[2 * k + 1]);
+          common *= hi[k] - lo[k];
+          overlap *= std::max(0.0, std::min(ha[k], (*b)[2 * k + 1]) - std::max(-ha[k], (*b)[2 * k]));
+        }
+        const double solid = groups[i].solid + groups[j].solid - overlap;
+        if (common > (1.0 + slack) * solid) continue;
+        // Every point of the common box within `depth` of what the parts fill (sampled on a 9^3 grid, the
+        // corners and faces' centres among it): pages 3 mm inside a book's covers merge; soil 2 cm below a
+        // trough's rim does not (what stands on the soil would stand on air). Slop adds up over merges.
+        const double alo[3] = {-ha[0], -ha[1], -ha[2]}, blo[3] = {(*b)[0], (*b)[2], (*b)[4]}, bhi[3] = {(*b)[1], (*b)[3], (*b)[5]};
+        auto gap = [](const double* l, const double* h, const double p[3]) {
+          double d2 = 0.0;
+          for (int k = 0; k < 3; ++k) {
+            const double d = std::max({l[k] - p[k], 0.0, p[k] - h[k]});
+            d2 += d * d;
+          }
+          return std::sqrt(d2);
+        };
+        const double budget = depth - std::max(groups[i].slop, groups[j].slop);
+        bool near = budget > 0.0;
+        constexpr int kSamples = 9;
+        for (int n = 0; n < kSamples * kSamples * kSamples && near; ++n) {
+          const int idx[3] = {n % kSamples, (n / kSamples) % kSamples, n / (kSamples * kSamples)};
+          double p[3];
+          for (int k = 0; k < 3; ++k) p[k] = lo[k] + (hi[k] - lo[k]) * idx[k] / (kSamples - 1);
+          near = std::min(gap(alo, ha, p), gap(blo, bhi, p)) <= budget;
+        }
+        if (!near) continue;
+        double slop = 0.0;  // the merged box's own distance from the parts, for the next merge
+        for (int n = 0; n < kSamples * kSamples * kSamples; ++n) {
+          const int idx[3] = {n % kSamples, (n / kSamples) % kSamples, n / (kSamples * kSamples)};
+          double p[3];
+          for (int k = 0; k < 3; ++k) p[k] = lo[k] + (hi[k] - lo[k]) * idx[k] / (kSamples - 1);
+          slop = std::max(slop, std::min(gap(alo, ha, p), gap(blo, bhi, p)));
+        }
+        slop += std::max(groups[i].slop, groups[j].slop);
+        const auto fa = axes(a);
+        BoxFit m = a;
+        m.centre = a.centre + fa[0] * (0.5 * (lo[0] + hi[0])) + fa[1] * (0.5 * (lo[1] + hi[1])) + fa[2] * (0.5 * (lo[2] + hi[2]));
+        m.half = {0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]), 0.5 * (hi[2] - lo[2])};
+        groups[i] = {m, solid, slop};
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
+        merged = true;
+      }
+  }
+  std::vector<BoxFit> out;
+  for (const MergedBox& g : groups) out.push_back(g.box);
+  return out;
 }
 
 // Binary STL of `mesh` moved by -origin.
@@ -123,28 +243,72 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     assets << "    <mesh name=\"" << name << "\" file=\"" << name << ".stl\"/>\n";
     return name;
   };
-  // A piece as a box geom when it is one, else as a mesh geom; `indent` and `origin` (the body's).
-  auto add_geom = [&](std::ostringstream& out, const TriangleMesh& piece, const Vec3& origin, const std::string& indent,
-                      const char* kind) -> Status {
-    if (const std::optional<BoxFit> box = AsBox(piece)) {
-      const Vec3 c = box->centre - origin;
-      out << indent << "<geom type=\"box\" size=\"" << Num(box->half.x) << " " << Num(box->half.y) << " " << Num(box->half.z)
-          << "\" pos=\"" << Num(c.x) << " " << Num(c.y) << " " << Num(c.z) << "\" xyaxes=\"" << Num(box->x.x) << " "
-          << Num(box->x.y) << " " << Num(box->x.z) << " " << Num(box->y.x) << " " << Num(box->y.y) << " " << Num(box->y.z)
-          << "\" class=\"" << kind << "\"/>\n";
-      ++summary.boxes;
-      return Status::Ok();
-    }
-    auto name = add_mesh(piece, origin);
-    if (!name.ok()) return Error{name.error()};
-    out << indent << "<geom type=\"mesh\" mesh=\"" << *name << "\" class=\"" << kind << "\"/>\n";
-    return Status::Ok();
+  auto add_box = [&](std::ostringstream& out, const BoxFit& box, const Vec3& origin, const std::string& indent, const char* kind) {
+    const Vec3 c = box.centre - origin;
+    out << indent << "<geom type=\"box\" size=\"" << Num(box.half.x) << " " << Num(box.half.y) << " " << Num(box.half.z)
+        << "\" pos=\"" << Num(c.x) << " " << Num(c.y) << " " << Num(c.z) << "\" xyaxes=\"" << Num(box.x.x) << " "
+        << Num(box.x.y) << " " << Num(box.x.z) << " " << Num(box.y.x) << " " << Num(box.y.y) << " " << Num(box.y.z)
+        << "\" class=\"" << kind << "\"/>\n";
+    ++summary.boxes;
   };
-  for (const TriangleMesh& m : scene->statics)
-    for (const TriangleMesh& piece : SolidPieces(m)) {
-      if (Status s = add_geom(world, piece, {0, 0, 0}, "    ", "building"); !s) return Error{s.error()};
-      ++summary.static_geoms;
+  // A body's (or the building's) pieces: boxes as box geoms (merged where they fill their common box),
+  // the rest as mesh geoms; `origin` is the body's. Returns the number of geoms written.
+  auto add_geoms = [&](std::ostringstream& out, const std::vector<TriangleMesh>& pieces, const Vec3& origin,
+                       const std::string& indent, const char* kind, bool merge) -> Result<int> {
+    std::vector<BoxFit> boxes;
+    int geoms = 0;
+    for (const TriangleMesh& piece : pieces) {
+      if (const std::optional<BoxFit> box = AsBox(piece)) {
+        boxes.push_back(*box);
+        continue;
+      }
+      auto name = add_mesh(piece, origin);
+      if (!name.ok()) return Error{name.error()};
+      out << indent << "<geom type=\"mesh\" mesh=\"" << *name << "\" class=\"" << kind << "\"/>\n";
+      ++geoms;
     }
+    if (merge) {
+      const size_t before = boxes.size();
+      boxes = MergeBoxes(boxes);
+      summary.merged += static_cast<int>(before - boxes.size());
+    }
+    for (const BoxFit& box : boxes) add_box(out, box, origin, indent, kind);
+    return geoms + static_cast<int>(boxes.size());
+  };
+  std::vector<bool> is_door(scene->statics.size(), false);
+  for (const GlbDoor& door : scene->doors) is_door[door.static_index] = true;
+  for (size_t i = 0; i < scene->statics.size(); ++i) {
+    if (is_door[i]) continue;
+    // The building's pieces cut into convex prisms (a wall's hull would fill its doorways).
+    std::vector<TriangleMesh> convex;
+    for (TriangleMesh& piece : SolidPieces(Welded(scene->statics[i]))) {
+      if (std::optional<std::vector<TriangleMesh>> parts = ConvexPrismParts(piece)) {
+        for (TriangleMesh& part : *parts) convex.push_back(std::move(part));
+        ++summary.prisms;
+      } else {
+        convex.push_back(std::move(piece));
+        ++summary.hulls;
+      }
+    }
+    auto geoms = add_geoms(world, convex, {0, 0, 0}, "    ", "building", false);
+    if (!geoms.ok()) return Error{geoms.error()};
+    summary.static_geoms += *geoms;
+  }
+  // Door leaves: bodies on a vertical hinge at the jamb, free to turn between closed and 90 degrees open
+  // (or as far as they hang, flat against the wall), damped like a real door's hinges.
+  for (const GlbDoor& door : scene->doors) {
+    const TriangleMesh& leaf = scene->statics[door.static_index];
+    const Box3 box = leaf.Bounds();
+    const Vec3 origin{door.hinge_x, door.hinge_y, 0.5 * (box.min.z + box.max.z)};
+    const double lo = std::min({0.0, door.to_closed, door.to_open}), hi = std::max({0.0, door.to_closed, door.to_open});
+    world << "    <body name=\"" << Xml(door.name) << "\" pos=\"" << Num(origin.x) << " " << Num(origin.y) << " " << Num(origin.z)
+          << "\">\n      <joint name=\"" << Xml(door.name) << "\" type=\"hinge\" axis=\"0 0 1\" limited=\"true\" range=\""
+          << Num(lo) << " " << Num(hi) << "\" class=\"hinge\"/>\n";
+    auto geoms = add_geoms(world, SolidPieces(leaf), origin, "      ", "door", false);
+    if (!geoms.ok()) return Error{geoms.error()};
+    world << "    </body>\n";
+    ++summary.doors;
+  }
   for (const SettleBody& b : scene->bodies) {
     const std::vector<TriangleMesh> pieces = SolidPieces(b.mesh);
     if (pieces.empty()) continue;
@@ -155,29 +319,40 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
       world << "      <freejoint/>\n";
       ++summary.free;
     }
-    for (const TriangleMesh& piece : pieces) {
-      if (Status s = add_geom(world, piece, origin, "      ", "object"); !s) return Error{s.error()};
-      ++summary.geoms;
-    }
+    auto geoms = add_geoms(world, pieces, origin, "      ", "object", true);
+    if (!geoms.ok()) return Error{geoms.error()};
+    summary.geoms += *geoms;
     world << "    </body>\n";
     ++summary.bodies;
   }
+  // Contacts: multi-point convex collision (a box on a mesh floor otherwise touches at one point and
+  // creeps); the buffers first guessed from the geoms: two contacts for each, three constraint rows for
+  // each contact (elliptic cones).
+  const int geoms = summary.geoms + summary.static_geoms + summary.doors;
+  summary.nconmax = std::clamp(2 * geoms, 500, kMjcfMaxRows / 3);
+  summary.njmax = 3 * summary.nconmax;
   std::ostringstream xml;
   xml << "<mujoco model=\"" << Xml(glb.stem().string()) << "\">\n"
-      << "  <!-- Written by villa physics --mjcf from " << Xml(glb.filename().string()) << ": the building static, every\n"
-      << "       object a body named by its scene id (a free joint unless hung or on a rail), one geom a convex part. -->\n"
+      << "  <!-- Written by villa physics --mjcf from " << Xml(glb.filename().string()) << ": the building static, its door\n"
+      << "       leaves on hinges, every object a body named by its scene id (a free joint unless hung or on a rail),\n"
+      << "       one geom a convex part. -->\n"
       << "  <compiler meshdir=\"meshes\" angle=\"radian\"/>\n"
-      << "  <!-- Elliptic friction cones and stiffer contacts than MuJoCo's defaults: with those, things held between\n"
-      << "       two geoms (clothes between shelves) were squeezed out; here 96.5 % of a villa's objects stay. -->\n"
-      << "  <option timestep=\"0.002\" gravity=\"0 0 -9.81\" cone=\"elliptic\" impratio=\"10\"/>\n"
-      << "  <size nconmax=\"" << std::max(2000, 2 * (summary.geoms + summary.static_geoms)) << "\" njmax=\""
-      << std::max(4000, 4 * (summary.geoms + summary.static_geoms)) << "\"/>\n"
+      << "  <!-- Elliptic friction cones, stiffer contacts than MuJoCo's defaults and multi-point convex contacts:\n"
+      << "       with MuJoCo's defaults things held between two geoms were squeezed out and boxes on meshes crept. -->\n"
+      << "  <option timestep=\"0.002\" gravity=\"0 0 -9.81\" cone=\"elliptic\" impratio=\"10\">\n"
+      << "    <flag multiccd=\"enable\"/>\n"
+      << "  </option>\n"
+      << "  <size nconmax=\"" << summary.nconmax << "\" njmax=\"" << summary.njmax << "\"/>\n"
       << "  <default>\n"
       << "    <default class=\"building\"><geom contype=\"1\" conaffinity=\"1\" friction=\"" << Num(options.friction)
       << " 0.005 0.0001\" rgba=\"0.8 0.8 0.78 1\" solimp=\"0.95 0.99 0.001\" solref=\"0.005 1\"/></default>\n"
       << "    <default class=\"object\"><geom contype=\"1\" conaffinity=\"1\" density=\"" << Num(options.density)
       << "\" friction=\"" << Num(options.friction) << " 0.005 0.0001\" rgba=\"0.6 0.5 0.4 1\" solimp=\"0.95 0.99 0.001\" "
       << "solref=\"0.005 1\"/></default>\n"
+      << "    <!-- A door leaf: 40 mm of wood and air (about 450 kg/m3, some 30 kg), hinges that damp its swing. -->\n"
+      << "    <default class=\"door\"><geom contype=\"1\" conaffinity=\"1\" density=\"450\" friction=\"" << Num(options.friction)
+      << " 0.005 0.0001\" rgba=\"0.55 0.38 0.22 1\" solimp=\"0.95 0.99 0.001\" solref=\"0.005 1\"/></default>\n"
+      << "    <default class=\"hinge\"><joint damping=\"4\" armature=\"0.05\" frictionloss=\"0.2\"/></default>\n"
       << "  </default>\n"
       << "  <asset>\n" << assets.str() << "  </asset>\n"
       << "  <worldbody>\n"
@@ -186,6 +361,17 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
       << "</mujoco>\n";
   if (Status s = WriteFileAtomic(dir / "villa.xml", xml.str()); !s) return Error{s.error()};
   return summary;
+}
+
+Status SetMjcfBuffers(const fs::path& xml, int nconmax, int njmax) {
+  auto text = ReadFile(xml);
+  if (!text.ok()) return Error{text.error()};
+  const size_t at = text->find("  <size nconmax=\"");
+  const size_t end = at == std::string::npos ? at : text->find("/>\n", at);
+  if (end == std::string::npos) return Error{xml.string() + ": no <size nconmax=... njmax=.../> line (not written by villa?)"};
+  text->replace(at, end + 3 - at,
+                "  <size nconmax=\"" + std::to_string(nconmax) + "\" njmax=\"" + std::to_string(njmax) + "\"/>\n");
+  return WriteFileAtomic(xml, *text);
 }
 
 }  // namespace villa::physics

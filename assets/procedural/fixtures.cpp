@@ -170,6 +170,9 @@ GeneratorDef Toilet() {
                 china, {{0, 0}, {0.55, 0}, {0.5, 0.15}, {0.85, 0.3}, {1, zt}, {0.88, zt}, {0.55, 0.25}, {0, 0.25}}, 0,
                 yc, rx, ry, 24);
             g.out.VerticalLathe(seat, {{0.7, zt}, {1, zt}, {1, zt + 0.02}, {0.7, zt + 0.02}}, 0, yc, rx, ry, 24);
+            // The foot runs back under the cistern (the trapway), as a real one does: the cistern's weight
+            // over the floor, not behind the bowl's round foot (dropped in a simulator, it tipped back).
+            g.out.Box(china, {-0.2 * g.w, yc, 0}, {0.2 * g.w, g.d / 2 - 0.06, zt});
           }};
 }
 

@@ -1,0 +1,22 @@
+#pragma once
+// Convex parts of a building's solid, for simulators that collide a mesh as its convex hull (MuJoCo): a
+// wall with a door cut out is one connected solid, whose hull fills the doorway. Every piece of our
+// buildings is a stack of prisms along one direction: a wall with its openings is prisms up (below a door's
+// head: the wall each side of it; above: the whole wall), a slab is its outline (holes and all) extruded up,
+// flights of steps are their profiles extruded across their width (two flights side by side: two prisms).
+#include <optional>
+#include <vector>
+
+#include "mesh/mesh.h"
+
+namespace villa {
+
+// The convex prisms whose union is `piece` (one connected closed solid), or nullopt when it is no stack of
+// prisms. A direction d is found along which every face lies (a side) or across which it lies (a cap, at
+// some height along d); between consecutive cap heights the piece's cross-section is the same polygon
+// (holes and all), which is cut into convex polygons (its triangles merged across shared edges while they
+// stay convex, Hertel and Mehlhorn's rule: at most four times the fewest) and extruded over the slab. The
+// parts' volume is checked against the piece's.
+std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& piece);
+
+}  // namespace villa

@@ -1,0 +1,99 @@
+// mesh/convex_parts.h: a building's solids cut into convex prisms, whose union is the solid (volume) and
+// which leave its openings open (a doorway's centre in no part).
+#include <catch2/catch.hpp>
+
+#include "mesh/convex_parts.h"
+#include "mesh/solids.h"
+
+using namespace villa;
+
+namespace {
+
+// Inside (or on) every face plane of a convex part.
+bool InsideConvex(const TriangleMesh& part, Vec3 p) {
+  for (const auto& t : part.triangles) {
+    const Vec3 n = Cross(part.vertices[t[1]] - part.vertices[t[0]], part.vertices[t[2]] - part.vertices[t[0]]);
+    if (Dot(p - part.vertices[t[0]], n) > 1e-12) return false;
+  }
+  return true;
+}
+
+// Every vertex of the part on or behind each of its faces: convex.
+bool Convex(const TriangleMesh& part) {
+  for (const Vec3& v : part.vertices)
+    if (!InsideConvex(part, v)) return false;
+  return true;
+}
+
+int PartsHolding(const std::vector<TriangleMesh>& parts, Vec3 p) {
+  int n = 0;
+  for (const TriangleMesh& part : parts) n += InsideConvex(part, p);
+  return n;
+}
+
+double Volume(const std::vector<TriangleMesh>& parts) {
+  double v = 0.0;
+  for (const TriangleMesh& part : parts) v += part.SignedVolume();
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("A mitred wall with a door and a window is cut into six convex prisms that leave both open") {
+  WallFrame frame{{0, 0}, {1, 0}, {0, 1}, 0.2};
+  // Mitred ends: the face at q = -0.1 runs 0.2 m further each way than the one at q = +0.1.
+  const Ring plan{{-0.1, -0.1}, {4.1, -0.1}, {3.9, 0.1}, {0.1, 0.1}};
+  const TriangleMesh wall = WallSolid(plan, frame, 0.0, 2.8, {{1.0, 2.0, 0.0, 2.1}, {2.5, 3.5, 0.9, 2.1}});
+  const auto parts = ConvexPrismParts(wall);
+  REQUIRE(parts);
+  // Below the window's sill: the wall either side of the door; up to the heads: three piers; above: one.
+  CHECK(parts->size() == 6);
+  CHECK(Volume(*parts) == Approx(wall.SignedVolume()).epsilon(1e-9));
+  for (const TriangleMesh& part : *parts) CHECK(Convex(part));
+  CHECK(PartsHolding(*parts, {1.5, 0.0, 1.0}) == 0);  // the doorway
+  CHECK(PartsHolding(*parts, {3.0, 0.0, 1.5}) == 0);  // the window
+  CHECK(PartsHolding(*parts, {1.5, 0.0, 2.5}) == 1);  // over the door
+  CHECK(PartsHolding(*parts, {3.0, 0.0, 0.5}) == 1);  // under the window
+  CHECK(PartsHolding(*parts, {4.05, -0.09, 1.0}) == 1);  // in the mitred end
+  CHECK(PartsHolding(*parts, {4.05, 0.09, 1.0}) == 0);   // past it
+}
+
+TEST_CASE("An L-shaped slab with a stair hole is cut into convex prisms that leave the hole and the notch open") {
+  const Ring outer{{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}};
+  const Ring hole{{1, 1}, {1, 3}, {3, 3}, {3, 1}};
+  const TriangleMesh slab = ExtrudePlan(outer, {hole}, 2.8, 3.0);
+  const auto parts = ConvexPrismParts(slab);
+  REQUIRE(parts);
+  CHECK(Volume(*parts) == Approx(0.2 * (48.0 - 4.0)).epsilon(1e-9));
+  for (const TriangleMesh& part : *parts) CHECK(Convex(part));
+  CHECK(PartsHolding(*parts, {2, 2, 2.9}) == 0);  // the stair hole
+  CHECK(PartsHolding(*parts, {6, 6, 2.9}) == 0);  // outside the L
+  CHECK(PartsHolding(*parts, {6, 2, 2.9}) == 1);
+  CHECK(parts->size() <= 8);
+}
+
+TEST_CASE("Flights of steps side by side are cut across their width into convex prisms of their profiles") {
+  // Two flights, 1 m wide each, side by side along y, rising along x in opposite directions.
+  TriangleMesh flights = ExtrudeProfile({{0, 0}, {1.2, 0}, {1.2, 0.8}, {0.9, 0.8}, {0.9, 0.6}, {0.6, 0.6}, {0.6, 0.4}, {0.3, 0.4}, {0.3, 0.2}, {0, 0.2}},
+                                        {0, 0}, {1, 0}, {0, -1}, -1.0, 0.0);
+  const TriangleMesh other = ExtrudeProfile({{0, 0}, {1.2, 0}, {1.2, 0.2}, {0.9, 0.2}, {0.9, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.3, 0.6}, {0.3, 0.8}, {0, 0.8}},
+                                            {0, 0}, {1, 0}, {0, -1}, -2.0, -1.0);
+  const double volume = flights.SignedVolume() + other.SignedVolume();
+  flights.Append(other);
+  const auto parts = ConvexPrismParts(flights);
+  REQUIRE(parts);
+  CHECK(Volume(*parts) == Approx(volume).epsilon(1e-9));
+  for (const TriangleMesh& part : *parts) CHECK(Convex(part));
+  CHECK(PartsHolding(*parts, {1.05, 0.5, 0.7}) == 1);  // the first flight's top step
+  CHECK(PartsHolding(*parts, {0.15, 0.5, 0.7}) == 0);  // over its bottom step
+  CHECK(PartsHolding(*parts, {0.15, 1.5, 0.7}) == 1);  // the second flight's top step
+  CHECK(PartsHolding(*parts, {1.05, 1.5, 0.7}) == 0);
+}
+
+TEST_CASE("A solid with slanted faces is no stack of prisms") {
+  TriangleMesh tetra;
+  tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetra.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  REQUIRE(tetra.SignedVolume() > 0);
+  CHECK_FALSE(ConvexPrismParts(tetra));
+}
