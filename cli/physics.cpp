@@ -46,7 +46,7 @@ void Run(const PhysicsCommand& command) {
     std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << w.bodies << " bodies ("
               << w.free << " free), " << w.doors << " door leaves on hinges, " << w.geoms << " object geoms (" << w.merged
               << " boxes merged into their neighbours), " << w.static_geoms << " building geoms (" << w.prisms
-              << " pieces cut into convex prisms, " << w.hulls << " left whole), " << w.boxes << " boxes and "
+              << " pieces cut into convex prisms, " << w.hulls << " left whole), " << w.sheets << " sheets left out, " << w.boxes << " boxes and "
               << w.meshes << " meshes; buffers nconmax " << w.nconmax << ", njmax " << w.njmax << "\n"
               << "MuJoCo " << r.version << " loaded it and ran " << command.options.seconds << " s in "
               << FormatFixed(r.wall_seconds, 1) << " s: " << r.strict << " of " << r.free << " free objects within 1 cm and 0.1 rad ("

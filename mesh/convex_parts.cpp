@@ -177,10 +177,21 @@ TriangleMesh Prism(const std::vector<Point>& poly, Vec3 d, Vec3 u, Vec3 v, doubl
   return m;
 }
 
+// A piece with more face directions than this is curved somewhere (a lathe, a scanned model): not tried.
+constexpr size_t kMaxDirections = 64;
+
 }  // namespace
 
-std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& piece) {
-  if (piece.triangles.empty()) return std::nullopt;
+std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& given) {
+  if (given.triangles.empty()) return std::nullopt;
+  // A solid written inside out (an imported model's) is read turned right.
+  TriangleMesh flipped;
+  const bool inverted = given.SignedVolume() < 0;
+  if (inverted) {
+    flipped = given;
+    for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
+  }
+  const TriangleMesh& piece = inverted ? flipped : given;
   // Candidate directions: up first (walls, slabs), then the face normals, the largest area first.
   std::vector<std::pair<double, Vec3>> normals{{1e300, Vec3{0, 0, 1}}};
   for (const auto& t : piece.triangles) {
@@ -196,6 +207,7 @@ std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& pi
         break;
       }
     if (!seen) normals.push_back({area, n});
+    if (normals.size() > kMaxDirections) return std::nullopt;  // curved: no stack of prisms
   }
   std::sort(normals.begin(), normals.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   if (normals.size() > 6) normals.resize(6);

@@ -63,7 +63,10 @@ static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string&
     }
     SettleBody b;
     b.id = n.Meta("id").empty() ? n.name : n.Meta("id");
+    // Welded: what hangs on a wall, from the ceiling or on a rail, and a washbasin against a wall (plumbed
+    // and bolted to it: an imported pedestal basin's bowl overhangs its foot and tipped over).
     b.welded = relation == "on_wall" || relation == "hanging" || category == "hanging-clothes" ||
+               (category == "washbasin" && relation == "against_wall") ||
                (!only.empty() && std::find(only.begin(), only.end(), b.id) == only.end());
     b.mesh = std::move(mesh);
     GlbObjectMotion o;

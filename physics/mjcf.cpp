@@ -14,6 +14,8 @@
 #include "physics/glb_settle.h"
 #include "util/atomic_file.h"
 
+#include <LinearMath/btConvexHullComputer.h>
+
 namespace villa::physics {
 namespace {
 
@@ -190,6 +192,27 @@ std::vector<BoxFit> MergeBoxes(const std::vector<BoxFit>& boxes, double slack = 
   return out;
 }
 
+// A piece's convex hull as a closed mesh (MuJoCo collides a mesh as its hull anyway, but takes its mass
+// and inertia from the mesh as written: an imported piece that is open or folded gave inertia no body can
+// have, and the file did not load). Nullopt when the hull holds under 1 cm3 (a sheet: nothing to weigh).
+std::optional<TriangleMesh> HullMesh(const TriangleMesh& piece) {
+  std::vector<btVector3> points;
+  for (const Vec3& v : piece.vertices) points.emplace_back(v.x, v.y, v.z);
+  if (points.size() < 4) return std::nullopt;
+  btConvexHullComputer hc;
+  hc.compute(&points[0].x(), sizeof(btVector3), static_cast<int>(points.size()), 0.0, 0.0);
+  TriangleMesh hull;
+  for (int v = 0; v < hc.vertices.size(); ++v) hull.vertices.push_back({hc.vertices[v].x(), hc.vertices[v].y(), hc.vertices[v].z()});
+  for (int f = 0; f < hc.faces.size(); ++f) {
+    const btConvexHullComputer::Edge* first = &hc.edges[hc.faces[f]];
+    const int a = first->getSourceVertex();
+    for (const btConvexHullComputer::Edge* e = first->getNextEdgeOfFace(); e->getTargetVertex() != a; e = e->getNextEdgeOfFace())
+      hull.AddTriangle(a, e->getSourceVertex(), e->getTargetVertex());
+  }
+  if (hull.triangles.size() < 4 || hull.SignedVolume() < 1e-6) return std::nullopt;
+  return hull;
+}
+
 // Binary STL of `mesh` moved by -origin.
 std::string Stl(const TriangleMesh& mesh, const Vec3& origin) {
   std::string out(80, '\0');
@@ -257,12 +280,24 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
                        const std::string& indent, const char* kind, bool merge) -> Result<int> {
     std::vector<BoxFit> boxes;
     int geoms = 0;
+    std::vector<TriangleMesh> convex;
     for (const TriangleMesh& piece : pieces) {
+      std::optional<std::vector<TriangleMesh>> parts;
+      if (!AsBox(piece)) parts = ConvexPrismParts(piece);  // a tray, not its hull (as the settle reads it)
+      if (parts && parts->size() > 1) convex.insert(convex.end(), parts->begin(), parts->end());
+      else convex.push_back(piece);
+    }
+    for (const TriangleMesh& piece : convex) {
       if (const std::optional<BoxFit> box = AsBox(piece)) {
         boxes.push_back(*box);
         continue;
       }
-      auto name = add_mesh(piece, origin);
+      const std::optional<TriangleMesh> hull = HullMesh(piece);
+      if (!hull) {
+        ++summary.sheets;
+        continue;
+      }
+      auto name = add_mesh(*hull, origin);
       if (!name.ok()) return Error{name.error()};
       out << indent << "<geom type=\"mesh\" mesh=\"" << *name << "\" class=\"" << kind << "\"/>\n";
       ++geoms;
@@ -321,6 +356,11 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     }
     auto geoms = add_geoms(world, pieces, origin, "      ", "object", true);
     if (!geoms.ok()) return Error{geoms.error()};
+    if (*geoms == 0 && !b.welded) {
+      // Nothing but sheets: its box, so that it has a mass (a free body without one does not load).
+      add_box(world, BoxFit{origin, {1, 0, 0}, {0, 1, 0}, (box.max - box.min) * 0.5}, origin, "      ", "object");
+      *geoms = 1;
+    }
     summary.geoms += *geoms;
     world << "    </body>\n";
     ++summary.bodies;

@@ -10,6 +10,8 @@
 #include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
 #include <LinearMath/btConvexHullComputer.h>
 
+#include "mesh/convex_parts.h"
+
 namespace villa::physics {
 namespace {
 
@@ -79,8 +81,16 @@ std::string SettleOptions::Check() const {
 
 std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh) {
   std::vector<std::vector<Vec3>> out;
-  for (TriangleMesh& piece : SplitPieces(mesh))
-    if (piece.vertices.size() >= 4) out.push_back(std::move(piece.vertices));
+  for (TriangleMesh& piece : SplitPieces(mesh)) {
+    if (piece.vertices.size() < 4) continue;
+    // A piece that is a stack of prisms (a tray with its rim, a shelf unit modelled in one piece) in its
+    // convex parts: its hull would fill the tray, and what lies in it would start inside.
+    if (std::optional<std::vector<TriangleMesh>> parts = ConvexPrismParts(piece); parts && parts->size() > 1) {
+      for (TriangleMesh& part : *parts) out.push_back(std::move(part.vertices));
+      continue;
+    }
+    out.push_back(std::move(piece.vertices));
+  }
   return out;
 }
 

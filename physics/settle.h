@@ -59,7 +59,8 @@ struct SettleResult {
 };
 
 // The convex parts of a mesh: the vertices of each piece joined through shared vertex indices (pieces of
-// fewer than 4 vertices or no volume are dropped).
+// fewer than 4 vertices or no volume are dropped); a piece that is a stack of prisms (a tray with a rim)
+// in its convex prisms (mesh/convex_parts.h), not its hull.
 std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh);
 
 Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std::vector<SettleBody>& bodies,

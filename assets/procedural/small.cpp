@@ -2,6 +2,7 @@
 // the floor and wall things with no structure of their own (rugs, plants, baskets, frames, mirrors).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "assets/procedural/generator.h"
 
@@ -494,8 +495,17 @@ GeneratorDef Toy() {
                 }
                 break;
               }
-              default:
-                g.out.Ellipsoid(colour(), 0, 0, w / 2, d / 2, 0, h, 16);
+              default: {  // a soft ball, a little flattened where it rests (on a point, it rolled off shelves)
+                constexpr int kRings = 8;
+                const double cut = (1.0 - std::cos(std::numbers::pi / kRings)) / 2.0;  // the lowest ring, 0..1
+                std::vector<Point> profile{{0.0, 0.0}};
+                for (int i = 1; i <= kRings; ++i) {
+                  const double a = std::numbers::pi * i / kRings;
+                  const double r = i == kRings ? 0.0 : i == kRings / 2 ? 1.0 : std::sin(a);
+                  profile.push_back({r, h * ((1.0 - std::cos(a)) / 2.0 - cut) / (1.0 - cut)});
+                }
+                g.out.VerticalLathe(colour(), profile, 0, 0, w / 2, d / 2, 16);
+              }
             }
           }};
 }

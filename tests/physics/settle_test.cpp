@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesh/solids.h"
+#include "physics/glb_settle.h"
 #include "physics/settle.h"
 #include "villa_cli.h"
 
@@ -101,6 +103,56 @@ TEST_CASE("A mesh's convex parts are its connected pieces", "[physics]") {
   SettleOptions bad;
   bad.seconds = 0.0;
   CHECK(Settle({}, {}, bad).error() == "settle: seconds must be in (0, 60], got 0.000000");
+}
+
+TEST_CASE("A tray modelled as one piece holds what lies in it: its convex parts, not its hull", "[physics]") {
+  // A 0.6 x 0.4 m tray: a 2 cm base and a 3 cm rim round a recess, one closed piece (a stack of prisms).
+  const Ring outer{{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, inner{{-0.27, -0.17}, {-0.27, 0.17}, {0.27, 0.17}, {0.27, -0.17}};
+  const TriangleMesh tray = ExtrudePlan(outer, {}, 0.0, 0.02);
+  const TriangleMesh rim = ExtrudePlan(outer, {inner}, 0.02, 0.05);
+  // One piece: the rim's bottom and the base's top are glued where they meet (vertices shared).
+  TriangleMesh piece;
+  for (const TriangleMesh* m : std::initializer_list<const TriangleMesh*>{&tray, &rim})
+    for (const auto& t : m->triangles) {
+      int ids[3];
+      for (int k = 0; k < 3; ++k) ids[k] = piece.AddVertex(m->vertices[t[k]], 1e-9);
+      piece.AddTriangle(ids[0], ids[1], ids[2]);
+    }
+  // Faces back to back inside (the base's top under the rim, the rim's bottom) cancel in the cross-section.
+  const auto parts = ConnectedPieces(piece);
+  CHECK(parts.size() > 1);  // its hull would fill the recess
+  const TriangleMesh cup = Box({-0.05, -0.05, 0.02}, {0.05, 0.05, 0.1});
+  auto settled = Settle(kFloor, {Body("tray", piece), Body("cup", cup)});
+  REQUIRE(settled.ok());
+  CHECK(settled->bodies[1].start_depth < 0.002);
+  CHECK(settled->bodies[1].strict);
+  CHECK(settled->bodies[0].strict);
+}
+
+TEST_CASE("A washbasin against a wall is welded (plumbed and bolted), the toilet beside it is free", "[physics][cli]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("villa_physics_weld_" + std::to_string(::getpid()));
+  const testing::CliRun furnished =
+      testing::RunVilla("furnish " + std::string(VILLA_FIXTURE_DIR) + "/layouts/living_angled_tv.json -o " + dir.string() +
+                        " --room bathroom_1/0 --seed 2027 --no-reach --critic none --no-physics --force");
+  REQUIRE(furnished.status == 0);
+  auto bodies = ReadGlbBodies(dir / "furnished.glb");
+  REQUIRE(bodies.ok());
+  int basins = 0, toilets = 0;
+  for (size_t i = 0; i < bodies->bodies.size(); ++i) {
+    const GlbObjectMotion& o = bodies->objects[i];
+    INFO(o.id);
+    if (o.category == "washbasin") {
+      CHECK(bodies->bodies[i].welded);
+      ++basins;
+    }
+    if (o.category == "toilet") {
+      CHECK_FALSE(bodies->bodies[i].welded);
+      ++toilets;
+    }
+  }
+  CHECK(basins >= 1);
+  CHECK(toilets >= 1);
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("villa physics names a missing file and exits 2", "[physics][cli]") {
