@@ -245,6 +245,18 @@ void MeshBuilder::Ellipsoid(int part, double cx, double cy, double rx, double ry
   VerticalLathe(part, profile, cx, cy, rx, ry, segments);
 }
 
+void MeshBuilder::RestingEllipsoid(int part, double cx, double cy, double rx, double ry, double z0, double z1, int segments) {
+  constexpr int kRings = 8;
+  const double cut = (1.0 - std::cos(std::numbers::pi / kRings)) / 2.0;  // the lowest ring's height, 0..1
+  std::vector<Point> profile{{0.0, z0}};
+  for (int i = 1; i <= kRings; ++i) {
+    const double a = std::numbers::pi * i / kRings;
+    const double r = i == kRings ? 0.0 : i == kRings / 2 ? 1.0 : std::sin(a);
+    profile.push_back({r, z0 + (z1 - z0) * ((1.0 - std::cos(a)) / 2.0 - cut) / (1.0 - cut)});
+  }
+  VerticalLathe(part, profile, cx, cy, rx, ry, segments);
+}
+
 int MeshBuilder::Surface(double z, const Ring& polygon, double clear) {
   SupportSurface s;
   s.z = Snap(z);

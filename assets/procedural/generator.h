@@ -93,6 +93,9 @@ class MeshBuilder {
   void Cylinder(int part, double cx, double cy, double rx, double ry, double z0, double z1, int segments = 16);
   // An ellipsoid about (cx, cy) with radii (rx, ry), from z0 to z1.
   void Ellipsoid(int part, double cx, double cy, double rx, double ry, double z0, double z1, int segments = 12);
+  // The same flattened where it rests: its lowest ring (38 % of the radius) on z0, the rest scaled up to z1
+  // (a soft ball, a sitting teddy, a pebble: on its pole it balanced on a point and rolled in a simulator).
+  void RestingEllipsoid(int part, double cx, double cy, double rx, double ry, double z0, double z1, int segments = 12);
 
   // A support surface: polygon (CCW) at height z, `clear` m free above it. Returns its index.
   int Surface(double z, const Ring& polygon, double clear);

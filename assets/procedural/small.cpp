@@ -444,7 +444,7 @@ GeneratorDef Decor() {
                 g.out.Ellipsoid(b, 0, 0, 0.6 * rx, 0.6 * ry, 0.3 * h, h);
                 break;
               case 1:
-                g.out.Ellipsoid(a, 0, 0, rx, ry, 0, 0.55 * h);
+                g.out.RestingEllipsoid(a, 0, 0, rx, ry, 0, 0.55 * h);
                 g.out.Ellipsoid(b, 0, 0, 0.6 * rx, 0.6 * ry, 0.45 * h, h);
                 break;
               default:
@@ -472,7 +472,7 @@ GeneratorDef Toy() {
             switch (g.rng.Int(0, 3)) {
               case 0: {  // teddy: body, head, arms
                 const int fur = g.out.Part({"fur", 0.6, 0.42, 0.25, 1});
-                g.out.Ellipsoid(fur, 0, 0, 0.35 * w, d / 2, 0, 0.6 * h);
+                g.out.RestingEllipsoid(fur, 0, 0, 0.35 * w, d / 2, 0, 0.6 * h);  // sitting
                 g.out.Ellipsoid(fur, 0, 0, 0.25 * w, 0.4 * d, 0.55 * h, h);
                 for (double s : {-1.0, 1.0})
                   g.out.Ellipsoid(fur, s * 0.375 * w, 0, 0.125 * w, 0.15 * d, 0.25 * h, 0.5 * h);
@@ -495,17 +495,8 @@ GeneratorDef Toy() {
                 }
                 break;
               }
-              default: {  // a soft ball, a little flattened where it rests (on a point, it rolled off shelves)
-                constexpr int kRings = 8;
-                const double cut = (1.0 - std::cos(std::numbers::pi / kRings)) / 2.0;  // the lowest ring, 0..1
-                std::vector<Point> profile{{0.0, 0.0}};
-                for (int i = 1; i <= kRings; ++i) {
-                  const double a = std::numbers::pi * i / kRings;
-                  const double r = i == kRings ? 0.0 : i == kRings / 2 ? 1.0 : std::sin(a);
-                  profile.push_back({r, h * ((1.0 - std::cos(a)) / 2.0 - cut) / (1.0 - cut)});
-                }
-                g.out.VerticalLathe(colour(), profile, 0, 0, w / 2, d / 2, 16);
-              }
+              default:  // a soft ball, flattened where it rests
+                g.out.RestingEllipsoid(colour(), 0, 0, w / 2, d / 2, 0, h, 16);
             }
           }};
 }
