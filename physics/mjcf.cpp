@@ -194,7 +194,7 @@ std::vector<BoxFit> MergeBoxes(const std::vector<BoxFit>& boxes, double slack = 
 
 // A piece's convex hull as a closed mesh (MuJoCo collides a mesh as its hull anyway, but takes its mass
 // and inertia from the mesh as written: an imported piece that is open or folded gave inertia no body can
-// have, and the file did not load). Nullopt when the hull holds under 1 cm3 (a sheet: nothing to weigh).
+// have, and the file did not load). Nullopt for a sheet: under 1 cm3, or under 2 mm thick.
 std::optional<TriangleMesh> HullMesh(const TriangleMesh& piece) {
   std::vector<btVector3> points;
   for (const Vec3& v : piece.vertices) points.emplace_back(v.x, v.y, v.z);
@@ -210,6 +210,17 @@ std::optional<TriangleMesh> HullMesh(const TriangleMesh& piece) {
       hull.AddTriangle(a, e->getSourceVertex(), e->getTargetVertex());
   }
   if (hull.triangles.size() < 4 || hull.SignedVolume() < 1e-6) return std::nullopt;
+  // Thinner than 2 mm across one of its faces (a polytope is narrowest across a face or between two
+  // edges; a face's is an upper bound): MuJoCo's inertia of a sheet fails its own triangle inequality.
+  for (const auto& t : hull.triangles) {
+    const Vec3 n = Normalized(Cross(hull.vertices[t[1]] - hull.vertices[t[0]], hull.vertices[t[2]] - hull.vertices[t[0]]));
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : hull.vertices) {
+      lo = std::min(lo, Dot(v, n));
+      hi = std::max(hi, Dot(v, n));
+    }
+    if (hi - lo < 0.002) return std::nullopt;
+  }
   return hull;
 }
 

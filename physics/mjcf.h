@@ -25,7 +25,7 @@ struct MjcfSummary {
   int doors = 0;   // door leaves, bodies on hinges
   int prisms = 0;  // building pieces cut into convex prisms
   int hulls = 0;   // building pieces neither prism nor wall, written whole (MuJoCo collides their hulls)
-  int sheets = 0;  // pieces left out: their hull holds under 1 cm3
+  int sheets = 0;  // pieces left out: their hull holds under 1 cm3 or is under 2 mm thick
   int nconmax = 0, njmax = 0;  // the contact and constraint buffers written
 };
 

@@ -239,7 +239,7 @@ class Planning {
   }
 
   RoomPlan Run() {
-    RoomRequest request = ParseRoomRequest(text_, room_.category);
+    RoomRequest request = ParseRoomRequest(text_, room_.category, room_.ordinal);
     for (const std::string& other : request.other_rooms) notes_.push_back("the request gives " + other + " another room");
     for (const Wish& w : request.wishes)
       if (w.count == 0) excluded_.insert(std::string(w.category->name));

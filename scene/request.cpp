@@ -217,19 +217,33 @@ bool IsSeat(const CategoryInfo* c) {
 
 }  // namespace
 
-RoomRequest ParseRoomRequest(std::string_view text, Category room) {
+RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) {
   RoomRequest out;
   std::vector<Token> tokens = Tokenise(text);
   std::vector<Mention> mentions = FindMentions(tokens);
   const bool names_rooms = std::any_of(mentions.begin(), mentions.end(), [](const Mention& m) { return m.room; });
+  // A room mention that names one room of several: "one of the bedrooms", "a bedroom", "one bedroom",
+  // "either bedroom", "any of the bedrooms".
+  auto names_one = [&](const Mention& m) {
+    const size_t b = m.begin;
+    static const std::string kNone;
+    auto word = [&](size_t back) -> const std::string& {
+      return b >= back && tokens[b - back].sentence == tokens[b].sentence ? tokens[b - back].word : kNone;
+    };
+    if (IsOneOf(word(1), {"a", "an", "one", "either", "another"})) return true;
+    return IsOneOf(word(1), {"the", "our", "my", "their", "your"}) && word(2) == "of" && IsOneOf(word(3), {"one", "any"});
+  };
 
-  // The room each object mention belongs to.
+  // The room each object mention belongs to, and whether that mention named one room of several.
   std::vector<std::optional<Category>> bound(mentions.size());
+  std::vector<bool> bound_one(mentions.size(), false);
   std::optional<Category> carried;  // the room the text last spoke of, across sentences
+  bool carried_one = false;
   for (size_t k = 0; k < mentions.size(); ++k) {
     const Mention& m = mentions[k];
     if (m.room) {
       carried = m.room_category;
+      carried_one = names_one(m);
       continue;
     }
     if (!names_rooms) {
@@ -242,7 +256,12 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room) {
       if (!mentions[j].room) continue;
       size_t p = mentions[j].begin;
       while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their"})) --p;
-      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) bound[k] = mentions[j].room_category;
+      // "in one of the bedrooms": the determiners before the room, then "one of".
+      while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any"})) p -= 2;
+      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) {
+        bound[k] = mentions[j].room_category;
+        bound_one[k] = names_one(mentions[j]);
+      }
       break;
     }
     if (!bound[k]) {
@@ -250,11 +269,15 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room) {
         if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
         if (mentions[j].room) {
           bound[k] = mentions[j].room_category;
+          bound_one[k] = names_one(mentions[j]);
           break;
         }
       }
     }
-    if (!bound[k]) bound[k] = carried;
+    if (!bound[k]) {
+      bound[k] = carried;
+      bound_one[k] = carried_one;
+    }
     // Named before any room: the text is meant for the room being planned.
     if (!bound[k]) bound[k] = room;
   }
@@ -270,6 +293,11 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room) {
     }
     if (!bound[k] || *bound[k] != room) {
       if (bound[k]) out.other_rooms.push_back(std::string(m.category->name) + " (" + std::string(CategoryName(*bound[k])) + ")");
+      floor = m.end;
+      continue;
+    }
+    if (bound_one[k] && ordinal > 0) {  // for one room of this category: the first has it
+      out.other_rooms.push_back(std::string(m.category->name) + " (the first " + std::string(CategoryName(room)) + ")");
       floor = m.end;
       continue;
     }

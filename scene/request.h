@@ -43,7 +43,10 @@ struct RoomRequest {
   std::vector<std::string> other_rooms;  // "tv (meeting-room)": objects the text gives other rooms
 };
 
-// The wishes of `text` for a room of category `room`.
-RoomRequest ParseRoomRequest(std::string_view text, Category room);
+// The wishes of `text` for a room of category `room`, the `ordinal`-th of its category in the layout (0:
+// the first). A wish bound to one room of several ("a TV in one of the bedrooms", "a desk in a bedroom",
+// "one bedroom needs a TV") goes to the first of them only; the others note it in other_rooms. A wish for
+// "each" / "every" / "both" / "all" the rooms, or for "the bedroom(s)", goes to every one of them.
+RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal = 0);
 
 }  // namespace villa::scene

@@ -247,6 +247,10 @@ class ContextBuilder {
     c.area = Area(room.polygon);
     c.floor_z = room.level * kLevelHeight + options_.slab_thickness;
     c.clear_height = kLevelHeight - options_.slab_thickness;
+    for (const Room& other : layout_.rooms) {
+      if (&other == &room) break;
+      c.ordinal += other.category == room.category;
+    }
     for (int i : layout_.RoomsOnLevel(room.level)) c.level_categories.push_back(layout_.rooms[i].category);
 
     const std::vector<Segment>& exterior = Exterior(room.level);

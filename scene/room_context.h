@@ -88,6 +88,8 @@ struct RoomContext {
   std::vector<ContextOpening> openings;
   double floor_z = 0.0;       // m, zf(level)
   double clear_height = 0.0;  // m, floor surface to the ceiling
+  int ordinal = 0;  // its place among the layout's rooms of its category, in layout order (0: the first):
+                    // "a TV in one of the bedrooms" goes to the first
   std::vector<Category> level_categories;  // categories of every room on this level (the planner asks
                                            // "is there a dining room on this floor?")
   std::vector<std::string> warnings;       // what the context had to approximate

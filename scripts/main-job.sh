@@ -2,7 +2,8 @@
 # The main job of `make run`, on built-in defaults: what villa does, end to end, in about a minute.
 #   1. generate a furnished villa from a sample request: layout, floor plan with the furniture, scene,
 #      furnished 3D villa (glTF), preview picture and report (macro and micro metrics); score its .glb the
-#      way other methods' outputs are scored (the paper's micro table); furnish a bundled example layout
+#      way other methods' outputs are scored (the paper's micro table); drop it into Bullet and write it for
+#      MuJoCo (run there too); furnish a bundled example layout
 #   2. synthesize a small training dataset with previews, auto-annotate it and export it for fine-tuning
 #   3. validate and render the bundled example layouts
 # Prints where every output is.
@@ -21,6 +22,10 @@ if has generate; then
   if [[ -f "$out/villa/furnished.glb" ]]; then
     echo "== villa eval --scenes --glb $out/villa/furnished.glb (the paper's micro table, as for another method's file)"
     "$villa" eval --scenes --glb "$out/villa/furnished.glb" --scene "$out/villa/scene.json"
+    if has physics; then
+      echo "== villa physics --mjcf: the villa in Bullet, and written for MuJoCo and run there"
+      "$villa" physics "$out/villa/furnished.glb" --mjcf "$out/mjcf" --movers 3
+    fi
   fi
   if has furnish; then
     echo "== villa furnish examples/two-floor-house.json"
@@ -54,6 +59,7 @@ fi
 echo
 echo "outputs:"
 [[ -d "$out/villa" ]] && echo "  $out/villa/          furnished villa: layout.json, plan.png, scene.json, furnished.glb, CREDITS, rooms/*.png, preview.png, report.json"
+[[ -d "$out/mjcf" ]] && echo "  $out/mjcf/           the villa for MuJoCo: villa.xml and meshes/ (simulate $out/mjcf/villa.xml)"
 [[ -d "$out/furnished" ]] && echo "  $out/furnished/      an example layout furnished: scene.json, furnished.glb, plan.png, report.json, CREDITS"
 [[ -d "$out/dataset" ]] && echo "  $out/dataset/        synthesized dataset: layouts.jsonl, manifest.json, stats.json, previews"
 [[ -d "$out/finetune" ]] && echo "  $out/finetune/       fine-tune export: train/val/test JSONL, dataset_info.json, trainer configs"

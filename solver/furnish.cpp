@@ -485,7 +485,7 @@ FunctionalCheck RoomFunction(const FurnishedVilla& villa, const scene::RoomConte
     if (o.room == context.name) in.objects.push_back(&o);
   in.assets = [&](std::string_view id) { return villa.assets->Find(id); };
   if (!text.empty())
-    for (const scene::Wish& w : scene::ParseRoomRequest(text, context.category).wishes)
+    for (const scene::Wish& w : scene::ParseRoomRequest(text, context.category, context.ordinal).wishes)
       in.wishes.push_back({std::string(w.category->name), w.count, w.fill});
   in.notes = rep.plan_notes;
   if (const scene::RoomEntry* entry = villa.scene.FindRoom(context.name)) in.edges = entry->edges_sem;

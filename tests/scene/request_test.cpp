@@ -120,6 +120,26 @@ TEST_CASE("objects are bound to the room the text places them in", "[scene][requ
   CHECK_FALSE(Named(before, "tv"));
 }
 
+TEST_CASE("a wish for one room of several goes to the first of them, one for each goes to all", "[scene][request]") {
+  // "one of the bedrooms", "a bedroom": the first bedroom (ordinal 0) has the TV, the second does not.
+  for (const char* text : {"Put a TV in one of the bedrooms.", "A TV in a bedroom, please.", "In one of the bedrooms, a TV."}) {
+    INFO(text);
+    CHECK(Named(ParseRoomRequest(text, Category::kBedroom, 0), "tv"));
+    const RoomRequest second = ParseRoomRequest(text, Category::kBedroom, 1);
+    CHECK_FALSE(Named(second, "tv"));
+    REQUIRE(second.other_rooms.size() == 1);
+    CHECK(second.other_rooms[0] == "tv (the first bedroom)");
+  }
+  // Every bedroom: "each", "both", "the bedrooms", a count before the room noun.
+  for (const char* text : {"A TV in each bedroom.", "Put a TV in both bedrooms.", "TVs in the bedrooms.",
+                           "Two bedrooms, each with a desk and a TV."}) {
+    INFO(text);
+    CHECK(Named(ParseRoomRequest(text, Category::kBedroom, 1), "tv"));
+  }
+  // What the next sentence adds stays with the one room.
+  CHECK_FALSE(Named(ParseRoomRequest("One of the bedrooms gets a TV. Add a rug too.", Category::kBedroom, 1), "rug"));
+}
+
 TEST_CASE("longest phrase wins and ambiguous words are left alone", "[scene][request]") {
   // "study desk" is a desk, not the study; "office chair" an office chair, not the office.
   RoomRequest r = ParseRoomRequest("a study desk and an office chair", Category::kBedroom);
