@@ -1,6 +1,7 @@
 #include "mesh/convex_parts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -182,7 +183,32 @@ constexpr size_t kMaxDirections = 64;
 
 }  // namespace
 
-std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& given) {
+std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh) {
+  std::vector<TriangleMesh> out, open;
+  for (TriangleMesh& piece : SplitPieces(mesh)) (CheckSolid(piece).closed ? out : open).push_back(std::move(piece));
+  if (open.size() < 2) {
+    for (TriangleMesh& piece : open) out.push_back(std::move(piece));
+    return out;
+  }
+  TriangleMesh joined;
+  std::map<std::array<long long, 3>, int> index;
+  for (const TriangleMesh& piece : open) {
+    std::vector<int> id(piece.vertices.size());
+    for (size_t i = 0; i < piece.vertices.size(); ++i) {
+      const Vec3& v = piece.vertices[i];
+      const std::array<long long, 3> key{std::llround(v.x * 1e7), std::llround(v.y * 1e7), std::llround(v.z * 1e7)};
+      auto [it, added] = index.emplace(key, static_cast<int>(joined.vertices.size()));
+      if (added) joined.vertices.push_back(v);
+      id[i] = it->second;
+    }
+    for (const auto& t : piece.triangles)
+      if (id[t[0]] != id[t[1]] && id[t[1]] != id[t[2]] && id[t[0]] != id[t[2]]) joined.AddTriangle(id[t[0]], id[t[1]], id[t[2]]);
+  }
+  for (TriangleMesh& piece : SplitPieces(joined)) out.push_back(std::move(piece));
+  return out;
+}
+
+std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& given, const PrismTolerance& tolerance) {
   if (given.triangles.empty()) return std::nullopt;
   // A solid written inside out (an imported model's) is read turned right.
   TriangleMesh flipped;
@@ -222,13 +248,23 @@ std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& gi
       const double len = Norm(c);
       if (len < 1e-12) continue;
       const double along = std::abs(Dot(c, d)) / len;
-      if (along < 1e-6) sides.push_back(static_cast<int>(t));
-      else if (along > 1.0 - 1e-6) heights.push_back(Dot(piece.vertices[tri[0]], d));
-      else stack = false;
+      if (along < std::sin(tolerance.slope)) {
+        sides.push_back(static_cast<int>(t));
+      } else if (along > std::cos(tolerance.slope)) {
+        for (int k : tri) heights.push_back(Dot(piece.vertices[k], d));
+      } else {
+        stack = false;
+      }
     }
     if (!stack || heights.size() < 2) continue;
+    // Heights within `snap` of each other are one: the highest of them.
     std::sort(heights.begin(), heights.end());
-    heights.erase(std::unique(heights.begin(), heights.end(), [](double a, double b) { return b - a < 1e-7; }), heights.end());
+    std::vector<double> levels;
+    for (double h : heights)
+      if (levels.empty() || h - levels.back() > tolerance.snap) levels.push_back(h);
+      else levels.back() = h;
+    heights = levels;
+    if (heights.size() < 2) continue;
     const Vec3 u = Normalized(std::abs(d.x) < 0.9 ? Cross(d, Vec3{1, 0, 0}) : Cross(d, Vec3{0, 1, 0}));
     const Vec3 v = Cross(d, u);
     std::vector<TriangleMesh> parts;
@@ -245,7 +281,8 @@ std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& gi
         parts.push_back(Prism(poly, d, u, v, h0, h1));
       }
     }
-    if (closed && !parts.empty() && std::abs(sum - volume) <= 1e-6 * std::max(1.0, std::abs(volume))) return parts;
+    if (closed && !parts.empty() && std::abs(sum - volume) <= tolerance.volume_share * std::max(1e-6, std::abs(volume)) + 1e-12)
+      return parts;
   }
   return std::nullopt;
 }

@@ -17,6 +17,21 @@ namespace villa {
 // (holes and all), which is cut into convex polygons (its triangles merged across shared edges while they
 // stay convex, Hertel and Mehlhorn's rule: at most four times the fewest) and extruded over the slab. The
 // parts' volume is checked against the piece's.
-std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& piece);
+// `slope` (radians): faces within it of along / across d count as sides / caps, and cap heights within
+// `snap` metres as one (the highest); the parts' volume within `volume_share` of the piece's. The defaults
+// are exact (our buildings); an imported model's tray, its rim 0.2 mm out of level, takes a little slack.
+struct PrismTolerance {
+  double slope = 1.4e-3;  // cos = 1 - 1e-6
+  double snap = 1e-7;
+  double volume_share = 1e-6;
+};
+std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& piece, const PrismTolerance& tolerance = {});
+// The slack for imported models: 3 degrees, 2 mm, 2 % of the volume.
+inline constexpr PrismTolerance kModelTolerance{0.05, 0.002, 0.02};
+
+// A body's mesh as solids: its connected pieces (shared vertex indices), with the pieces that are not
+// closed joined with the others they meet at the same positions (to 0.1 um): an imported model's tray top
+// is an open shell over a separate glass sheet, and one solid together.
+std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh);
 
 }  // namespace villa

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 // needs a volume).
 std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
   std::vector<TriangleMesh> out;
-  for (TriangleMesh& piece : SplitPieces(mesh)) {
+  for (TriangleMesh& piece : SolidPiecesOf(mesh)) {
     const Box3 b = piece.Bounds();
     if (b.max.x - b.min.x < 1e-4 || b.max.y - b.min.y < 1e-4 || b.max.z - b.min.z < 1e-4) continue;
     out.push_back(std::move(piece));
@@ -295,6 +295,7 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     for (const TriangleMesh& piece : pieces) {
       std::optional<std::vector<TriangleMesh>> parts;
       if (!AsBox(piece)) parts = ConvexPrismParts(piece);  // a tray, not its hull (as the settle reads it)
+      if (!AsBox(piece) && !parts) parts = ConvexPrismParts(piece, kModelTolerance);
       if (parts && parts->size() > 1) convex.insert(convex.end(), parts->begin(), parts->end());
       else convex.push_back(piece);
     }

@@ -81,11 +81,13 @@ std::string SettleOptions::Check() const {
 
 std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh) {
   std::vector<std::vector<Vec3>> out;
-  for (TriangleMesh& piece : SplitPieces(mesh)) {
+  for (TriangleMesh& piece : SolidPiecesOf(mesh)) {
     if (piece.vertices.size() < 4) continue;
     // A piece that is a stack of prisms (a tray with its rim, a shelf unit modelled in one piece) in its
     // convex parts: its hull would fill the tray, and what lies in it would start inside.
-    if (std::optional<std::vector<TriangleMesh>> parts = ConvexPrismParts(piece); parts && parts->size() > 1) {
+    std::optional<std::vector<TriangleMesh>> parts = ConvexPrismParts(piece);
+    if (!parts) parts = ConvexPrismParts(piece, kModelTolerance);
+    if (parts && parts->size() > 1) {
       for (TriangleMesh& part : *parts) out.push_back(std::move(part.vertices));
       continue;
     }

@@ -58,9 +58,10 @@ struct SettleResult {
   double seconds = 0.0;            // wall-clock
 };
 
-// The convex parts of a mesh: the vertices of each piece joined through shared vertex indices (pieces of
-// fewer than 4 vertices or no volume are dropped); a piece that is a stack of prisms (a tray with a rim)
-// in its convex prisms (mesh/convex_parts.h), not its hull.
+// The convex parts of a mesh: the vertices of each piece joined through shared vertex indices, open pieces
+// joined where they meet (pieces of fewer than 4 vertices or no volume are dropped); a piece that is a
+// stack of prisms (a tray with a rim; an imported one within 3 degrees and 2 mm) in its convex prisms
+// (mesh/convex_parts.h), not its hull.
 std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh);
 
 Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std::vector<SettleBody>& bodies,

@@ -90,6 +90,41 @@ TEST_CASE("Flights of steps side by side are cut across their width into convex 
   CHECK(PartsHolding(*parts, {1.05, 1.5, 0.7}) == 0);
 }
 
+TEST_CASE("An imported tray (an open shell over a separate glass sheet, its rim out of level) is one solid cut with slack") {
+  // The shell: bottom, outer sides, a rim sloping 0.2 mm inwards, inner sides down to the glass; the glass
+  // a quad of its own vertices (as Sweet Home 3D's Scopia coffee table has it).
+  TriangleMesh mesh;
+  const double ox[4] = {-0.3, 0.3, 0.3, -0.3}, oy[4] = {-0.2, -0.2, 0.2, 0.2};
+  const double ix[4] = {-0.27, 0.27, 0.27, -0.27}, iy[4] = {-0.17, -0.17, 0.17, 0.17};
+  for (double z : {0.0, 0.05})
+    for (int i = 0; i < 4; ++i) mesh.vertices.push_back({ox[i], oy[i], z});
+  for (double z : {0.0498, 0.045, 0.045})
+    for (int i = 0; i < 4; ++i) mesh.vertices.push_back({ix[i], iy[i], z});
+  auto quad = [&](int a, int b, int c, int d) {
+    mesh.AddTriangle(a, b, c);
+    mesh.AddTriangle(a, c, d);
+  };
+  quad(0, 3, 2, 1);  // bottom
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    quad(i, j, 4 + j, 4 + i);       // outer side
+    quad(4 + i, 4 + j, 8 + j, 8 + i);  // rim
+    quad(8 + i, 8 + j, 12 + j, 12 + i);  // inner side
+  }
+  quad(16, 17, 18, 19);  // the glass, its own corners
+  REQUIRE(SplitPieces(mesh).size() == 2);
+  const std::vector<TriangleMesh> solids = SolidPiecesOf(mesh);
+  REQUIRE(solids.size() == 1);
+  CHECK(CheckSolid(solids[0]).closed);
+  CHECK_FALSE(ConvexPrismParts(solids[0]));  // the rim is 0.2 mm out of level: no exact stack
+  const auto parts = ConvexPrismParts(solids[0], kModelTolerance);
+  REQUIRE(parts);
+  CHECK(PartsHolding(*parts, {0.0, 0.0, 0.047}) == 0);   // over the glass, in the tray
+  CHECK(PartsHolding(*parts, {0.0, 0.0, 0.02}) == 1);    // under it
+  CHECK(PartsHolding(*parts, {0.0, -0.185, 0.048}) == 1);  // in the rim
+  CHECK(Volume(*parts) == Approx(solids[0].SignedVolume()).epsilon(0.02));
+}
+
 TEST_CASE("A solid with slanted faces is no stack of prisms") {
   TriangleMesh tetra;
   tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
