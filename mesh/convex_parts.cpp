@@ -183,6 +183,22 @@ constexpr size_t kMaxDirections = 64;
 
 }  // namespace
 
+TriangleMesh WeldedByPosition(const TriangleMesh& mesh) {
+  TriangleMesh out;
+  std::map<std::array<long long, 3>, int> index;
+  std::vector<int> id(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    const std::array<long long, 3> key{std::llround(v.x * 1e7), std::llround(v.y * 1e7), std::llround(v.z * 1e7)};
+    auto [it, added] = index.emplace(key, static_cast<int>(out.vertices.size()));
+    if (added) out.vertices.push_back(v);
+    id[i] = it->second;
+  }
+  for (const auto& t : mesh.triangles)
+    if (id[t[0]] != id[t[1]] && id[t[1]] != id[t[2]] && id[t[0]] != id[t[2]]) out.AddTriangle(id[t[0]], id[t[1]], id[t[2]]);
+  return out;
+}
+
 std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh) {
   std::vector<TriangleMesh> out, open;
   for (TriangleMesh& piece : SplitPieces(mesh)) (CheckSolid(piece).closed ? out : open).push_back(std::move(piece));
@@ -191,20 +207,8 @@ std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh) {
     return out;
   }
   TriangleMesh joined;
-  std::map<std::array<long long, 3>, int> index;
-  for (const TriangleMesh& piece : open) {
-    std::vector<int> id(piece.vertices.size());
-    for (size_t i = 0; i < piece.vertices.size(); ++i) {
-      const Vec3& v = piece.vertices[i];
-      const std::array<long long, 3> key{std::llround(v.x * 1e7), std::llround(v.y * 1e7), std::llround(v.z * 1e7)};
-      auto [it, added] = index.emplace(key, static_cast<int>(joined.vertices.size()));
-      if (added) joined.vertices.push_back(v);
-      id[i] = it->second;
-    }
-    for (const auto& t : piece.triangles)
-      if (id[t[0]] != id[t[1]] && id[t[1]] != id[t[2]] && id[t[0]] != id[t[2]]) joined.AddTriangle(id[t[0]], id[t[1]], id[t[2]]);
-  }
-  for (TriangleMesh& piece : SplitPieces(joined)) out.push_back(std::move(piece));
+  for (const TriangleMesh& piece : open) joined.Append(piece);
+  for (TriangleMesh& piece : SplitPieces(WeldedByPosition(joined))) out.push_back(std::move(piece));
   return out;
 }
 

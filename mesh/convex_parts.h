@@ -33,5 +33,7 @@ inline constexpr PrismTolerance kModelTolerance{0.05, 0.002, 0.02};
 // closed joined with the others they meet at the same positions (to 0.1 um): an imported model's tray top
 // is an open shell over a separate glass sheet, and one solid together.
 std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh);
+// `mesh` with the vertices at one position (to 0.1 um) made one, and triangles that collapse dropped.
+TriangleMesh WeldedByPosition(const TriangleMesh& mesh);
 
 }  // namespace villa

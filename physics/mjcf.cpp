@@ -33,25 +33,6 @@ std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
   return out;
 }
 
-// `mesh` with the vertices at one position (to 0.1 um) made one: a file may repeat a corner for each
-// face (a slab's hole is lined by faces of their own), and a solid is found by shared vertices.
-TriangleMesh Welded(const TriangleMesh& mesh) {
-  TriangleMesh out;
-  std::map<std::array<long long, 3>, int> index;
-  std::vector<int> map(mesh.vertices.size());
-  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const Vec3& v = mesh.vertices[i];
-    const std::array<long long, 3> key{std::llround(v.x * 1e7), std::llround(v.y * 1e7), std::llround(v.z * 1e7)};
-    auto [it, added] = index.emplace(key, static_cast<int>(out.vertices.size()));
-    if (added) out.vertices.push_back(v);
-    map[i] = it->second;
-  }
-  for (const auto& t : mesh.triangles)
-    if (map[t[0]] != map[t[1]] && map[t[1]] != map[t[2]] && map[t[0]] != map[t[2]])
-      out.AddTriangle(map[t[0]], map[t[1]], map[t[2]]);
-  return out;
-}
-
 // A piece that is a box (8 corners, three perpendicular edges): MuJoCo collides box geoms at several
 // points (two meshes touch at one, and rock), so box pieces (most of ours) are written as boxes.
 struct BoxFit {
@@ -328,7 +309,8 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     if (is_door[i]) continue;
     // The building's pieces cut into convex prisms (a wall's hull would fill its doorways).
     std::vector<TriangleMesh> convex;
-    for (TriangleMesh& piece : SolidPieces(Welded(scene->statics[i]))) {
+    // Welded first: a file may repeat a corner for each face (a slab's hole is lined by faces of their own).
+    for (TriangleMesh& piece : SolidPieces(WeldedByPosition(scene->statics[i]))) {
       if (std::optional<std::vector<TriangleMesh>> parts = ConvexPrismParts(piece)) {
         for (TriangleMesh& part : *parts) convex.push_back(std::move(part));
         ++summary.prisms;
