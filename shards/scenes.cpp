@@ -146,6 +146,15 @@ Result<LayoutInput> ReadLayoutInput(const fs::path& file) {
   return input;
 }
 
+// The first 16 hex digits of the SHA-256 of the running executable ("unknown" when it cannot be read).
+std::string BuildId() {
+  static const std::string id = [] {
+    auto sha = scene::FileSha256("/proc/self/exe");
+    return sha.ok() ? sha->substr(0, 16) : std::string("unknown");
+  }();
+  return id;
+}
+
 Json ScenesRecipe(const ScenesOptions& o, const LayoutInput& input, const std::optional<scene::FileRef>& library) {
   Json recipe = Json::object();
   recipe["input"] = {{"file", o.input.filename().string()}, {"sha256", input.sha256}, {"layouts", input.items.size()}};
@@ -158,6 +167,9 @@ Json ScenesRecipe(const ScenesOptions& o, const LayoutInput& input, const std::o
   recipe["pictures"] = o.furnish.pictures;
   recipe["allow_invalid"] = o.furnish.allow_invalid;
   recipe["library"] = library ? Json{{"sha256", library->sha256}} : Json("procedural");
+  // The build that furnishes: the version string stays while the code changes, so a resume after an
+  // upgrade would mix two builds' villas under one recipe; the executable's own hash tells them apart.
+  recipe["build"] = BuildId();
   return recipe;
 }
 

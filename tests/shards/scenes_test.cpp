@@ -143,6 +143,20 @@ TEST_CASE("scenes shards merged equal the one-machine run, reruns keep verified 
   CHECK_FALSE(fs::exists(tmp.path / "m2"));
   CHECK(shards::MergeShards(tmp.path / "merged", {tmp.path / "s0", tmp.path / "s1"}).error().find("exists and is not an empty folder") !=
         std::string::npos);
+  // The recipe names the build (the executable's hash): a rerun by another build is another recipe's work.
+  auto recipe = shards::Json::parse(Bytes(tmp.path / "s1/manifest.json"))["recipe"];
+  REQUIRE(recipe.contains("build"));
+  const std::string build = recipe["build"].get<std::string>();
+  CHECK(build.size() == 16);
+  CHECK(build.find_first_not_of("0123456789abcdef") == std::string::npos);
+  const std::string kept = Bytes(tmp.path / "s1/manifest.json");
+  auto rebuilt = shards::Json::parse(kept);
+  rebuilt["recipe"]["build"] = "0000000000000000";
+  REQUIRE(WriteFileAtomic(tmp.path / "s1/manifest.json", rebuilt.dump(2)).ok());
+  auto by_another_build = shards::RunScenesShard(Quick(layouts, tmp.path / "s1", {1, 2}));
+  REQUIRE_FALSE(by_another_build.ok());
+  CHECK(by_another_build.error().find("holds a shard of another recipe") != std::string::npos);
+  REQUIRE(WriteFileAtomic(tmp.path / "s1/manifest.json", kept).ok());
   // Running another recipe into a shard's folder is refused without --force.
   other.out = tmp.path / "s0";
   auto clash = shards::RunScenesShard(other);
