@@ -97,6 +97,7 @@ std::vector<Ring> CrossSection(const TriangleMesh& piece, const std::vector<int>
       if (key(it->second.second) == key(cut[0])) {
         next.erase(it);
         cancelled = true;
+        break;  // `it` is gone
       }
     if (!cancelled) next.emplace(key(cut[0]), std::pair{cut[0], cut[1]});
   }
@@ -130,10 +131,15 @@ std::vector<std::vector<Point>> ConvexPieces(const std::vector<Ring>& loops) {
   std::vector<std::vector<Point>> out;
   std::vector<const Ring*> outers, holes;
   for (const Ring& r : loops) (RingArea(r) > 0 ? outers : holes).push_back(&r);
+  // Each hole belongs to the smallest outer loop holding it (an island inside a hole has its own holes).
+  std::vector<const Ring*> owner(holes.size(), nullptr);
+  for (size_t h = 0; h < holes.size(); ++h)
+    for (const Ring* outer : outers)
+      if (InsideRing(*outer, (*holes[h])[0]) && (!owner[h] || RingArea(*outer) < RingArea(*owner[h]))) owner[h] = outer;
   for (const Ring* outer : outers) {
     std::vector<Ring> inner;
-    for (const Ring* hole : holes)
-      if (InsideRing(*outer, (*hole)[0])) inner.push_back(*hole);
+    for (size_t h = 0; h < holes.size(); ++h)
+      if (owner[h] == outer) inner.push_back(*holes[h]);
     std::vector<Point> at = *outer;
     for (const Ring& h : inner) at.insert(at.end(), h.begin(), h.end());
     std::vector<Poly> polys;

@@ -27,13 +27,15 @@ Result<MujocoRun> RunMujoco(const std::filesystem::path& xml, const SettleOption
   mj_forward(m, d);
   const std::vector<double> pos(d->xpos, d->xpos + 3 * m->nbody), quat(d->xquat, d->xquat + 4 * m->nbody);
   const int steps = std::max(1, static_cast<int>(std::lround(options.seconds / m->opt.timestep)));
+  // The warnings are read after every step: on a bad acceleration MuJoCo resets the data (every body back
+  // where it started, the other warnings cleared), and the run goes on from the start.
   for (int k = 0; k < steps; ++k) {
     mj_step(m, d);
     run.max_contacts = std::max(run.max_contacts, d->ncon);
     run.max_rows = std::max(run.max_rows, d->nefc);
+    run.buffers_full = run.buffers_full || d->warning[mjWARN_CONTACTFULL].number > 0 || d->warning[mjWARN_CNSTRFULL].number > 0;
+    run.unstable = run.unstable || d->warning[mjWARN_BADQACC].number > 0;
   }
-  run.buffers_full = d->warning[mjWARN_CONTACTFULL].number > 0 || d->warning[mjWARN_CNSTRFULL].number > 0;
-  run.unstable = d->warning[mjWARN_BADQACC].number > 0;
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_type[j] == mjJNT_HINGE) ++run.hinges;
     if (m->jnt_type[j] != mjJNT_FREE) continue;
@@ -43,9 +45,10 @@ Result<MujocoRun> RunMujoco(const std::filesystem::path& xml, const SettleOption
     for (int i = 0; i < 4; ++i) dot += d->xquat[4 * b + i] * quat[4 * b + i];
     const double moved = std::sqrt(moved2), turned = 2.0 * std::acos(std::min(1.0, std::abs(dot)));
     ++run.free;
-    const bool strict = moved <= options.strict_move && turned <= options.strict_turn;
+    // After a reset nothing has moved far: an unstable run shows nothing stable.
+    const bool strict = !run.unstable && moved <= options.strict_move && turned <= options.strict_turn;
     run.strict += strict;
-    run.loose += moved <= options.loose_move && turned <= options.loose_turn;
+    run.loose += !run.unstable && moved <= options.loose_move && turned <= options.loose_turn;
     if (!strict) run.movers.push_back({mj_id2name(m, mjOBJ_BODY, b) ? mj_id2name(m, mjOBJ_BODY, b) : "", moved, turned});
   }
   std::sort(run.movers.begin(), run.movers.end(), [](const MujocoMover& a, const MujocoMover& b) { return a.moved > b.moved; });

@@ -25,7 +25,8 @@ struct MujocoRun {
   int hinges = 0;               // hinge joints (door leaves)
   int max_contacts = 0, max_rows = 0;  // the most contacts and constraint rows in one step
   bool buffers_full = false;    // a step ran out of contacts or rows (the result is not to be trusted)
-  bool unstable = false;        // MuJoCo reported a NaN or a huge acceleration
+  bool unstable = false;        // MuJoCo reported a NaN or a huge acceleration (and restarted the run):
+                                // no free body counts as stable then
   std::vector<MujocoMover> movers;  // the free bodies outside the strict rule, the largest first
   double wall_seconds = 0.0;
 };

@@ -255,7 +255,9 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
       if (!mentions[j].room) continue;
       size_t p = mentions[j].begin;
-      while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their"})) --p;
+      while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their", "your", "one", "either",
+                                                        "another", "each", "every", "both", "all", "any", "other"}))
+        --p;
       // "in one of the bedrooms": the determiners before the room, then "one of".
       while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any"})) p -= 2;
       if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) {

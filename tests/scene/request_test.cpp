@@ -122,8 +122,10 @@ TEST_CASE("objects are bound to the room the text places them in", "[scene][requ
 
 TEST_CASE("a wish for one room of several goes to the first of them, one for each goes to all", "[scene][request]") {
   // "one of the bedrooms", "a bedroom": the first bedroom (ordinal 0) has the TV, the second does not.
-  for (const char* text : {"Put a TV in one of the bedrooms.", "A TV in a bedroom, please.", "In one of the bedrooms, a TV."}) {
+  for (const char* text : {"Put a TV in one of the bedrooms.", "A TV in a bedroom, please.", "In one of the bedrooms, a TV.",
+                           "A TV in either bedroom.", "Put a TV in one of your bedrooms.", "A TV in one bedroom."}) {
     INFO(text);
+    CHECK_FALSE(Named(ParseRoomRequest(text, Category::kKitchen, 0), "tv"));  // not the kitchen's
     CHECK(Named(ParseRoomRequest(text, Category::kBedroom, 0), "tv"));
     const RoomRequest second = ParseRoomRequest(text, Category::kBedroom, 1);
     CHECK_FALSE(Named(second, "tv"));
@@ -132,8 +134,9 @@ TEST_CASE("a wish for one room of several goes to the first of them, one for eac
   }
   // Every bedroom: "each", "both", "the bedrooms", a count before the room noun.
   for (const char* text : {"A TV in each bedroom.", "Put a TV in both bedrooms.", "TVs in the bedrooms.",
-                           "Two bedrooms, each with a desk and a TV."}) {
+                           "Two bedrooms, each with a desk and a TV.", "A TV in every bedroom.", "TVs in all the bedrooms."}) {
     INFO(text);
+    CHECK_FALSE(Named(ParseRoomRequest(text, Category::kKitchen, 0), "tv"));
     CHECK(Named(ParseRoomRequest(text, Category::kBedroom, 1), "tv"));
   }
   // What the next sentence adds stays with the one room.
