@@ -938,7 +938,9 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
           double sweep_s0 = hinge == 0 ? p.cut.s0 : p.cut.s1 - width - 2 * gap;
           double sweep_s1 = sweep_s0 + width + 2 * gap;
           if (swing.flat) {
-            s0 = hinge == 0 ? p.cut.s0 - width : p.cut.s1;
+            // Its hinge edge 2 mm inside the jamb's line, as a 90 degree leaf's is: swung shut it keeps 2 mm
+            // from both reveals (flush with the near one, a simulator's hinge bound).
+            s0 = hinge == 0 ? p.cut.s0 + gap - width : p.cut.s1 - gap;
             s1 = s0 + width;
             q0 = side > 0 ? half + gap : -half - gap - lt;
             q1 = q0 + lt;
