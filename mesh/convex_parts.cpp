@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 
 #include "mesh/triangulate.h"
 
@@ -205,9 +207,26 @@ TriangleMesh WeldedByPosition(const TriangleMesh& mesh) {
   return out;
 }
 
+// Closed as its indices say (every edge once each way): CheckSolid's weld by position is a map lookup per
+// vertex, and this runs on every piece of every body of every settle. A piece closed only by position
+// (corners repeated) counts as open here and is welded with the open ones, which comes to the same.
+namespace {
+bool ClosedByIndex(const TriangleMesh& piece) {
+  std::unordered_map<uint64_t, int> directed;
+  directed.reserve(piece.triangles.size() * 3);
+  auto edge = [](int a, int b) { return static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32 | static_cast<uint32_t>(b); };
+  for (const auto& t : piece.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (++directed[edge(t[k], t[(k + 1) % 3])] > 1) return false;
+  for (const auto& [e, count] : directed)
+    if (directed.find(edge(static_cast<int>(e & 0xffffffffu), static_cast<int>(e >> 32))) == directed.end()) return false;
+  return !piece.triangles.empty();
+}
+}  // namespace
+
 std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh) {
   std::vector<TriangleMesh> out, open;
-  for (TriangleMesh& piece : SplitPieces(mesh)) (CheckSolid(piece).closed ? out : open).push_back(std::move(piece));
+  for (TriangleMesh& piece : SplitPieces(mesh)) (ClosedByIndex(piece) ? out : open).push_back(std::move(piece));
   if (open.size() < 2) {
     for (TriangleMesh& piece : open) out.push_back(std::move(piece));
     return out;
