@@ -172,7 +172,8 @@ GeneratorDef Toilet() {
             g.out.VerticalLathe(seat, {{0.7, zt}, {1, zt}, {1, zt + 0.02}, {0.7, zt + 0.02}}, 0, yc, rx, ry, 24);
             // The foot runs back under the cistern (the trapway), as a real one does: the cistern's weight
             // over the floor, not behind the bowl's round foot (dropped in a simulator, it tipped back).
-            g.out.Box(china, {-0.2 * g.w, yc, 0}, {0.2 * g.w, g.d / 2 - 0.06, zt});
+            // Behind the bowl's opening (not up through it), under the cistern.
+            g.out.Box(china, {-0.2 * g.w, yc + 0.9 * ry, 0}, {0.2 * g.w, g.d / 2 - 0.06, zt});
           }};
 }
 
