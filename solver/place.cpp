@@ -356,6 +356,68 @@ bool BehindClear(const Layer& layer, int self, int hub, Point centre, Point out,
   return true;
 }
 
+// A table's seats for chairs of half width cx and half depth cy: along both long sides, evenly spaced (one
+// per 0.55 m or the chair's width and 10 cm), and one at each end of a table long enough; each faces the
+// table (its back along `normal`), its front `gap` from the edge.
+struct TableSeat {
+  Point c, normal, along;
+  double pref = 0.0;
+};
+std::vector<TableSeat> TableSeats(const OrientedBox& box, double cx, double cy, double gap, bool dining) {
+  std::vector<TableSeat> out;
+  const Point u = box.U(), v = box.V();
+  const bool long_x = box.hx >= box.hy;
+  const Point la = long_x ? u : v, sa = long_x ? v : u;
+  const double L = long_x ? box.hx : box.hy, S = long_x ? box.hy : box.hx;
+  const double pitch = std::max(0.55, 2.0 * cx + 0.1);
+  const int n = std::max(1, static_cast<int>(std::floor(2.0 * L / pitch + 1e-9)));
+  auto seat = [&](Point normal, Point along, double offset, double extent, double pref) {
+    out.push_back({geo::Add(geo::Add(box.c, geo::Scale(normal, extent + gap + cy)), geo::Scale(along, offset)), normal, along, pref});
+  };
+  for (double side : {1.0, -1.0})
+    for (int k = 0; k < n; ++k) {
+      const double t = -L + 2.0 * L * (k + 0.5) / n;
+      seat(geo::Scale(sa, side), la, t, S, 0.02 * std::abs(t) + (side < 0 ? 0.01 : 0.0));
+    }
+  // The ends: a dining or meeting table's when it is long enough to seat more than one a side or seats one
+  // a side (a small table for two to four, one on each side), any smaller table's too (two at a balcony's
+  // table against its railing).
+  if (2.0 * S >= 2.0 * cx + 0.1 && (2.0 * L >= 1.2 || !dining || n == 1))
+    for (double side : {1.0, -1.0}) seat(geo::Scale(la, side), sa, 0.0, L, 0.3);
+  return out;
+}
+
+// How many of a dining or meeting table's seats have room for a chair and 0.75 m behind it on the free floor,
+// with the table standing at `c` (the chairs not yet placed): seats whose chair footprint and clear strip
+// stay on the free floor and off what stands there. Seats closer than a chair's width to a counted one
+// do not count again (the ends' seats overlap the corner seats of the sides).
+int RoomySeats(const Layer& layer, int table, const Candidate& c, double cx, double cy, double gap) {
+  const Body& t = layer.bodies[table];
+  OrientedBox box = LayerBox(t);
+  box.c = {c.x, c.y};
+  box.yaw = c.yaw;
+  std::vector<Point> counted;
+  for (const TableSeat& seat : TableSeats(box, cx, cy, gap, true)) {
+    bool fits = BehindClear(layer, table, table, seat.c, seat.normal, seat.along, cx, cy, kSeatBehind + 0.05);
+    for (double s : {-1.0, 1.0})
+      for (double d : {-1.0, 1.0}) {
+        if (!fits) break;
+        const Point p = geo::Add(geo::Add(seat.c, geo::Scale(seat.along, s * cx)), geo::Scale(seat.normal, d * cy));
+        fits = PointInRing(p, layer.region, 0.0);
+        for (size_t k = 0; k < layer.bodies.size() && fits; ++k) {
+          const Body& q = layer.bodies[k];
+          if (static_cast<int>(k) != table && q.active && !q.covering && LayerBox(q).ContainsPlan(p)) fits = false;
+        }
+      }
+    if (!fits || std::any_of(counted.begin(), counted.end(), [&](Point q) { return geo::Dist(q, seat.c) < 2.0 * cx; })) continue;
+    counted.push_back(seat.c);
+  }
+  return static_cast<int>(counted.size());
+}
+
+// Hard cost of a near miss: 5 mm of overlap at the hard terms' weight of 10 (the polish resolves it).
+constexpr double kNearMiss = 0.0025;
+
 // A dining or meeting table's chair without the 0.75 m behind it a person needs to pull it out, as it
 // stands now by its table (its back is +y of its frame); false for anything else.
 bool CrampedSeat(const Layer& layer, int self, const RoomState& state) {
@@ -481,33 +543,14 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
   auto add = [&](Point c, double yaw, double pref, int wall = -1) { out.push_back({c.x, c.y, b.p[2], WrapAngle(yaw), wall, pref}); };
   switch (m.role) {
     case GroupRole::kTableSeat: {
-      // Seats along both long sides, evenly spaced (one per 0.55 m or the chair's width and 10 cm), and one at
-      // each end of a table long enough; each faces the table, its front 5 cm from the edge, with 0.75 m clear
-      // behind it on the free floor (a cramped seat only for a chair the room cannot do without).
-      const bool long_x = box.hx >= box.hy;
-      const Point la = long_x ? u : v, sa = long_x ? v : u;
-      const double L = long_x ? box.hx : box.hy, S = long_x ? box.hy : box.hx;
-      const double pitch = std::max(0.55, 2.0 * cx + 0.1);
-      const int n = std::max(1, static_cast<int>(std::floor(2.0 * L / pitch + 1e-9)));
-      // The 0.75 m to pull a chair out is a dining and meeting table's rule; a play table's or a balcony's
-      // chairs make do with less.
+      // A cramped seat only for a chair the room cannot do without.
       const bool dining = OneOf(state.objects[m.hub].category, {"dining-table", "conference-table"});
-      auto seat = [&](Point normal, Point along, double offset, double extent, double pref) {
-        const Point c = geo::Add(geo::Add(box.c, geo::Scale(normal, extent + gap + cy)), geo::Scale(along, offset));
-        const bool roomy = BehindClear(layer, self, layer.body_of[m.hub], c, normal, along, cx, cy, dining ? kSeatBehind + 0.05 : 0.3);
-        if (!roomy && !protect && dining) return;
-        add(c, YawFacing(geo::Scale(normal, -1.0)), pref + (roomy ? 0.0 : 3.0));
-      };
-      for (double side : {1.0, -1.0})
-        for (int k = 0; k < n; ++k) {
-          const double t = -L + 2.0 * L * (k + 0.5) / n;
-          seat(geo::Scale(sa, side), la, t, S, 0.02 * std::abs(t) + (side < 0 ? 0.01 : 0.0));
-        }
-      // The ends: a dining or meeting table's when it is long enough to seat more than one a side or seats
-      // one a side (a small table for two to four, one on each side), any smaller table's too (two at a
-      // balcony's table against its railing).
-      if (2.0 * S >= 2.0 * cx + 0.1 && (2.0 * L >= 1.2 || !dining || n == 1))
-        for (double side : {1.0, -1.0}) seat(geo::Scale(la, side), sa, 0.0, L, 0.3);
+      for (const TableSeat& seat : TableSeats(box, cx, cy, gap, dining)) {
+        const bool roomy =
+            BehindClear(layer, self, layer.body_of[m.hub], seat.c, seat.normal, seat.along, cx, cy, dining ? kSeatBehind + 0.05 : 0.3);
+        if (!roomy && !protect && dining) continue;
+        add(seat.c, YawFacing(geo::Scale(seat.normal, -1.0)), seat.pref + (roomy ? 0.0 : 3.0));
+      }
       return true;
     }
     case GroupRole::kDeskSeat: {
@@ -696,6 +739,36 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   const auto [x0, y0, x1, y1] = PlanBounds(layer.region);
   Point centroid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
   const double step = std::clamp(0.5 * std::min(hx, hy), 0.01, 0.05);
+  // Place settings lie before the chairs at their table (issue 27: plates on a side with no chair): a plate
+  // 4 cm in from the edge facing each chair, at the chair's middle, a glass beyond it to the diner's right.
+  const std::string& category = state.objects[b.object].category;
+  if ((category == "plate" || category == "glass") && layer.parent >= 0 &&
+      OneOf(state.objects[layer.parent].category, {"dining-table", "conference-table"})) {
+    const Point mid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
+    const double half_x = 0.5 * (x1 - x0), half_y = 0.5 * (y1 - y0);
+    int seat = 0;
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const Membership m = GroupMembership(state, static_cast<int>(k));
+      if (m.role != GroupRole::kTableSeat || m.hub != layer.parent) continue;
+      const Point q = geo::Sub(layer.frame.ToLocal(state.WorldBox(static_cast<int>(k)).c), mid);
+      // The edge the chair sits at: its outward normal n, the edge's half length along t.
+      const bool across_x = std::abs(q.x) / std::max(half_x, 1e-6) > std::abs(q.y) / std::max(half_y, 1e-6);
+      const Point n = across_x ? Point{q.x > 0 ? 1.0 : -1.0, 0.0} : Point{0.0, q.y > 0 ? 1.0 : -1.0};
+      const Point t{-n.y, n.x};  // the diner faces -n: t points to their right
+      const double edge = across_x ? half_x : half_y, along = across_x ? half_y : half_x;
+      const double lateral = geo::Dot(q, t);
+      const bool glass = category == "glass";
+      const double inset = glass ? 0.04 + 0.24 + hy : 0.04 + hy;
+      const double side = glass ? 0.12 : 0.0;
+      for (double flip : {1.0, -1.0}) {
+        const double l = std::clamp(lateral + flip * side, -along + hx + 0.006, along - hx - 0.006);
+        const Point c = geo::Add(mid, geo::Add(geo::Scale(n, edge - inset), geo::Scale(t, l)));
+        out.push_back({c.x, c.y, b.p[2], 0.0, -1, -1.0 + 0.01 * seat + (flip < 0 ? 0.05 : 0.0)});
+        if (!glass) break;
+      }
+      ++seat;
+    }
+  }
   // Pillows lie at the head of a bed and against the back of a sofa: the parent's back (+y of its frame),
   // in as many evenly spaced places as the parent has pillows, side by side (issue 27: a first one in the
   // middle left the second none beside it, and it lay mid-bed), turned a quarter where they are too wide.
@@ -894,6 +967,17 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
       return GroupMembership(state, layer.bodies[k].object).role == GroupRole::kTableSeat;
     });
     const size_t kLookahead = o.functional_groups && (FacedFromAfar(state, layer.bodies[b].object) || seats) ? 12 : 4;
+    const bool dining_hub = OneOf(state.objects[layer.bodies[b].object].category, {"dining-table", "conference-table"});
+    int chair_count = 0;
+    double chair_hx = 0.0, chair_hy = 0.0;
+    for (int k : dependents) {
+      const Body& q = layer.bodies[k];
+      // Chairs that carry a pull-out zone (MarkPullOut: a dining or meeting table's) count.
+      if (GroupMembership(state, q.object).role != GroupRole::kTableSeat || state.objects[q.object].pull_out <= 0.0) continue;
+      ++chair_count;
+      chair_hx = std::max(chair_hx, q.hx * q.s[0]);
+      chair_hy = std::max(chair_hy, q.hy * q.s[0]);
+    }
     std::vector<int> group = {b};
     for (int k : PlacementOrder(layer, state)) {
       if (std::find(dependents.begin(), dependents.end(), k) != dependents.end()) group.push_back(k);
@@ -904,7 +988,7 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     auto try_poses = [&] {
       // Its best poses, but distinct ones: nearly the same pose would only repeat the same group.
       std::vector<Scored> tries;
-      const std::vector<Scored> ranked = RankCandidates(layer, b, state, o, rng, jitter, 64, stats);
+      const std::vector<Scored> ranked = RankCandidates(layer, b, state, o, rng, jitter, seats && dining_hub && chair_count > 0 ? 1024 : 64, stats);
       auto distinct = [&](const Scored& t) {
         return std::none_of(tries.begin(), tries.end(), [&](const Scored& u) {
           return std::hypot(u.c.x - t.c.x, u.c.y - t.c.y) < 0.5 && std::abs(WrapAngle(u.c.yaw - t.c.yaw)) < 0.1;
@@ -922,6 +1006,25 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
           if (t.c.wall < 0 || t.hard > 1e-10 || !distinct(t)) continue;
           tries.push_back(t);
           if (++by_wall == 4) break;
+        }
+      }
+      // A dining or meeting table's best few poses where the most chairs (all, where the room allows) have
+      // a seat with 0.75 m behind it: the best ranked poses may all stand where some chair has none (a small
+      // room's middle).
+      if (seats && dining_hub && chair_count > 0) {
+        std::vector<std::pair<int, const Scored*>> roomy;
+        int most = 0;
+        for (const Scored& t : ranked) {
+          if (t.hard > 1e-10) continue;
+          const int n = std::min(chair_count, RoomySeats(layer, b, t.c, chair_hx, chair_hy, o.object_gap + 0.03));
+          roomy.push_back({n, &t});
+          most = std::max(most, n);
+        }
+        size_t added = 0;
+        for (const auto& [n, t] : roomy) {
+          if (n < most || !distinct(*t)) continue;
+          tries.push_back(*t);
+          if (++added == 4) break;
         }
       }
       for (const Scored& t : tries) {
@@ -946,7 +1049,13 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
           if (g != b) snug += Closeness(layer, g, state);
           if (seat && CrampedSeat(layer, g, state)) ++cramped;
         }
-        const double soft = cost.soft_linear + t.c.pref + snug + 3.0 * cramped;
+        double soft = cost.soft_linear + t.c.pref + snug + 3.0 * cramped;
+        // A table's group that seats its chairs roomily but overlaps by a hair (a few mm, which the polish
+        // resolves) beats one that crams a chair without overlap.
+        if (seats && cost.hard <= kNearMiss) {
+          soft += cost.hard / kNearMiss;
+          cost.hard = 0.0;
+        }
         if (cost.hard < best_hard - 1e-10 || (cost.hard <= best_hard + 1e-10 && soft < best_soft)) {
           best_hard = cost.hard;
           best_soft = soft;
@@ -958,8 +1067,10 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
       }
     };
     try_poses();
-    // Every pose crams a chair (a meeting room 2.2 m wide): the table at its smallest scale, once (the
-    // hub's, or the table among its dependents: the one on the rug).
+    // Every pose crams a chair (a meeting room 2.2 m wide): the table half way to its smallest scale, then
+    // at it (the hub's, or the table among its dependents: the one on the rug). Half way keeps two seats a
+    // side on a table that fits where the full one does not (a 1.28 m table between a door's sweep and a
+    // passage 1.28 m apart).
     int table = b;
     for (int k : dependents)
       if (table == b && !OneOf(state.objects[layer.bodies[b].object].category, {"dining-table", "conference-table"}) &&
@@ -969,8 +1080,11 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     const double scale_min = state.objects[hub.object].scale_min;
     if (seats && best_cramped > 0 && hub.scalable && hub.s[0] > scale_min + 1e-9) {
       const double full = hub.s[0];
-      hub.s[0] = scale_min;
-      try_poses();
+      for (double scale : {0.5 * (full + scale_min), scale_min}) {
+        if (best_cramped == 0 && !best_bodies.empty()) break;
+        hub.s[0] = scale;
+        try_poses();
+      }
       if (best_bodies.empty()) hub.s[0] = full;
     }
     for (size_t g = 0; g < group.size() && !best_bodies.empty(); ++g) layer.bodies[group[g]] = best_bodies[g];

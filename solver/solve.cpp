@@ -568,7 +568,7 @@ struct RoomSolver::Impl {
     // groups worse: the sofa turned along an angled wall away from its TV is no fix.
     const bool semantic = options.functional_groups && (action.reason.rfind("critic:", 0) == 0 ||
                                                          action.reason.rfind("relations or interaction zones unmet", 0) == 0);
-    const int trouble_before = semantic ? GroupTrouble() : 0;
+    const int trouble_before = semantic ? GroupTrouble(true) : 0;
     const Pose from = state.placements[i].pose;
     state.SetPose(i, Snap(i, want));
     if (!members.empty()) Carry(members, from, state.placements[i].pose);
@@ -610,7 +610,7 @@ struct RoomSolver::Impl {
       return Refuse(r, "\"" + action.id + "\" would leave its group: " + why);
     }
     if (semantic) {
-      if (const int after = GroupTrouble(); after > trouble_before) {
+      if (const int after = GroupTrouble(true); after > trouble_before) {
         state = saved;
         return Refuse(r, "moving \"" + action.id + "\" would put " + std::to_string(after - trouble_before) +
                              " more member(s) of the room's groups out of their places");
@@ -656,10 +656,14 @@ struct RoomSolver::Impl {
     return "";
   }
 
-  // How many of the room's group members break their group's rules now.
-  int GroupTrouble() const {
+  // How many of the room's group members break their group's rules now; with `seats`, a dining or meeting
+  // chair without its 0.75 m behind it counts too (a table moved for a relation must not cram its chairs).
+  int GroupTrouble(bool seats = false) const {
     int n = 0;
-    for (size_t k = 0; k < state.objects.size(); ++k) n += !GroupProblem(static_cast<int>(k)).empty();
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      const int kk = static_cast<int>(k);
+      n += !GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9);
+    }
     return n;
   }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -206,6 +207,52 @@ TEST_CASE("A narrow meeting room's chairs can all be pulled out: 0.75 m behind e
     CHECK(FreeBehind(s, c, w, d, kSeatBehind) >= kSeatBehind - 1e-9);
   }
   CHECK(chairs >= 2);  // the essential two at least
+}
+
+TEST_CASE("Place settings lie before the chairs at their table: each plate on a chair's side, in line with it",
+          "[solver][groups]") {
+  // A 1.6 x 0.9 m table with two chairs in a 4 x 4 m room and two plates and a fruit bowl on it: each plate
+  // lies on the table's half nearest a chair, within 0.15 m of that chair's line across the table (before,
+  // plates spread out from the middle, on the sides with no chair as often as not).
+  RoomProblem room = Rectangle(4.0, 4.0);
+  room.objects.push_back(TableObject("dining-table-0", 1.6, 0.9, 0.75));
+  AddTableSeats(room, "dining-table-0", 2, 0.45, 0.5, 0.85);
+  for (const char* id : {"plate-0", "plate-1"}) {
+    ProblemObject plate = SmallObject(id, 0.24, 0.24, 0.02, "dining-table-0", Relation::kOnTop);
+    plate.category = "plate";
+    room.objects.push_back(plate);
+  }
+  room.objects.push_back(SmallObject("fruit-bowl-0", 0.26, 0.26, 0.1, "dining-table-0", Relation::kOnTop));
+  MarkEssentials(Category::kDiningRoom, room);
+  auto solved = SolveRoom(room, {});
+  REQUIRE(solved.ok());
+  INFO(solved->summary.BriefReport());
+  const int t = Index(*solved, "r/dining-table-0");
+  REQUIRE(t >= 0);
+  const OrientedBox table = Plan(*solved, t);
+  std::vector<Point> chairs;
+  for (int k = 0; k < 2; ++k)
+    if (const int c = Index(*solved, "r/chair-" + std::to_string(k)); c >= 0) chairs.push_back(table.Local(Plan(*solved, c).c));
+  REQUIRE(chairs.size() == 2);
+  std::set<int> used;
+  for (const char* id : {"r/plate-0", "r/plate-1"}) {
+    const int p = Index(*solved, id);
+    REQUIRE(p >= 0);
+    const Point q = table.Local(Plan(*solved, p).c);
+    // The chair it serves: on the same side of the table's middle, its line across within 0.15 m.
+    int served = -1;
+    for (int k = 0; k < 2; ++k) {
+      const Point c = chairs[k];
+      const bool across_x = std::abs(c.x) / table.hx > std::abs(c.y) / table.hy;
+      const bool same_half = across_x ? c.x * q.x > 0.0 : c.y * q.y > 0.0;
+      const double off = across_x ? std::abs(c.y - q.y) : std::abs(c.x - q.x);
+      if (same_half && off <= 0.15) served = k;
+    }
+    INFO(id << " at (" << q.x << ", " << q.y << ") in the table's frame");
+    CHECK(served >= 0);
+    used.insert(served);
+  }
+  CHECK(used.size() == 2);  // one setting a chair
 }
 
 TEST_CASE("The tidy stage turns furniture left a few degrees off the walls square to them, the coffee table like its sofa",
