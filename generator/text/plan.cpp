@@ -70,6 +70,7 @@ PlanSummary PlanLayout(const std::string& text, const PlanOptions& options) {
     summary.metrics = MeasureLayout(*summary.layout);
     summary.check = CheckBrief(summary.brief, *summary.layout);
     summary.unmet = summary.check.unmet();
+    summary.recount = CheckRecount(text, *summary.layout);
     if (!summary.shape_class) {
       if (auto shape = ClassifyFootprint(*summary.layout, 0)) summary.shape_class = std::string(ShapeClassName(*shape));
     }
@@ -86,8 +87,10 @@ PlanSummary PlanLayout(const std::string& text, const PlanOptions& options) {
     summary.unmet = summary.check.unmet();
   }
   if (summary.valid()) {
-    // Words the parser could not place may hold a requirement it missed: never "met" then (issue 17).
-    summary.outcome = summary.unmet.empty() && summary.brief.unparsed.empty() ? PlanOutcome::kMet : PlanOutcome::kPartial;
+    // Words the parser could not place may hold a requirement it missed (issue 17), and a second, independent
+    // count of the text's rooms may read more than the layout has (issue 32): never "met" then.
+    summary.outcome = summary.unmet.empty() && summary.brief.unparsed.empty() && summary.recount.empty() ? PlanOutcome::kMet
+                                                                                                        : PlanOutcome::kPartial;
     summary.error.clear();
   } else if (summary.layout || summary.attempts > 0) {
     summary.outcome = PlanOutcome::kInvalid;
@@ -119,6 +122,7 @@ std::string PlanSummary::BriefReport() const {
   for (const auto& u : brief.unparsed) out << "not understood: \"" << u.text << "\"\n";
   for (const auto& c : brief.conflicts) out << "conflict: " << c << "\n";
   for (const auto& u : unmet) out << "unmet: " << u.requirement << (u.detail.empty() ? "" : " (" + u.detail + ")") << "\n";
+  for (const auto& r : recount) out << "count check: " << r.Message() << "\n";
   const std::size_t shown = std::min<std::size_t>(violations.size(), 10);
   for (std::size_t i = 0; i < shown; ++i)
     out << "violation: rule " << violations[i].rule << ": " << violations[i].message << "\n";
@@ -152,6 +156,12 @@ nlohmann::ordered_json PlanReportJson(const PlanSummary& s) {
     unmet.push_back(e);
   }
   j["unmet"] = unmet;
+  // The independent count of the text's rooms against the layout (recount.h): what may have been misread.
+  Json recount = Json::array();
+  for (const auto& r : s.recount)
+    recount.push_back(Json{{"category", std::string(CategoryName(r.category))}, {"asked", r.asked}, {"has", r.has},
+                           {"phrase", r.phrase}, {"message", r.Message()}});
+  j["count_check"] = recount;
   Json violations = Json::array();
   for (const auto& v : s.violations)
     violations.push_back(Json{{"rule", v.rule}, {"elements", v.elements}, {"message", v.message}, {"figure", v.figure}});

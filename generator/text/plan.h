@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "generator/text/brief.h"
+#include "generator/text/recount.h"
 #include "layout/layout.h"
 #include "layout/metrics.h"
 #include "layout/validate.h"
@@ -58,7 +59,8 @@ struct PlanOptions {
 enum class PlanOutcome {
   kMet,          // a valid layout that meets every requirement of the brief
   kPartial,      // a valid layout; some requirements are unmet (listed in `unmet`), or some words of the
-                 // request were not understood (brief.unparsed), so the brief may miss a requirement
+                 // request were not understood (brief.unparsed), so the brief may miss a requirement, or
+                 // the independent count of the text's rooms (recount.h) reads more than the layout has
   kInvalid,      // only invalid layouts (or none that parsed) came out of all rounds / attempts
   kFailed,       // no answer at all: transport failure, refused request, bad options
 };
@@ -86,6 +88,8 @@ struct PlanSummary {
   std::vector<Violation> violations;        // of `layout` (empty when valid)
   BriefCheck check;                         // `layout` against `brief`
   std::vector<RequirementResult> unmet;     // check.unmet(), plus the brief's unsupported shape if any
+  // The second reading (recount.h): room kinds of which the layout has fewer than the text may ask for.
+  std::vector<RecountDisagreement> recount;
   LayoutMetrics metrics;                    // FSR / RR / VCR ingredients of `layout`
   std::optional<std::string> shape_class;   // footprint class of `layout` (partitioner's or classified)
   std::vector<PlanRound> rounds;            // llm: one per exchange; procedural: one summarising the search

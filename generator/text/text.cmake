@@ -5,6 +5,7 @@ set(VILLA_GENERATOR_TEXT_DIR ${CMAKE_CURRENT_LIST_DIR})
 add_library(villa_generator STATIC
   ${VILLA_GENERATOR_TEXT_DIR}/brief.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/brief_check.cpp
+  ${VILLA_GENERATOR_TEXT_DIR}/recount.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/llm_plan.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/procedural.cpp
   ${VILLA_GENERATOR_TEXT_DIR}/plan.cpp

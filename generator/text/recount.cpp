@@ -1,0 +1,328 @@
+// The independent room count of a request (recount.h). Deliberately simple and separate from brief.cpp:
+// its own word lists, its own tokenizer, no floors or scopes.
+#include "generator/text/recount.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <map>
+#include <optional>
+
+namespace villa {
+namespace {
+
+struct Noun {
+  std::vector<std::string_view> words;  // singular and plural forms are separate entries
+  Category category;
+};
+
+// Room nouns, longest first at each start word (matched greedily).
+const std::vector<Noun>& Nouns() {
+  using C = Category;
+  static const std::vector<Noun> nouns = [] {
+    std::vector<Noun> n;
+    auto add = [&](std::initializer_list<std::string_view> w, C c) { n.push_back({std::vector<std::string_view>(w), c}); };
+    for (std::string_view kid : {"kids", "kid's", "kids'", "children's", "childrens", "child's", "childs", "children"}) {
+      for (std::string_view room : {"room", "rooms", "bedroom", "bedrooms"}) add({kid, room}, C::kChildrenRoom);
+    }
+    add({"nursery"}, C::kChildrenRoom);
+    add({"nurseries"}, C::kChildrenRoom);
+    add({"playroom"}, C::kChildrenRoom);
+    add({"playrooms"}, C::kChildrenRoom);
+    add({"play", "room"}, C::kChildrenRoom);
+    add({"play", "rooms"}, C::kChildrenRoom);
+    add({"en", "suite", "bathroom"}, C::kBathroom);
+    add({"en", "suite", "bathrooms"}, C::kBathroom);
+    add({"en", "suite"}, C::kBathroom);
+    add({"en", "suites"}, C::kBathroom);
+    add({"ensuite", "bathroom"}, C::kBathroom);
+    add({"ensuite", "bathrooms"}, C::kBathroom);
+    add({"ensuite"}, C::kBathroom);
+    add({"ensuites"}, C::kBathroom);
+    for (std::string_view w : {"bathroom", "bathrooms", "washroom", "washrooms", "wc", "wcs", "toilet", "toilets",
+                               "lavatory", "lavatories", "restroom", "restrooms"})
+      add({w}, C::kBathroom);
+    for (std::string_view w : {"powder", "shower"}) {
+      add({w, "room"}, C::kBathroom);
+      add({w, "rooms"}, C::kBathroom);
+    }
+    add({"half", "bath"}, C::kBathroom);
+    add({"half", "baths"}, C::kBathroom);
+    for (std::string_view w : {"bedroom", "bedrooms"}) add({w}, C::kBedroom);
+    for (std::string_view w : {"guest", "spare"}) {
+      add({w, "bedroom"}, C::kBedroom);
+      add({w, "bedrooms"}, C::kBedroom);
+      add({w, "room"}, C::kBedroom);
+      add({w, "rooms"}, C::kBedroom);
+    }
+    add({"master", "suite"}, C::kBedroom);
+    add({"master", "suites"}, C::kBedroom);
+    add({"bed", "room"}, C::kBedroom);
+    add({"bed", "rooms"}, C::kBedroom);
+    for (std::string_view w : {"kitchen", "kitchens", "kitchenette", "kitchenettes"}) add({w}, C::kKitchen);
+    for (std::string_view w : {"living", "sitting", "family", "reception", "drawing"}) {
+      add({w, "room"}, C::kLivingRoom);
+      add({w, "rooms"}, C::kLivingRoom);
+    }
+    add({"lounge"}, C::kLivingRoom);
+    add({"lounges"}, C::kLivingRoom);
+    for (std::string_view w : {"room", "rooms", "area", "areas", "hall"}) add({"dining", w}, C::kDiningRoom);
+    for (std::string_view w : {"office", "offices", "study", "studies"}) add({w}, C::kOffice);
+    for (std::string_view w : {"meeting", "conference"}) {
+      add({w, "room"}, C::kMeetingRoom);
+      add({w, "rooms"}, C::kMeetingRoom);
+    }
+    add({"boardroom"}, C::kMeetingRoom);
+    add({"boardrooms"}, C::kMeetingRoom);
+    for (std::string_view w : {"balcony", "balconies", "terrace", "terraces"}) add({w}, C::kBalcony);
+    std::stable_sort(n.begin(), n.end(), [](const Noun& a, const Noun& b) { return a.words.size() > b.words.size(); });
+    return n;
+  }();
+  return nouns;
+}
+
+bool IsPlural(const Noun& noun) { return noun.words.back().back() == 's'; }
+
+std::optional<int> NumberOf(std::string_view w) {
+  static const std::map<std::string_view, int> words = {
+      {"a", 1},     {"an", 1},     {"one", 1},     {"single", 1}, {"two", 2},   {"three", 3}, {"four", 4},
+      {"five", 5},  {"six", 6},    {"seven", 7},   {"eight", 8},  {"nine", 9},  {"ten", 10},  {"eleven", 11},
+      {"twelve", 12}, {"couple", 2}, {"pair", 2},  {"twin", 2},   {"double", 2}};
+  if (auto it = words.find(w); it != words.end()) return it->second;
+  if (!w.empty() && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    return std::stoi(std::string(w));
+  return std::nullopt;
+}
+
+std::optional<int> OrdinalOf(std::string_view w) {
+  static const std::map<std::string_view, int> words = {
+      {"second", 2}, {"third", 3}, {"fourth", 4}, {"fifth", 5}, {"sixth", 6}, {"2nd", 2}, {"3rd", 3}, {"4th", 4}, {"5th", 5}};
+  if (auto it = words.find(w); it != words.end()) return it->second;
+  return std::nullopt;
+}
+
+bool OneOf(std::string_view w, std::initializer_list<std::string_view> set) {
+  return std::find(set.begin(), set.end(), w) != set.end();
+}
+
+bool Boundary(std::string_view w) { return OneOf(w, {".", ",", ";", ":", "!", "?", "(", ")", "and", "or", "plus", "with", "&"}); }
+bool Negation(std::string_view w) { return OneOf(w, {"no", "without", "not", "never", "nor", "don't", "dont", "instead", "except"}); }
+bool Reference(std::string_view w) {
+  return OneOf(w, {"the", "this", "that", "these", "those", "our", "my", "its", "their", "his", "her", "each", "every", "either",
+                   "both", "which", "same", "any", "other", "per", "of"});
+}
+bool FloorWord(std::string_view w) {
+  return OneOf(w, {"floor", "floors", "level", "levels", "storey", "storeys", "story", "stories"});
+}
+
+// Lowercase words and punctuation marks; hyphens and slashes split words ("two-bedroom", "en-suite").
+std::vector<std::string> Tokens(std::string_view text) {
+  std::vector<std::string> out;
+  std::string word;
+  auto flush = [&] {
+    if (!word.empty()) out.push_back(word);
+    word.clear();
+  };
+  for (char raw : text) {
+    const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(raw)));
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '\'') {
+      word += c;
+    } else {
+      flush();
+      if (c == '.' || c == ',' || c == ';' || c == ':' || c == '!' || c == '?' || c == '(' || c == ')' || c == '&')
+        out.push_back(std::string(1, c));
+    }
+  }
+  flush();
+  // Trailing apostrophes of possessives stay ("kids'"); a closing quote ("'x'") does not matter here.
+  return out;
+}
+
+struct Mention {
+  Category category;
+  int count = 0;
+  std::string phrase;
+};
+
+std::string Join(const std::vector<std::string>& t, size_t from, size_t to) {
+  std::string s;
+  for (size_t k = from; k < to && k < t.size(); ++k) {
+    if (!s.empty() && !(t[k].size() == 1 && std::ispunct(static_cast<unsigned char>(t[k][0])))) s += ' ';
+    s += t[k];
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
+  const std::vector<std::string> t = Tokens(text);
+  std::map<Category, RoomRecount> best;
+  std::optional<int> last_count;  // the count of the last counted noun (for "..., each with an en-suite")
+  // Token k a verb of having ("with", "has", "gets") after "each" / "all" / "every" within three words
+  // ("each with", "each bedroom has"): how many rooms the distribution covers (the bedrooms read so far for
+  // "each bedroom", else the last count read); nothing when it is no such verb.
+  // (`at`: the index of "each".)
+  const auto EachAt = [&](size_t k, size_t* at) -> std::optional<int> {
+    if (!OneOf(t[k], {"with", "has", "have", "having", "gets", "get", "includes", "include"})) return std::nullopt;
+    for (size_t j = k, steps = 0; j > 0 && steps < 3; ++steps) {
+      --j;
+      if (OneOf(t[j], {".", ";", ":"})) break;
+      if (!OneOf(t[j], {"each", "all", "every"})) continue;
+      *at = j;
+      if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"}) && best.count(Category::kBedroom)) return best[Category::kBedroom].count;
+      return last_count.value_or(0);
+    }
+    return std::nullopt;
+  };
+  auto note = [&](Category c, int n, const std::string& phrase) {
+    RoomRecount& r = best[c];
+    r.category = c;
+    if (n > r.count) {
+      r.count = n;
+      r.phrase = phrase;
+    }
+  };
+  for (size_t i = 0; i < t.size(); ++i) {
+    const Noun* noun = nullptr;
+    for (const Noun& n : Nouns()) {
+      if (i + n.words.size() > t.size()) continue;
+      bool match = true;
+      for (size_t k = 0; k < n.words.size() && match; ++k) match = t[i + k] == n.words[k];
+      if (match) {
+        noun = &n;
+        break;
+      }
+    }
+    if (!noun) continue;
+    const size_t end = i + noun->words.size();
+    // Backwards: the quantity within four words, up to a boundary or another noun.
+    std::optional<int> count, ordinal;
+    bool negated = false, referred = false, distributed = false, another = false;
+    size_t from = i;
+    for (size_t k = i, steps = 0; k > 0 && steps < 4; ++steps) {
+      --k;
+      const std::string& w = t[k];
+      if (Negation(w)) {
+        negated = true;
+        break;
+      }
+      // "each with / all with / each bedroom has (its own) en-suite": as many as those rooms.
+      if (const std::optional<int> each = EachAt(k, &from)) {
+        distributed = true;
+        count = *each;
+        break;
+      }
+      // "a second-floor bedroom": the ordinal is the floor's.
+      if (Boundary(w) || FloorWord(w)) break;
+      if (OneOf(w, {"own", "private", "separate", "individual"})) continue;
+      // "each with its own bathroom" distributes; "its balcony" refers to one already named.
+      if (OneOf(w, {"its", "their"})) {
+        if (k > 0)
+          if (const std::optional<int> each = EachAt(k - 1, &from)) {
+            distributed = true;
+            count = *each;
+            break;
+          }
+        referred = true;
+        break;
+      }
+      // "a couple of offices", "a pair of bedrooms".
+      if (w == "of" && k > 0 && OneOf(t[k - 1], {"couple", "pair"})) {
+        count = 2;
+        from = k > 1 && t[k - 2] == "a" ? k - 2 : k - 1;
+        break;
+      }
+      if (Reference(w)) {
+        referred = true;
+        break;
+      }
+      if (const auto n = NumberOf(w)) {
+        count = *n;
+        from = k;
+        // "..., each with a bathroom": the article belongs to the distribution.
+        if (*n == 1 && k > 0) {
+          if (const std::optional<int> each = EachAt(k - 1, &from)) {
+            distributed = true;
+            count = *each;
+          }
+        }
+        break;
+      }
+      if (const auto o = OrdinalOf(w)) {
+        ordinal = *o;
+        from = k;
+        break;
+      }
+      if (w == "another") {
+        another = true;
+        from = k;
+        break;
+      }
+    }
+    // "no / without / not a study": a negation just before the number reads too.
+    for (size_t k = from, steps = 0; k > 0 && steps < 2 && !negated; ++steps) negated = Negation(t[--k]);
+    if (negated || referred) {
+      i = end - 1;
+      continue;
+    }
+    int n = 0;
+    if (distributed) {
+      n = count.value_or(0);
+    } else if (ordinal) {
+      n = *ordinal;
+    } else if (another) {
+      n = std::max(2, (best.count(noun->category) ? best[noun->category].count : 1) + 1);
+    } else if (count) {
+      n = *count;
+    } else if (!IsPlural(*noun)) {
+      n = 1;  // a bare singular in a list ("kitchen, lounge, 2 bedrooms")
+    }
+    // Forwards: "on each floor", "per floor", "on both floors", "per bedroom", "for each bedroom".
+    size_t to = end;
+    for (size_t k = end; k < t.size() && k < end + 4; ++k) {
+      const std::string& w = t[k];
+      if (Boundary(w) && w != "with") break;
+      if (OneOf(w, {"each", "every", "all", "both", "per"}) && k + 1 < t.size()) {
+        const std::string& next = t[k + 1];
+        if (FloorWord(next)) {
+          n = std::max(n, 1) * (w == "both" ? 2 : std::max(floors, 1));
+          to = k + 2;
+          break;
+        }
+        if (OneOf(next, {"bedroom", "bedrooms"}) && (w == "per" || w == "each" || w == "every")) {
+          const int bedrooms = best.count(Category::kBedroom) ? best[Category::kBedroom].count : 0;
+          if (bedrooms > 0) n = std::max(n, 1) * bedrooms;
+          to = k + 2;
+          break;
+        }
+      }
+    }
+    if (n > 0) {
+      note(noun->category, n, Join(t, from, to));
+      last_count = n;
+    }
+    i = end - 1;
+  }
+  std::vector<RoomRecount> out;
+  for (const auto& [category, r] : best)
+    if (r.count > 0) out.push_back(r);
+  return out;
+}
+
+std::string RecountDisagreement::Message() const {
+  const std::string kind(CategoryName(category));
+  return "the text may ask for " + std::to_string(asked) + " " + kind + (asked == 1 ? "" : "s") + " (\"" + phrase +
+         "\"); the layout has " + std::to_string(has);
+}
+
+std::vector<RecountDisagreement> CheckRecount(std::string_view text, const Layout& layout) {
+  std::map<Category, int> has;
+  for (const Room& r : layout.rooms) ++has[r.category];
+  std::vector<RecountDisagreement> out;
+  for (const RoomRecount& r : RecountRooms(text, layout.LevelCount()))
+    if (has[r.category] < r.count) out.push_back({r.category, r.count, has[r.category], r.phrase});
+  return out;
+}
+
+}  // namespace villa
