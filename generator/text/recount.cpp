@@ -105,8 +105,11 @@ bool OneOf(std::string_view w, std::initializer_list<std::string_view> set) {
   return std::find(set.begin(), set.end(), w) != set.end();
 }
 
-bool Boundary(std::string_view w) { return OneOf(w, {".", ",", ";", ":", "!", "?", "(", ")", "and", "or", "plus", "with", "&"}); }
-bool Negation(std::string_view w) { return OneOf(w, {"no", "without", "not", "never", "nor", "don't", "dont", "instead", "except"}); }
+bool Boundary(std::string_view w) { return OneOf(w, {".", ",", ";", ":", "!", "?", "(", ")", "-", "and", "or", "plus", "with", "&"}); }
+bool Negation(std::string_view w) {
+  return OneOf(w, {"no", "without", "not", "never", "nor", "neither", "don't", "dont", "won't", "wont", "instead", "except",
+                   "skip", "forget", "drop", "needn't", "rather"});
+}
 bool Reference(std::string_view w) {
   return OneOf(w, {"the", "this", "that", "these", "those", "our", "my", "its", "their", "his", "her", "each", "every", "either",
                    "both", "which", "same", "any", "other", "per", "of"});
@@ -123,9 +126,16 @@ std::vector<std::string> Tokens(std::string_view text) {
     if (!word.empty()) out.push_back(word);
     word.clear();
   };
-  for (char raw : text) {
-    const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(raw)));
-    if (std::isalnum(static_cast<unsigned char>(c)) || c == '\'') {
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+    // An en or em dash (UTF-8), or a hyphen standing alone ("2nd - office"), separates like a comma; a
+    // hyphen inside a word splits it ("two-bedroom").
+    const bool dash = text.compare(i, 3, "\xE2\x80\x93") == 0 || text.compare(i, 3, "\xE2\x80\x94") == 0;
+    if (dash || (c == '-' && word.empty())) {
+      flush();
+      out.push_back("-");
+      if (dash) i += 2;
+    } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '\'') {
       word += c;
     } else {
       flush();
@@ -238,6 +248,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         break;
       }
       if (const auto n = NumberOf(w)) {
+        if (k > 0 && FloorWord(t[k - 1])) break;  // "level 3 office": the number is the floor's
         count = *n;
         from = k;
         // "..., each with a bathroom": the article belongs to the distribution.
@@ -260,8 +271,18 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         break;
       }
     }
-    // "no / without / not a study": a negation just before the number reads too.
-    for (size_t k = from, steps = 0; k > 0 && steps < 2 && !negated; ++steps) negated = Negation(t[--k]);
+    // "no / without / not a study", "no need for a balcony", "neither a study nor a dining room": a negation
+    // up to four words before the number reads too (not across a full stop or a semicolon); "dining room
+    // not needed" after it.
+    for (size_t k = from, steps = 0; k > 0 && steps < 4 && !negated; ++steps) {
+      if (OneOf(t[--k], {".", ";", ":", "!", "?"})) break;
+      negated = Negation(t[k]);
+    }
+    if (end < t.size()) {
+      const std::string& next = t[end];
+      const bool is = OneOf(next, {"is", "are"}) && end + 1 < t.size() && t[end + 1] == "not";
+      negated = negated || is || OneOf(next, {"not", "isn't", "aren't"});
+    }
     if (negated || referred) {
       i = end - 1;
       continue;

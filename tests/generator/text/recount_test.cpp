@@ -46,6 +46,10 @@ TEST_CASE("The recount distributes: each with, on each floor, per bedroom, a sec
 TEST_CASE("The recount leaves out negations and references", "[generator][recount]") {
   using M = std::map<std::string, int>;
   CHECK(Counts("Two bedrooms, no dining room, without a balcony, and I don't want a study.", 2) == M{{"bedroom", 2}});
+  CHECK(Counts("No need for a balcony. We want neither a study nor a dining room. Kitchen not needed. One lounge.", 2) ==
+        M{{"living-room", 1}});
+  // A floor's number or ordinal is not the room's: "level 3 - office", "2nd - office".
+  CHECK(Counts("Level 3 \u2013 office; 2nd - bedroom, 1st - kitchen", 3) == M{{"office", 1}, {"bedroom", 1}, {"kitchen", 1}});
   CHECK(Counts("Put a TV in one of the bedrooms; the kitchen should be bright and its balcony large.", 2).empty());
   // A kind named twice counts as the most it was read, not the sum.
   CHECK(Counts("three bedrooms. The largest bedroom faces south; a bedroom upstairs has a view.", 2) == M{{"bedroom", 3}});
