@@ -297,14 +297,14 @@ bool IsAdjective(const Token& t) {
       "decent", "proper", "sizable", "sizeable", "wide", "warm", "welcoming", "open", "plan", "own",
       "attached", "en", "suite", "ensuite", "full", "half", "dedicated", "shared", "second", "third",
       "further", "new", "more", "stylish", "calm", "peaceful", "formal", "informal", "cosy", "home",
-      "adjoining", "connected", "spare", "fully", "equipped", "well", "lit", "sized", "large-sized"};
+      "adjoining", "connected", "spare", "fully", "equipped", "well", "lit", "sized", "large-sized", "guest"};
   return !t.punct && (words.count(t.word) > 0 || words.count(t.stem) > 0);
 }
 
 bool IsNegation(const Token& t) {
   return In(t, {"no", "not", "without", "dont", "doesnt", "never", "zero", "nor", "neither", "cannot",
                 "wont", "none", "exclude", "excluding", "except", "skip", "omit", "cant", "shouldnt",
-                "wouldnt", "isnt", "arent", "didnt"});
+                "wouldnt", "isnt", "arent", "didnt", "forget"});
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -534,6 +534,9 @@ struct Mention {
   int first = 0;  // token range of the whole phrase (quantifier included)
   int last = 0;
   int per_level = -1;  // "six bedrooms on the upper two floors, three on each": this many on each level of `ref`
+  // One for each of other rooms (issue 32): "two bedrooms, each with an en-suite", "a bathroom each",
+  // "every bedroom has a balcony", "a balcony for every bedroom"; set by Spread().
+  bool spread = false;
 };
 
 class Parser {
@@ -562,6 +565,7 @@ class Parser {
   // interpretation
   void Quantify(Mention& m);
   void PlaceLevels();
+  void Spread();
   void Distribute();
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
@@ -1101,7 +1105,7 @@ void Parser::Quantify(Mention& m) {
       if (tokens_[j].punct || tokens_[j].item >= 0) return false;
       if (!In(tokens_[j], {"need", "want", "have", "require", "include", "any", "for", "a", "an", "will",
                            "should", "would", "do", "does", "is", "are", "there", "be", "like", "must", "it",
-                           "at", "all"}))
+                           "at", "all", "add", "put", "build", "get", "really", "bother", "with", "the", "rather"}))
         return false;
     }
     return false;
@@ -1181,6 +1185,12 @@ void Parser::Quantify(Mention& m) {
       determined = true;  // a reference to a room counted elsewhere
       m.definite = true;
       m.first = k;
+      // "skip the dining room", "forget the balcony", "no need for the office": none of it.
+      if (negated_before(k - 1)) {
+        m.definite = false;
+        m.counting = true;
+        m.min = m.max = 0;
+      }
     }
   }
   // "Bedrooms: 3", "bathrooms x 2" (spec style).
@@ -1218,6 +1228,38 @@ void Parser::Quantify(Mention& m) {
     m.min = m.plural ? 2 : 1;
     m.max = m.plural ? -1 : 1;
     if (negated_before(k)) m.min = m.max = 0;
+  }
+  // "no study or dining room", "won't need a study or a dining room": the negation runs on over "or" / "nor"
+  // to the next room of the list.
+  // So does it over "and" to a definite one: "skip the dining room and the office".
+  if ((m.counting && m.max != 0) || m.definite) {
+    const Mention* previous = mentions_.empty() ? nullptr : &mentions_.back();
+    if (previous && previous->counting && previous->max == 0 && tokens_[previous->last].sentence == sentence &&
+        previous->last < m.first) {
+      bool joined = false, list = true;
+      for (int j = previous->last + 1; j < m.first && list; ++j) {
+        if (In(tokens_[j], {"or", "nor"}) || (m.definite && In(tokens_[j], {"and"}))) joined = true;
+        else if (!(tokens_[j].punct == ',' || In(tokens_[j], {"a", "an", "any", "the"}) || IsAdjective(tokens_[j]))) list = false;
+      }
+      if (joined && list) {
+        m.counting = true;
+        m.definite = false;
+        m.min = m.max = 0;
+      }
+    }
+  }
+  // "Dining room not needed.", "a balcony is not required": none.
+  if (item.last + 2 < static_cast<int>(tokens_.size()) && tokens_[item.last + 1].sentence == sentence) {
+    int j = item.last + 1;
+    if (In(tokens_[j], {"is", "are"})) ++j;
+    if (j + 1 < static_cast<int>(tokens_.size()) && In(tokens_[j], {"not", "isnt", "arent"}) &&
+        In(tokens_[j + 1], {"needed", "required", "necessary", "wanted"})) {
+      m.counting = true;
+      m.definite = false;
+      m.min = m.max = 0;
+      Consume(item.last + 1, j + 1);
+      m.last = j + 1;
+    }
   }
   // "with" right before the phrase: "a bedroom with a balcony", "with its own bathroom".
   for (int j = m.first - 1, steps = 0; j >= 0 && steps < 3 && tokens_[j].sentence == sentence; --j, ++steps) {
@@ -1413,6 +1455,79 @@ std::vector<int> Parser::MentionLevels(const Mention& m) const {
     if (std::find(levels.begin(), levels.end(), l) == levels.end()) levels.push_back(l);
   if (levels.empty()) levels.push_back(kAnyLevel);
   return levels;
+}
+
+// One room for each of others (issue 32): "four bedrooms, each with an en-suite bathroom" is four
+// bathrooms, not one; so are "two bedrooms with a bathroom each", "a master and a guest bedroom, each with
+// its own shower room", "every bedroom has a balcony" and "a balcony for every bedroom". The rooms it is
+// spread over are the bedrooms (and children's rooms) counted right before it in the sentence, or, after
+// "every bedroom", all the bedrooms the text counts.
+void Parser::Spread() {
+  auto word = [&](int j) -> const Token* { return j >= 0 && j < static_cast<int>(tokens_.size()) ? &tokens_[j] : nullptr; };
+  auto sleeping = [](Category c) { return c == Category::kBedroom || c == Category::kChildrenRoom; };
+  for (std::size_t mi = 0; mi < mentions_.size(); ++mi) {
+    Mention& m = mentions_[mi];
+    if (m.category != Category::kBathroom && m.category != Category::kBalcony) continue;
+    if (m.counting && m.max == 0) continue;
+    const int sentence = tokens_[m.first].sentence;
+    bool preceding = false;             // over the bedrooms counted just before
+    std::optional<Category> all_of;     // over every room of a kind the text counts
+    // "each with (a|its own) ...": "each" right before the "with" of the phrase.
+    if (m.with_before && m.with_token > 0 && In(tokens_[m.with_token - 1], {"each", "all", "both"}) &&
+        tokens_[m.with_token - 1].sentence == sentence)
+      preceding = true;
+    // "... with a bathroom each".
+    if (const Token* after = word(m.last + 1); after && after->sentence == sentence && after->word == "each") preceding = true;
+    // "every bedroom has (its own) a balcony": the mention before the verb says "every".
+    for (int j = m.first - 1, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
+      if (In(tokens_[j], {"has", "have", "gets", "get"})) {
+        const int before = j - 1;
+        if (before >= 0 && tokens_[before].item >= 0 && items_[tokens_[before].item].kind == ItemKind::kRoom) {
+          const Mention& owner = mentions_[MentionOfItem(tokens_[before].item)];
+          if (owner.every && sleeping(owner.category)) all_of = owner.category;
+        }
+        break;
+      }
+      if (tokens_[j].punct || tokens_[j].item >= 0) break;
+    }
+    // "a balcony for every bedroom", "one bathroom per bedroom".
+    if (const Token* t1 = word(m.last + 1); t1 && t1->sentence == sentence && In(*t1, {"for", "per"})) {
+      int j = m.last + 2;
+      if (const Token* t2 = word(j); t2 && In(*t2, {"each", "every"})) ++j;
+      if (const Token* t3 = word(j); t3 && t3->item >= 0 && items_[t3->item].kind == ItemKind::kRoom &&
+                                       sleeping(items_[t3->item].category))
+        all_of = items_[t3->item].category;
+    }
+    // "each with its own en-suite and balcony": the next room of the phrase is spread alike.
+    int chained = 0;
+    if (!preceding && !all_of && mi > 0 && mentions_[mi - 1].spread && tokens_[mentions_[mi - 1].first].sentence == sentence) {
+      bool list = true;
+      for (int j = mentions_[mi - 1].last + 1; j < m.first && list; ++j)
+        list = In(tokens_[j], {"and", "a", "an", "its", "their", "own"}) || IsAdjective(tokens_[j]);
+      if (list) chained = mentions_[mi - 1].min;
+    }
+    int over = chained;
+    if (all_of) {
+      for (std::size_t k = 0; k < mentions_.size(); ++k)
+        if (k != mi && mentions_[k].category == *all_of && mentions_[k].counting && mentions_[k].max != 0) over += mentions_[k].min;
+    } else if (preceding) {
+      // The bedrooms of the list right before it in the sentence ("a master bedroom and a guest bedroom, each ...").
+      for (int k = static_cast<int>(mi) - 1; k >= 0; --k) {
+        const Mention& o = mentions_[k];
+        if (tokens_[o.first].sentence != sentence) break;
+        if (!sleeping(o.category)) {
+          if (over > 0) break;
+          continue;
+        }
+        if (o.counting && o.max != 0) over += o.min;
+      }
+    }
+    if (over < 2) continue;  // one bedroom with its bathroom needs no spreading
+    m.spread = true;
+    m.counting = true;
+    m.definite = false;
+    m.min = m.max = over * std::max(1, m.counting && m.min > 0 ? m.min : 1);
+  }
 }
 
 // Connections: a cue ("open to", "directly access", "reached through") between the rooms before it and
@@ -2011,6 +2126,7 @@ Brief Parser::Run() {
     mentions_.push_back(m);
     bare_.push_back(bare_mention_);
   }
+  Spread();
   PlaceLevels();
   Distribute();
   Connect();

@@ -1,0 +1,177 @@
+// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 208 requests in eight
+// voices (terse lists, long emails, British and American floor naming, spec sheets, "each"/"per"
+// distributions, ordinals, negations), numbers in words and digits, each with what it asks: floors, the
+// footprint when named, the rooms of each kind (utility rooms aside) and, where pinned, per floor. One table:
+// every request is planned offline and its layout compared with what it asks.
+//
+// The requests the planner does not yet read right are listed below with what goes wrong, so that the
+// table holds the line: a request off the list that stops matching fails, and so does one on the list
+// that starts to match (take it off). `kFalseMet` are those whose report still says "met": every other
+// mismatch must be reported as partial.
+#include <map>
+#include <set>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "generator/text/plan.h"
+#include "layout/layout_io.h"
+
+namespace villa {
+namespace {
+
+// Known gaps: id -> what the parser or planner gets wrong today.
+const std::map<std::string, std::string>& KnownGaps() {
+  static const std::map<std::string, std::string> gaps = {
+      {"voices-012", "'1st - ... 2nd -' without 'floor' does not pin floors"},
+      {"voices-017", "'ranch style' does not imply one floor"},
+      {"voices-037", "a correction ('scrap what I said') is not read as replacing the earlier floors"},
+      {"voices-038", "'the first floor is for living:' (a heading) not read as a scope"},
+      {"voices-039", "'its own bathroom ... and a shower room': the own bathroom is not counted"},
+      {"voices-040", "'a bedroom with an en-suite, so that's three bedrooms and three en-suites' counted twice"},
+      {"voices-045", "a floor phrase after a list pins only its last pair"},
+      {"voices-054", "'reception room' read as a meeting room, not a living room"},
+      {"voices-055", "'snug' is not a living room"},
+      {"voices-056", "'cloakroom' is not a WC; the family bathroom is not added to the en-suite"},
+      {"voices-063", "a floor-less bathroom and one pinned upstairs are not added up"},
+      {"voices-064", "'reception room' read as a meeting room"},
+      {"voices-070", "'box room' is not a bedroom"},
+      {"voices-071", "'a lounge, a separate sitting room': two living rooms read as one"},
+      {"voices-073", "'2 of them en-suite' is not two bathrooms"},
+      {"voices-075", "'twin room' is not a bedroom"},
+      {"voices-078", "'front room', 'drawing room' not both living rooms; a terraced house is not a terrace"},
+      {"voices-079", "'primary bedroom' is not counted with 'two more bedrooms'"},
+      {"voices-083", "'2BR/1BA' shorthand"},
+      {"voices-087", "'primary suite' is not a bedroom"},
+      {"voices-090", "'guest suite' is not a bedroom"},
+      {"voices-091", "'the second floor is bedrooms, three of them'"},
+      {"voices-097", "'half bath' and a 'Jack and Jill bathroom' not both counted"},
+      {"voices-105", "'Upper:' is not read as a floor heading"},
+      {"voices-106", "'Footprint: L.' is not read as the shape"},
+      {"voices-108", "'bedrooms x3' shorthand"},
+      {"voices-111", "'bedrooms (3)' shorthand"},
+      {"voices-115", "'Bathrooms: 2 (one downstairs, one upstairs)' not split over the floors"},
+      {"voices-124", "'Bathrooms: 2, one on each floor' read as two on each floor"},
+      {"voices-134", "'two bedrooms that each have their own bathroom'"},
+      {"voices-136", "'two bedrooms on each of the upper floors, each pair sharing a bathroom'"},
+      {"voices-138", "'one bathroom for every two bedrooms'"},
+      {"voices-141", "'3 bedrooms, 2 of which have en-suites, a family bathroom'"},
+      {"voices-142", "'two bedrooms on the first, an office and a bedroom on the second' (floor nouns left out)"},
+      {"voices-143", "'each floor has its own bathroom and living room': the planner adds an office and a bedroom"},
+      {"voices-145", "'each family gets a living room ..., one family per floor'"},
+      {"voices-146", "floors named after a list ('..., 3 bedrooms and 2 bathrooms above')"},
+      {"voices-153", "'split evenly between the floors'"},
+      {"voices-155", "'two bedrooms and a bathroom on both upper floors' not spread per floor"},
+      {"voices-156", "'each with ... its own shower room' (a verb between)"},
+      {"voices-157", "'plus a second living room upstairs'"},
+      {"voices-160", "'Upstairs: the master bedroom, another bedroom': 'the master bedroom' is a new room"},
+      {"voices-162", "'a second bedroom with a second bathroom on the second floor'"},
+      {"voices-168", "'a second bathroom up there too'"},
+      {"voices-173", "'the first bedroom ..., and the second bedroom ...' as two rooms"},
+      {"voices-177", "'master bedroom, second bedroom, third bedroom'"},
+      {"voices-179", "'2 living rooms, the first downstairs, the second upstairs'"},
+      {"voices-182", "'another one on the top floor' ('one' for a bathroom)"},
+      {"voices-190", "'not a fan of balconies so please leave them out'"},
+      {"voices-205", "'no bathroom upstairs; put both bathrooms on the ground floor'"},
+  };
+  return gaps;
+}
+
+// Known gaps whose report still says "met" (the count check does not catch them: it reads the most a kind
+// is named, never a sum).
+const std::set<std::string>& KnownFalseMet() {
+  static const std::set<std::string> ids = {"voices-070", "voices-071", "voices-115", "voices-124", "voices-138", "voices-142",
+                                            "voices-143", "voices-155", "voices-160", "voices-179", "voices-182", "voices-205"};
+  return ids;
+}
+
+std::map<std::string, int> Count(const Layout& layout, int level) {
+  std::map<std::string, int> out;
+  for (const Room& r : layout.rooms)
+    if (r.category != Category::kUtilityRoom && (level < 0 || r.level == level)) ++out[std::string(CategoryName(r.category))];
+  return out;
+}
+
+// What differs between the layout and what the request asks; empty when it matches.
+std::string Mismatch(const Json& expect, const PlanSummary& plan) {
+  if (!plan.layout) return "no layout";
+  std::string out;
+  auto note = [&](const std::string& s) { out += (out.empty() ? "" : "; ") + s; };
+  const Layout& layout = *plan.layout;
+  if (layout.LevelCount() != expect.at("floors").get<int>())
+    note("floors " + std::to_string(layout.LevelCount()) + ", asked " + std::to_string(expect.at("floors").get<int>()));
+  if (expect.contains("shape")) {
+    const std::string asked = expect.at("shape").get<std::string>();
+    const std::string read = plan.brief.shape ? std::string(ShapeClassName(*plan.brief.shape)) : "none";
+    if (read != asked) note("shape " + read + ", asked " + asked);
+  }
+  std::map<std::string, int> asked;
+  for (const auto& [category, n] : expect.at("rooms").items()) asked[category] = n.get<int>();
+  const std::map<std::string, int> has = Count(layout, -1);
+  std::set<std::string> kinds;
+  for (const auto& [k, n] : asked) kinds.insert(k);
+  for (const auto& [k, n] : has) kinds.insert(k);
+  for (const std::string& k : kinds) {
+    const int a = asked.count(k) ? asked.at(k) : 0, h = has.count(k) ? has.at(k) : 0;
+    if (a != h) note(k + " " + std::to_string(h) + ", asked " + std::to_string(a));
+  }
+  if (expect.contains("levels"))
+    for (const auto& [level, rooms] : expect.at("levels").items()) {
+      const std::map<std::string, int> on = Count(layout, std::stoi(level));
+      for (const auto& [k, n] : rooms.items()) {
+        const int h = on.count(k) ? on.at(k) : 0;
+        if (h != n.get<int>()) note(k + " on level " + level + " " + std::to_string(h) + ", asked " + std::to_string(n.get<int>()));
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Requests in eight voices: every one off the known-gaps list is planned as asked, and none is a false met",
+          "[generator][corpus]") {
+  std::vector<std::pair<int, Json>> requests;
+  const Status read = ReadJsonl(std::string(VILLA_FIXTURE_DIR) + "/prompts/voices.jsonl", [&](const Json& record, int line) {
+    requests.push_back({line, record});
+    return true;
+  });
+  REQUIRE(read.ok());
+  REQUIRE(requests.size() >= 200);
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  std::map<std::string, std::pair<int, int>> by_style;  // matched, total
+  int matched = 0, false_met = 0;
+  std::set<std::string> ids;
+  for (const auto& [line, record] : requests) {
+    const std::string id = record.at("id").get<std::string>();
+    CHECK(ids.insert(id).second);  // ids are unique
+    options.seed = static_cast<std::uint64_t>(line);
+    const PlanSummary plan = PlanLayout(record.at("text").get<std::string>(), options);
+    const std::string mismatch = Mismatch(record.at("expect"), plan);
+    INFO(id << ": " << record.at("text").get<std::string>() << "\n" << plan.BriefReport() << "mismatch: " << mismatch);
+    CHECK(plan.valid());
+    auto& [ok, total] = by_style[record.at("style").get<std::string>()];
+    ++total;
+    const bool known = KnownGaps().count(id) > 0;
+    if (mismatch.empty()) {
+      ++matched, ++ok;
+      CHECK_FALSE(known);  // it matches now: take it off the list
+    } else {
+      CHECK(known);
+      const bool met = plan.outcome == PlanOutcome::kMet;
+      false_met += met;
+      CHECK(met == KnownFalseMet().count(id) > 0);
+    }
+  }
+  std::string table = "style          matched\n";
+  for (const auto& [style, counts] : by_style)
+    table += style + std::string(15 - std::min<size_t>(14, style.size()), ' ') + std::to_string(counts.first) + "/" +
+             std::to_string(counts.second) + "\n";
+  table += "all            " + std::to_string(matched) + "/" + std::to_string(requests.size()) + ", false met " +
+           std::to_string(false_met) + "\n";
+  WARN(table);
+  CHECK(by_style.size() >= 8);
+  CHECK(matched == static_cast<int>(requests.size() - KnownGaps().size()));
+}
+
+}  // namespace villa
