@@ -359,16 +359,18 @@ const std::vector<RoomWord>& RoomLexicon() {
     add(C::kLivingRoom, {"living room", "living", "lounge", "sitting room", "family room", "living area",
                          "living space", "salon", "drawing room", "parlor", "parlour", "great room",
                          "tv room", "media room", "day room", "living hall", "livingroom", "living-room",
-                         "lounge area", "sitting area", "den"});
+                         "lounge area", "sitting area", "den", "reception room", "snug", "front room"});
     add(C::kBedroom, {"bedroom", "master bedroom", "main bedroom", "primary bedroom", "guest bedroom",
                       "guest room", "master suite", "sleeping room", "bed room", "parent bedroom",
                       "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
-                      "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area"});
+                      "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area", "box room",
+                      "twin room", "twin bedroom", "primary suite", "guest suite", "double room"});
     add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
     add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
                        "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
-                       "water closet", "toilet room", "bathroom suite", "shower"});
+                       "water closet", "toilet room", "bathroom suite", "shower", "cloakroom", "cloakroom wc",
+                       "cloakroom toilet"});
     add(C::kBathroom, {"en suite bathroom", "ensuite bathroom", "en suite", "ensuite", "en suite shower room",
                        "ensuite shower room", "en suite wc", "ensuite wc", "attached bathroom",
                        "private bathroom", "own bathroom", "en suite bath", "ensuite bath"},
@@ -383,7 +385,7 @@ const std::vector<RoomWord>& RoomLexicon() {
                      "workspace", "work space", "library", "studio", "home study", "office room",
                      "working room", "den office"});
     add(C::kMeetingRoom, {"meeting room", "conference room", "boardroom", "board room", "meeting space",
-                          "meeting area", "meeting-room", "conference area", "reception room"});
+                          "meeting area", "meeting-room", "conference area"});
     add(C::kUtilityRoom, {"utility room", "utility", "staircase room", "stair room", "stairwell room",
                           "stair hall", "stairway room", "staircase-room", "utility-room", "stair core",
                           "stairs room", "utility area", "service room"});

@@ -40,18 +40,23 @@ const std::vector<Noun>& Nouns() {
     add({"ensuite"}, C::kBathroom);
     add({"ensuites"}, C::kBathroom);
     for (std::string_view w : {"bathroom", "bathrooms", "washroom", "washrooms", "wc", "wcs", "toilet", "toilets",
-                               "lavatory", "lavatories", "restroom", "restrooms"})
+                               "lavatory", "lavatories", "restroom", "restrooms", "cloakroom", "cloakrooms"})
       add({w}, C::kBathroom);
     for (std::string_view w : {"powder", "shower"}) {
       add({w, "room"}, C::kBathroom);
       add({w, "rooms"}, C::kBathroom);
     }
+    for (std::string_view w : {"wc", "toilet"}) add({"cloakroom", w}, C::kBathroom);
     add({"half", "bath"}, C::kBathroom);
     add({"half", "baths"}, C::kBathroom);
     for (std::string_view w : {"bedroom", "bedrooms"}) add({w}, C::kBedroom);
     for (std::string_view w : {"guest", "spare"}) {
       add({w, "bedroom"}, C::kBedroom);
       add({w, "bedrooms"}, C::kBedroom);
+      add({w, "room"}, C::kBedroom);
+      add({w, "rooms"}, C::kBedroom);
+    }
+    for (std::string_view w : {"box", "twin", "double"}) {
       add({w, "room"}, C::kBedroom);
       add({w, "rooms"}, C::kBedroom);
     }
@@ -64,7 +69,8 @@ const std::vector<Noun>& Nouns() {
       add({w, "room"}, C::kLivingRoom);
       add({w, "rooms"}, C::kLivingRoom);
     }
-    add({"lounge"}, C::kLivingRoom);
+    for (std::string_view w : {"snug", "snugs", "lounge"}) add({w}, C::kLivingRoom);
+    add({"front", "room"}, C::kLivingRoom);
     add({"lounges"}, C::kLivingRoom);
     for (std::string_view w : {"room", "rooms", "area", "areas", "hall"}) add({"dining", w}, C::kDiningRoom);
     for (std::string_view w : {"office", "offices", "study", "studies"}) add({w}, C::kOffice);
