@@ -788,7 +788,10 @@ int Parser::TryShape(std::size_t i, Item& item) {
     return k < tokens_.size() && In(tokens_[k], {"shaped", "shape", "plan", "form", "footprint", "outline", "layout"});
   };
   int len = 0;
-  if (t.word.size() == 1 && std::isalpha(static_cast<unsigned char>(t.word[0])) && shape_word(i + 1)) {
+  // "Footprint: L", "Shape: U-shaped" (spec style): the letter after the heading.
+  const bool headed = i >= 2 && tokens_[i - 1].punct == ':' && In(tokens_[i - 2], {"footprint", "shape", "outline", "plan"}) &&
+                      tokens_[i - 2].sentence == t.sentence;
+  if (t.word.size() == 1 && std::isalpha(static_cast<unsigned char>(t.word[0])) && (shape_word(i + 1) || (headed && In(t, {"l", "u", "t", "h"})))) {
     char c = t.word[0];
     len = 2;
     if (c == 'l') item.shape = ShapeClass::kL;
@@ -796,6 +799,7 @@ int Parser::TryShape(std::size_t i, Item& item) {
     else if (c == 't') item.shape = ShapeClass::kT;
     else if (c == 'h') item.shape = ShapeClass::kH;
     else item.shape.reset();  // "Z-shaped", "S-shaped": no such class
+    if (!shape_word(i + 1)) len = 1;
   } else if (In(t, {"rectangular", "rectangle", "oblong", "boxy", "box"})) {
     if (t.word == "box" && !shape_word(i + 1)) return 0;
     item.shape = ShapeClass::kRectangle;
@@ -1195,8 +1199,27 @@ void Parser::Quantify(Mention& m) {
       }
     }
   }
-  // "Bedrooms: 3", "bathrooms x 2" (spec style).
+  // "bedrooms x3", "bedrooms (3)" (list shorthand).
   int after = item.last + 1;
+  if (!determined && after < static_cast<int>(tokens_.size()) && tokens_[after].sentence == sentence) {
+    const Token& next = tokens_[after];
+    if (next.word.size() >= 2 && next.word[0] == 'x' &&
+        std::all_of(next.word.begin() + 1, next.word.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+      m.counting = true;
+      m.min = m.max = std::stoi(next.word.substr(1));
+      Consume(after, after);
+      m.last = after;
+      determined = true;
+    } else if (next.punct == '(' && after + 2 < static_cast<int>(tokens_.size()) && Cardinal(tokens_[after + 1]) &&
+               tokens_[after + 2].punct == ')') {
+      m.counting = true;
+      m.min = m.max = *Cardinal(tokens_[after + 1]);
+      Consume(after, after + 2);
+      m.last = after + 2;
+      determined = true;
+    }
+  }
+  // "Bedrooms: 3", "bathrooms x 2" (spec style).
   if (!determined && after + 1 < static_cast<int>(tokens_.size()) &&
       (tokens_[after].punct == ':' || tokens_[after].word == "x" || tokens_[after].punct == '*') &&
       Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
