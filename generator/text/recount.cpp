@@ -179,6 +179,11 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
   // ("each with", "each bedroom has"): how many rooms the distribution covers (the bedrooms read so far for
   // "each bedroom", else the last count read); nothing when it is no such verb.
   // (`at`: the index of "each".)
+  std::map<Category, RoomRecount> sentence;  // this sentence's counts (see below)
+  const auto bedrooms_so_far = [&] {
+    const Category c = Category::kBedroom;
+    return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
+  };
   const auto EachAt = [&](size_t k, size_t* at) -> std::optional<int> {
     if (!OneOf(t[k], {"with", "has", "have", "having", "gets", "get", "includes", "include"})) return std::nullopt;
     for (size_t j = k, steps = 0; j > 0 && steps < 3; ++steps) {
@@ -186,7 +191,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       if (OneOf(t[j], {".", ";", ":"})) break;
       if (!OneOf(t[j], {"each", "all", "every"})) continue;
       *at = j;
-      if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"}) && best.count(Category::kBedroom)) return best[Category::kBedroom].count;
+      if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"})) return bedrooms_so_far();
       return last_count.value_or(0);
     }
     return std::nullopt;
@@ -199,7 +204,34 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       r.phrase = phrase;
     }
   };
+  // Within a sentence the rooms of a list add up ("a lounge, a separate sitting room"); across sentences a
+  // kind counts as the most one sentence reads (a later sentence names the rooms again).
+  auto flush = [&] {
+    for (const auto& [c, r] : sentence) note(c, r.count, r.phrase);
+    sentence.clear();
+  };
+  auto so_far = [&](Category c) {
+    return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
+  };
+  std::optional<Category> last_category;
   for (size_t i = 0; i < t.size(); ++i) {
+    if (OneOf(t[i], {".", "!", "?"})) {
+      flush();
+      continue;
+    }
+    // "another one", "a second one": one more of the kind just counted.
+    if (last_category && i + 1 < t.size() && t[i + 1] == "one" && (t[i] == "another" || OrdinalOf(t[i])) &&
+        (i + 2 >= t.size() || !OneOf(t[i + 2], {"of"}))) {
+      const int n = t[i] == "another" ? so_far(*last_category) + 1 : *OrdinalOf(t[i]);
+      RoomRecount& r = sentence[*last_category];
+      r.category = *last_category;
+      if (n > r.count) {
+        r.count = n;
+        r.phrase = Join(t, i, i + 2);
+      }
+      ++i;
+      continue;
+    }
     const Noun* noun = nullptr;
     for (const Noun& n : Nouns()) {
       if (i + n.words.size() > t.size()) continue;
@@ -249,6 +281,12 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         from = k > 1 && t[k - 2] == "a" ? k - 2 : k - 1;
         break;
       }
+      // "both bathrooms" with none counted yet: two.
+      if (w == "both" && IsPlural(*noun)) {
+        count = 2;
+        from = k;
+        break;
+      }
       if (Reference(w)) {
         referred = true;
         break;
@@ -280,9 +318,11 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     // "no / without / not a study", "no need for a balcony", "neither a study nor a dining room": a negation
     // up to four words before the number reads too (not across a full stop or a semicolon); "dining room
     // not needed" after it.
-    for (size_t k = from, steps = 0; k > 0 && steps < 4 && !negated; ++steps) {
+    for (size_t k = from, steps = 0; k > 0 && steps < 4 && !negated && !referred; ++steps) {
       if (OneOf(t[--k], {".", ";", ":", "!", "?"})) break;
       negated = Negation(t[k]);
+      // "two bedrooms, including a master bedroom", "one of which is a study": one already counted.
+      referred = OneOf(t[k], {"including", "incl", "among", "which", "whom", "them"});
     }
     if (end < t.size()) {
       const std::string& next = t[end];
@@ -299,7 +339,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     } else if (ordinal) {
       n = *ordinal;
     } else if (another) {
-      n = std::max(2, (best.count(noun->category) ? best[noun->category].count : 1) + 1);
+      n = std::max(2, so_far(noun->category) + 1);
     } else if (count) {
       n = *count;
     } else if (!IsPlural(*noun)) {
@@ -318,7 +358,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
           break;
         }
         if (OneOf(next, {"bedroom", "bedrooms"}) && (w == "per" || w == "each" || w == "every")) {
-          const int bedrooms = best.count(Category::kBedroom) ? best[Category::kBedroom].count : 0;
+          const int bedrooms = so_far(Category::kBedroom);
           if (bedrooms > 0) n = std::max(n, 1) * bedrooms;
           to = k + 2;
           break;
@@ -326,11 +366,24 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       }
     }
     if (n > 0) {
-      note(noun->category, n, Join(t, from, to));
+      RoomRecount& r = sentence[noun->category];
+      r.category = noun->category;
+      const std::string phrase = Join(t, from, to);
+      if (ordinal || another) {  // a total: "a second bedroom" is two in all
+        if (n > r.count) {
+          r.count = n;
+          r.phrase = phrase;
+        }
+      } else {
+        r.count += n;
+        r.phrase += (r.phrase.empty() ? "" : " + ") + phrase;
+      }
       last_count = n;
+      last_category = noun->category;
     }
     i = end - 1;
   }
+  flush();
   std::vector<RoomRecount> out;
   for (const auto& [category, r] : best)
     if (r.count > 0) out.push_back(r);

@@ -15,10 +15,12 @@
 //   - "X on each floor / per floor / on every level / on both floors": times the layout's floors;
 //     "X per bedroom / for each bedroom": times the bedrooms read; "N bedrooms, each with an en-suite":
 //     the en-suites are N;
+//   - "another one": one more of the kind just counted; "both bathrooms": two;
 //   - nouns after "no", "without", "not", "instead of" are left out, and so are references ("the kitchen",
-//     "one of the bedrooms", "its balcony", "each bedroom").
-// A kind read several times counts as the most it was read (a request names a room again when it says
-// where it goes).
+//     "one of the bedrooms", "its balcony", "each bedroom", "including a master bedroom").
+// Within a sentence the rooms of a kind add up (a list names distinct rooms: "a lounge, a separate sitting
+// room"); across sentences a kind counts as the most one sentence reads (a request names a room again when
+// it says where it goes).
 #include <string>
 #include <string_view>
 #include <vector>

@@ -51,7 +51,12 @@ TEST_CASE("The recount leaves out negations and references", "[generator][recoun
   // A floor's number or ordinal is not the room's: "level 3 - office", "2nd - office".
   CHECK(Counts("Level 3 \u2013 office; 2nd - bedroom, 1st - kitchen", 3) == M{{"office", 1}, {"bedroom", 1}, {"kitchen", 1}});
   CHECK(Counts("Put a TV in one of the bedrooms; the kitchen should be bright and its balcony large.", 2).empty());
-  // A kind named twice counts as the most it was read, not the sum.
+  // Within a sentence a list's rooms add up; a later sentence naming them again does not.
+  CHECK(Counts("a lounge, a separate sitting room and a kitchen", 1) == M{{"living-room", 2}, {"kitchen", 1}});
+  CHECK(Counts("two bedrooms, including a master bedroom, and a bathroom and another one upstairs", 2) ==
+        M{{"bedroom", 2}, {"bathroom", 2}});
+  CHECK(Counts("no bathroom upstairs; put both bathrooms on the ground floor", 2) == M{{"bathroom", 2}});
+  // A kind named in two sentences counts as the most one of them reads, not the sum.
   CHECK(Counts("three bedrooms. The largest bedroom faces south; a bedroom upstairs has a view.", 2) == M{{"bedroom", 3}});
 }
 
