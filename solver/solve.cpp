@@ -1854,7 +1854,7 @@ struct RoomSolver::Impl {
     constexpr double kRefillSemantic = 0.25;
     const RoomState saved = state;
     const EnergyTerms saved_energy = energy;
-    const int trouble = GroupTrouble();
+    const int trouble = GroupTrouble(/*seats=*/true);  // nothing comes back into a chair's pull-out room
     state.objects.push_back(original);
     state.placements.push_back({});
     state.placements.back().surface = original.surface;  // the problem's own choices; -1: AssignSupports picks
@@ -1883,7 +1883,7 @@ struct RoomSolver::Impl {
       pl.wall = slot->wall;
       pl.placed = true;
       state.SetPose(i, slot->pose);
-      if (CostAt(i).hard > kFeasible || !GroupProblem(i).empty() || (TableSeat(i) && !SeatHolds(i)) || GroupTrouble() > trouble)
+      if (CostAt(i).hard > kFeasible || !GroupProblem(i).empty() || (TableSeat(i) && !SeatHolds(i)) || GroupTrouble(true) > trouble)
         continue;
       const EnergyTerms e = StateEnergy(state);
       if (e.collision > 0.0 || e.support > 0.0 || e.semantic > saved_energy.semantic + kRefillSemantic || !ExactlyClean()) continue;
