@@ -675,7 +675,7 @@ int Parser::ObjectWordsAt(std::size_t i) const {
 int Parser::TryFloorCount(std::size_t i, Item& item) {
   const Token& t = tokens_[i];
   if (t.punct) return 0;
-  if (In(t, {"bungalow"})) {
+  if (In(t, {"bungalow", "ranch", "rambler"})) {  // the American single-storey house
     item.floors = 1;
     return 1;
   }
@@ -723,6 +723,11 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
   }
   if (In(t, {"downstairs", "downstair"})) {
     item.ref = RefType::kGround;
+    return 1;
+  }
+  // "Upper: three bedrooms", "Lower: kitchen" (spec headings).
+  if (In(t, {"upper", "lower"}) && i + 1 < tokens_.size() && tokens_[i + 1].punct == ':') {
+    item.ref = t.word == "upper" ? RefType::kUpper : RefType::kGround;
     return 1;
   }
   if (auto o = Ordinal(t); o && floor_at(i + 1)) {

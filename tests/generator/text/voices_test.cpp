@@ -24,7 +24,6 @@ namespace {
 const std::map<std::string, std::string>& KnownGaps() {
   static const std::map<std::string, std::string> gaps = {
       {"voices-012", "'1st - ... 2nd -' without 'floor' does not pin floors"},
-      {"voices-017", "'ranch style' does not imply one floor"},
       {"voices-037", "a correction ('scrap what I said') is not read as replacing the earlier floors"},
       {"voices-038", "'the first floor is for living:' (a heading) not read as a scope"},
       {"voices-039", "'its own bathroom ... and a shower room': the own bathroom is not counted"},
@@ -39,7 +38,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-083", "'2BR/1BA' shorthand"},
       {"voices-091", "'the second floor is bedrooms, three of them'"},
       {"voices-097", "'half bath' and a 'Jack and Jill bathroom' not both counted"},
-      {"voices-105", "'Upper:' is not read as a floor heading"},
       {"voices-115", "'Bathrooms: 2 (one downstairs, one upstairs)' not split over the floors"},
       {"voices-124", "'Bathrooms: 2, one on each floor' read as two on each floor"},
       {"voices-134", "'two bedrooms that each have their own bathroom'"},
