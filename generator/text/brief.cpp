@@ -1121,6 +1121,21 @@ void Parser::Quantify(Mention& m) {
     }
     return false;
   };
+  // "3 bedrooms, 2 of them en-suite", "2 of which have en-suites": that many of the rooms named before get
+  // one each.
+  if (t && !determined) {
+    int j = k;
+    if (at(j) && In(*at(j), {"have", "has", "are", "is", "with", "get", "come"})) --j;
+    if (at(j) && at(j - 1) && at(j - 2) && In(*at(j), {"them", "which", "these", "those"}) && at(j - 1)->word == "of" &&
+        Cardinal(*at(j - 2))) {
+      m.counting = true;
+      m.min = m.max = *Cardinal(*at(j - 2));
+      m.first = j - 2;
+      Consume(j - 2, k);
+      determined = true;
+      t = nullptr;
+    }
+  }
   if (t) {
     if (IsNegation(*t)) {
       m.counting = true;
@@ -1926,6 +1941,17 @@ void Parser::Finish(Brief& brief) {
     acc.min = 1;
     acc.max = -1;
     acc.source = source;
+  }
+  // Rooms of a kind counted with no floor and others counted on a floor are different rooms ("a WC under the
+  // stairs and a family bathroom upstairs", "two en-suites ... Ground floor: a WC"): the total is their sum.
+  for (auto& [key, acc] : counts) {
+    if (key.second != kAnyLevel || !acc.counting || acc.min <= 0) continue;
+    for (const auto& [other, placed] : counts) {
+      if (other.first != key.first || other.second == kAnyLevel || !placed.counting || placed.min <= 0) continue;
+      const int levels = other.second == kEachLevel ? std::max(1, floors_.value_or(floors_min_)) : 1;
+      acc.min += placed.min * levels;
+      if (acc.max >= 0) acc.max = placed.max < 0 ? -1 : acc.max + placed.max * levels;
+    }
   }
   for (const auto& [key, acc] : counts) {
     BriefRooms r;
