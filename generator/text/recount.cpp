@@ -281,6 +281,13 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         from = k > 1 && t[k - 2] == "a" ? k - 2 : k - 1;
         break;
       }
+      // "3 bedrooms, 2 of them en-suite", "2 of which have en-suites": that many.
+      if (OneOf(w, {"them", "which"}) && k >= 2 && t[k - 1] == "of" && NumberOf(t[k - 2])) {
+        count = NumberOf(t[k - 2]);
+        from = k - 2;
+        break;
+      }
+      if (OneOf(w, {"have", "has", "are"})) continue;
       // "both bathrooms" with none counted yet: two.
       if (w == "both" && IsPlural(*noun)) {
         count = 2;

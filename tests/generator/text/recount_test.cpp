@@ -56,6 +56,7 @@ TEST_CASE("The recount leaves out negations and references", "[generator][recoun
   CHECK(Counts("two bedrooms, including a master bedroom, and a bathroom and another one upstairs", 2) ==
         M{{"bedroom", 2}, {"bathroom", 2}});
   CHECK(Counts("no bathroom upstairs; put both bathrooms on the ground floor", 2) == M{{"bathroom", 2}});
+  CHECK(Counts("3 bedrooms, 2 of which have en-suites", 2) == M{{"bedroom", 3}, {"bathroom", 2}});
   // A kind named in two sentences counts as the most one of them reads, not the sum.
   CHECK(Counts("three bedrooms. The largest bedroom faces south; a bedroom upstairs has a view.", 2) == M{{"bedroom", 3}});
 }
