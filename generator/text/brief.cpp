@@ -1523,9 +1523,25 @@ void Parser::Spread() {
       preceding = true;
     // "... with a bathroom each".
     if (const Token* after = word(m.last + 1); after && after->sentence == sentence && after->word == "each") preceding = true;
+    // "each with a walk-in wardrobe and its own shower room": an "each with" earlier in the clause, across
+    // what else each gets (no room between).
+    if (!preceding)
+      for (int j = m.first - 1, steps = 0; j > 0 && steps < 10 && tokens_[j].sentence == sentence; --j, ++steps) {
+        if (tokens_[j].item >= 0 && items_[tokens_[j].item].kind == ItemKind::kRoom) break;
+        if (tokens_[j].punct == ';' || tokens_[j].punct == '.' || tokens_[j].punct == ':') break;
+        if (tokens_[j].word == "with" && In(tokens_[j - 1], {"each", "all", "both"})) {
+          preceding = true;
+          break;
+        }
+      }
     // "every bedroom has (its own) a balcony": the mention before the verb says "every".
     for (int j = m.first - 1, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
       if (In(tokens_[j], {"has", "have", "gets", "get"})) {
+        // "two bedrooms that each have their own bathroom".
+        if (j > 0 && In(tokens_[j - 1], {"each", "all", "both"})) {
+          preceding = true;
+          break;
+        }
         const int before = j - 1;
         if (before >= 0 && tokens_[before].item >= 0 && items_[tokens_[before].item].kind == ItemKind::kRoom) {
           const Mention& owner = mentions_[MentionOfItem(tokens_[before].item)];
