@@ -1193,7 +1193,7 @@ void Parser::Quantify(Mention& m) {
       determined = true;
     } else if (t->word == "both" && m.plural &&
                std::none_of(mentions_.begin(), mentions_.end(),
-                            [&](const Mention& o) { return o.category == item.category; })) {
+                            [&](const Mention& o) { return o.category == item.category && !(o.counting && o.max == 0); })) {
       // "both bathrooms on the ground floor" with no bathrooms named before: two of them.
       m.counting = true;
       m.min = m.max = 2;

@@ -47,7 +47,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-179", "'2 living rooms, the first downstairs, the second upstairs'"},
       {"voices-182", "'another one on the top floor' ('one' for a bathroom)"},
       {"voices-190", "'not a fan of balconies so please leave them out'"},
-      {"voices-205", "'no bathroom upstairs; put both bathrooms on the ground floor'"},
   };
   return gaps;
 }
