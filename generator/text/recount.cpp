@@ -214,6 +214,8 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
   };
   std::optional<Category> last_category;
+  std::map<Category, int> readings;             // how many times a kind was counted
+  std::map<Category, bool> explicit_reading;    // the last of them a plain number of two or more
   for (size_t i = 0; i < t.size(); ++i) {
     if (OneOf(t[i], {".", "!", "?"})) {
       flush();
@@ -300,6 +302,10 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       }
       if (const auto n = NumberOf(w)) {
         if (k > 0 && FloorWord(t[k - 1])) break;  // "level 3 office": the number is the floor's
+        if (k > 0 && OneOf(t[k - 1], {"every", "each", "per"})) {  // "for every two bedrooms": a ratio
+          referred = true;
+          break;
+        }
         count = *n;
         from = k;
         // "..., each with a bathroom": the article belongs to the distribution.
@@ -373,6 +379,9 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       }
     }
     if (n > 0) {
+      ++readings[noun->category];
+      explicit_reading[noun->category] = count && !distributed && !ordinal && !another && n == *count && *count >= 2 &&
+                                         !OneOf(t[from], {"a", "an", "one", "single", "couple", "pair"});
       RoomRecount& r = sentence[noun->category];
       r.category = noun->category;
       const std::string phrase = Join(t, from, to);
@@ -392,23 +401,28 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
   }
   flush();
   std::vector<RoomRecount> out;
-  for (const auto& [category, r] : best)
-    if (r.count > 0) out.push_back(r);
+  for (auto [category, r] : best) {
+    if (r.count <= 0) continue;
+    r.exact = readings[category] == 1 && explicit_reading[category];
+    out.push_back(r);
+  }
   return out;
 }
 
 std::string RecountDisagreement::Message() const {
   const std::string kind(CategoryName(category));
-  return "the text may ask for " + std::to_string(asked) + " " + kind + (asked == 1 ? "" : "s") + " (\"" + phrase +
-         "\"); the layout has " + std::to_string(has);
+  return "the text may ask for " + std::string(exact ? "exactly " : "") + std::to_string(asked) + " " + kind +
+         (asked == 1 ? "" : "s") + " (\"" + phrase + "\"); the layout has " + std::to_string(has);
 }
 
 std::vector<RecountDisagreement> CheckRecount(std::string_view text, const Layout& layout) {
   std::map<Category, int> has;
   for (const Room& r : layout.rooms) ++has[r.category];
   std::vector<RecountDisagreement> out;
-  for (const RoomRecount& r : RecountRooms(text, layout.LevelCount()))
-    if (has[r.category] < r.count) out.push_back({r.category, r.count, has[r.category], r.phrase});
+  for (const RoomRecount& r : RecountRooms(text, layout.LevelCount())) {
+    if (has[r.category] < r.count) out.push_back({r.category, r.count, has[r.category], r.phrase, false});
+    else if (r.exact && has[r.category] > r.count) out.push_back({r.category, r.count, has[r.category], r.phrase, true});
+  }
   return out;
 }
 

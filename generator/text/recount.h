@@ -33,6 +33,9 @@ struct RoomRecount {
   Category category = Category::kRoom;
   int count = 0;       // at least this many rooms of the kind
   std::string phrase;  // the words it was read from ("four bedrooms", "a bathroom on each floor")
+  // The kind is named once in the whole text, with a number of two or more ("four bedrooms") and nothing
+  // that spreads it: exactly this many (a layout with more has misread it too).
+  bool exact = false;
 };
 
 // The counts per room kind (one entry a kind, the largest reading), for a layout of `floors` floors.
@@ -43,11 +46,13 @@ struct RecountDisagreement {
   int asked = 0;  // the recount's reading
   int has = 0;    // rooms of the kind in the layout
   std::string phrase;
+  bool exact = false;  // the layout has more than the text's exact count
   // "the text may ask for 4 bathrooms ("each with an en-suite bathroom"); the layout has 1"
   std::string Message() const;
 };
 
-// The kinds of which the layout has fewer rooms than the recount of `text` reads.
+// The kinds of which the layout has fewer rooms than the recount of `text` reads, or more than a count the
+// text names exactly.
 std::vector<RecountDisagreement> CheckRecount(std::string_view text, const Layout& layout);
 
 }  // namespace villa

@@ -79,6 +79,23 @@ TEST_CASE("A layout with fewer rooms than the recount reads is never met, and th
   CHECK(off[0].asked == 2);
   CHECK(off[0].has == 1);
   CHECK(off[0].Message() == "the text may ask for 2 bathrooms (\"a bathroom on each floor\"); the layout has 1");
+  // A kind named once with a number of two or more is an exact count: a layout with more has misread it too;
+  // named twice, it is not.
+  PlanSummary four = PlanLayout("A two-story house with a kitchen, a living room, four bedrooms and two bathrooms.", options);
+  REQUIRE(four.valid());
+  int bedrooms = 0;
+  for (const Room& r : four.layout->rooms) bedrooms += r.category == Category::kBedroom;
+  REQUIRE(bedrooms == 4);
+  const std::vector<RecountDisagreement> over =
+      CheckRecount("A two-story house with a kitchen, a living room, three bedrooms and two bathrooms.", *four.layout);
+  REQUIRE(over.size() == 1);
+  CHECK(over[0].exact);
+  CHECK(over[0].Message() == "the text may ask for exactly 3 bedrooms (\"three bedrooms\"); the layout has 4");
+  CHECK(CheckRecount("A two-story house with a kitchen, a living room, three bedrooms and two bathrooms. "
+                     "A bedroom upstairs has a balcony.", *four.layout).empty() == false);  // the balcony is missing
+  for (const RecountDisagreement& d : CheckRecount("Three bedrooms. A kitchen, a living room, a bedroom upstairs and "
+                                                   "two bathrooms.", *four.layout))
+    CHECK(d.category != Category::kBedroom);  // bedrooms named twice: at least three, not exactly
   // The plan itself agrees with its own recount: met, and nothing in its count check.
   CHECK(plan.recount.empty());
   CHECK(plan.outcome == PlanOutcome::kMet);
