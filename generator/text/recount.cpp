@@ -246,6 +246,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     }
     if (!noun) continue;
     const size_t end = i + noun->words.size();
+    size_t end_after = end;  // past a count written after the noun
     // Backwards: the quantity within four words, up to a boundary or another noun.
     std::optional<int> count, ordinal;
     bool negated = false, referred = false, distributed = false, another = false;
@@ -346,6 +347,19 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       i = end - 1;
       continue;
     }
+    // "Bathrooms: 2", "bedrooms x3", "bedrooms (3)" (spec sheets and lists): the number after the noun.
+    if (!count && !ordinal && !another && !distributed && end < t.size()) {
+      std::optional<int> after;
+      size_t at = end + 1;
+      if (t[end] == ":" && end + 1 < t.size() && t[end + 1] != "a" && t[end + 1] != "an") after = NumberOf(t[end + 1]);
+      else if (t[end] == "(" && end + 2 < t.size() && t[end + 2] == ")") after = NumberOf(t[end + 1]), at = end + 2;
+      else if (t[end].size() >= 2 && t[end][0] == 'x') after = NumberOf(t[end].substr(1)), at = end;
+      if (after) {
+        count = after;
+        from = i;
+        end_after = at + 1;
+      }
+    }
     int n = 0;
     if (distributed) {
       n = count.value_or(0);
@@ -359,15 +373,18 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       n = 1;  // a bare singular in a list ("kitchen, lounge, 2 bedrooms")
     }
     // Forwards: "on each floor", "per floor", "on both floors", "per bedroom", "for each bedroom".
-    size_t to = end;
+    size_t to = std::max(end, end_after);
     for (size_t k = end; k < t.size() && k < end + 4; ++k) {
       const std::string& w = t[k];
       if (Boundary(w) && w != "with") break;
       if (OneOf(w, {"each", "every", "all", "both", "per"}) && k + 1 < t.size()) {
-        const std::string& next = t[k + 1];
+        // "on both floors", "on both upper floors", "on each of the floors".
+        size_t f = k + 1;
+        while (f < t.size() && f < k + 4 && OneOf(t[f], {"upper", "lower", "other", "of", "the", "two", "three"})) ++f;
+        const std::string& next = f < t.size() ? t[f] : t[k + 1];
         if (FloorWord(next)) {
           n = std::max(n, 1) * (w == "both" ? 2 : std::max(floors, 1));
-          to = k + 2;
+          to = f + 1;
           break;
         }
         if (OneOf(next, {"bedroom", "bedrooms"}) && (w == "per" || w == "each" || w == "every")) {

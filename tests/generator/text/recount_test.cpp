@@ -38,6 +38,8 @@ TEST_CASE("The recount distributes: each with, on each floor, per bedroom, a sec
   CHECK(Counts("A kitchen, a bathroom on each floor, and a second bedroom.", 3) == M{{"kitchen", 1}, {"bathroom", 3}, {"bedroom", 2}});
   CHECK(Counts("three bedrooms and a balcony per bedroom", 2) == M{{"bedroom", 3}, {"balcony", 3}});
   CHECK(Counts("a study on both floors", 2) == M{{"office", 2}});
+  CHECK(Counts("a bathroom on both upper floors", 3) == M{{"bathroom", 2}});
+  CHECK(Counts("Floors: 2. Bedrooms: 3. Bathrooms (2), offices x2", 2) == M{{"bedroom", 3}, {"bathroom", 2}, {"office", 2}});
   CHECK(Counts("a living room and another living room for the kids", 2) == M{{"living-room", 2}});
   // An ordinal of a floor is no count: "a second-floor bedroom" is one bedroom.
   CHECK(Counts("a second-floor bedroom and a third floor office", 3) == M{{"bedroom", 1}, {"office", 1}});
