@@ -994,12 +994,18 @@ int Parser::TrySide(std::size_t i, Item& item) {
 void Parser::MatchAll() {
   // Prescan for the numbering conventions.
   bool ground = false, first = false;
+  bool numbered = false;  // "Floor 1", "level 2"
   for (std::size_t i = 0; i + 1 < tokens_.size(); ++i) {
-    if (tokens_[i].word == "ground" && IsFloorNoun(tokens_[i + 1])) ground = true;
+    // "ground floor", and the heading "Ground: ..." of a spec sheet.
+    if (tokens_[i].word == "ground" && (IsFloorNoun(tokens_[i + 1]) || tokens_[i + 1].punct == ':')) ground = true;
     if (Ordinal(tokens_[i]) == 1 && IsFloorNoun(tokens_[i + 1])) first = true;
     if (IsFloorNoun(tokens_[i]) && (tokens_[i + 1].word == "0" || tokens_[i + 1].word == "zero")) zero_based_numbers_ = true;
+    if (IsFloorNoun(tokens_[i]) && Cardinal(tokens_[i + 1]) && *Cardinal(tokens_[i + 1]) >= 1) numbered = true;
   }
   british_ = ground && first;
+  // A text that names its ground floor counts numbered floors up from it: "Ground: ... Floor 1: ..." puts
+  // floor 1 above the ground floor.
+  if (ground && numbered) zero_based_numbers_ = true;
 
   for (std::size_t i = 0; i < tokens_.size();) {
     if (tokens_[i].punct) {
