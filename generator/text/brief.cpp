@@ -567,6 +567,7 @@ class Parser {
   // interpretation
   void Quantify(Mention& m);
   void PlaceLevels();
+  int FloorsBefore(int at, int sentence) const;
   void Spread();
   void Distribute();
   std::vector<int> RefLevels(int ref_item) const;
@@ -1149,6 +1150,10 @@ void Parser::Quantify(Mention& m) {
       tokens_[k].consumed = true;
       m.first = k;
       determined = true;
+    } else if (auto n = Cardinal(*t); n && at(k - 1) && at(k - 2) && at(k - 1)->word == "the" && at(k - 2)->word == "of") {
+      determined = true;  // "each of the three bedrooms": the three counted elsewhere
+      m.definite = true;
+      m.first = k - 2;
     } else if (auto n = Cardinal(*t)) {
       m.counting = true;
       m.min = m.max = *n;
@@ -1513,6 +1518,13 @@ std::vector<int> Parser::MentionLevels(const Mention& m) const {
 // its own shower room", "every bedroom has a balcony" and "a balcony for every bedroom". The rooms it is
 // spread over are the bedrooms (and children's rooms) counted right before it in the sentence, or, after
 // "every bedroom", all the bedrooms the text counts.
+// The floors counted right before token `at` in its sentence, no room between ("Three storeys, each ..."); 0 if none.
+int Parser::FloorsBefore(int at, int sentence) const {
+  for (int j = at - 1, steps = 0; j >= 0 && steps < 8 && tokens_[j].sentence == sentence; --j, ++steps)
+    if (tokens_[j].item >= 0) return items_[tokens_[j].item].kind == ItemKind::kFloorCount ? items_[tokens_[j].item].floors : 0;
+  return 0;
+}
+
 void Parser::Spread() {
   auto word = [&](int j) -> const Token* { return j >= 0 && j < static_cast<int>(tokens_.size()) ? &tokens_[j] : nullptr; };
   auto sleeping = [](Category c) { return c == Category::kBedroom || c == Category::kChildrenRoom; };
@@ -1523,10 +1535,17 @@ void Parser::Spread() {
     const int sentence = tokens_[m.first].sentence;
     bool preceding = false;             // over the bedrooms counted just before
     std::optional<Category> all_of;     // over every room of a kind the text counts
+    // The "each" of a distribution before token j: "each", "all", "both", or "every one of them".
+    auto each_before = [&](int j) {
+      if (j <= 0 || tokens_[j - 1].sentence != sentence) return false;
+      if (In(tokens_[j - 1], {"each", "all", "both"})) return true;
+      return j >= 4 && tokens_[j - 1].word == "them" && tokens_[j - 2].word == "of" && tokens_[j - 3].word == "one" &&
+             In(tokens_[j - 4], {"every", "each"});
+    };
     // "each with (a|its own) ...": "each" right before the "with" of the phrase.
-    if (m.with_before && m.with_token > 0 && In(tokens_[m.with_token - 1], {"each", "all", "both"}) &&
-        tokens_[m.with_token - 1].sentence == sentence)
-      preceding = true;
+    if (m.with_before && m.with_token > 0 && each_before(m.with_token)) preceding = true;
+    // "2 bedrooms, both en-suite".
+    if (m.category == Category::kBathroom && items_[m.item].ensuite && In(tokens_[m.first], {"both", "each", "all"})) preceding = true;
     // "... with a bathroom each".
     if (const Token* after = word(m.last + 1); after && after->sentence == sentence && after->word == "each") preceding = true;
     // "each with a walk-in wardrobe and its own shower room": an "each with" earlier in the clause, across
@@ -1535,7 +1554,7 @@ void Parser::Spread() {
       for (int j = m.first - 1, steps = 0; j > 0 && steps < 10 && tokens_[j].sentence == sentence; --j, ++steps) {
         if (tokens_[j].item >= 0 && items_[tokens_[j].item].kind == ItemKind::kRoom) break;
         if (tokens_[j].punct == ';' || tokens_[j].punct == '.' || tokens_[j].punct == ':') break;
-        if (tokens_[j].word == "with" && In(tokens_[j - 1], {"each", "all", "both"})) {
+        if (tokens_[j].word == "with" && each_before(j)) {
           preceding = true;
           break;
         }
@@ -1558,9 +1577,14 @@ void Parser::Spread() {
       if (tokens_[j].punct || tokens_[j].item >= 0) break;
     }
     // "a balcony for every bedroom", "one bathroom per bedroom".
+    // "a balcony for each of the three upstairs bedrooms": words between.
     if (const Token* t1 = word(m.last + 1); t1 && t1->sentence == sentence && In(*t1, {"for", "per"})) {
       int j = m.last + 2;
       if (const Token* t2 = word(j); t2 && In(*t2, {"each", "every"})) ++j;
+      for (int steps = 0; steps < 4 && word(j) && (In(*word(j), {"of", "the", "upstairs", "downstairs"}) || Cardinal(*word(j)) ||
+                                                     IsAdjective(*word(j)) || (word(j)->item >= 0 && items_[word(j)->item].kind == ItemKind::kFloorRef));
+           ++steps)
+        ++j;
       if (const Token* t3 = word(j); t3 && t3->item >= 0 && items_[t3->item].kind == ItemKind::kRoom &&
                                        sleeping(items_[t3->item].category))
         all_of = items_[t3->item].category;
@@ -1577,6 +1601,9 @@ void Parser::Spread() {
     if (all_of) {
       for (std::size_t k = 0; k < mentions_.size(); ++k)
         if (k != mi && mentions_[k].category == *all_of && mentions_[k].counting && mentions_[k].max != 0) over += mentions_[k].min;
+    } else if (const int floors = preceding ? FloorsBefore(m.first, sentence) : 0;
+               floors > 1 && !(mi > 0 && sleeping(mentions_[mi - 1].category) && tokens_[mentions_[mi - 1].first].sentence == sentence)) {
+      over = floors;  // "Three storeys, each with its own bathroom"
     } else if (preceding) {
       // The bedrooms of the list right before it in the sentence ("a master bedroom and a guest bedroom, each ...").
       for (int k = static_cast<int>(mi) - 1; k >= 0; --k) {

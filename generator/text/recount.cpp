@@ -303,7 +303,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       }
       if (const auto n = NumberOf(w)) {
         if (k > 0 && FloorWord(t[k - 1])) break;  // "level 3 office": the number is the floor's
-        if (k > 0 && OneOf(t[k - 1], {"every", "each", "per"})) {  // "for every two bedrooms": a ratio
+        if (k > 0 && OneOf(t[k - 1], {"every", "each", "per", "the"})) {  // "for every two bedrooms": a ratio; "the three bedrooms": named before
           referred = true;
           break;
         }
