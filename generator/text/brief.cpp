@@ -152,7 +152,7 @@ std::vector<Token> Tokenise(std::string_view text) {
     pending_hyphen = false;
     const bool ends_sentence = c == '.' || c == '!' || c == '?' || c == ';' || c == '\n';
     if (ends_sentence || c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' ||
-        c == '-' || c == '*') {
+        c == '-' || c == '*' || c == '=') {
       Token t;
       t.begin = i;
       t.end = i + 1;
@@ -726,9 +726,9 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kGround;
     return 1;
   }
-  // "Upper: three bedrooms", "Lower: kitchen" (spec headings).
-  if (In(t, {"upper", "lower"}) && i + 1 < tokens_.size() && tokens_[i + 1].punct == ':') {
-    item.ref = t.word == "upper" ? RefType::kUpper : RefType::kGround;
+  // "Upper: three bedrooms", "Lower: kitchen", "Down: ... Up: ...", "upper = ..." (spec headings and notes).
+  if (In(t, {"upper", "lower", "up", "down"}) && i + 1 < tokens_.size() && (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '=')) {
+    item.ref = In(t, {"upper", "up"}) ? RefType::kUpper : RefType::kGround;
     return 1;
   }
   if (auto o = Ordinal(t); o && floor_at(i + 1)) {
