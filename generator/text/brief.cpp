@@ -773,6 +773,15 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kEach;
     return 3;
   }
+  // "Three floors with a bathroom on each one": "on each one" after the floors were named.
+  if (In(t, {"each", "every"}) && i > 0 && tokens_[i - 1].word == "on" && i + 1 < tokens_.size() && tokens_[i + 1].word == "one" &&
+      (i + 2 >= tokens_.size() || tokens_[i + 2].punct || In(tokens_[i + 2], {"and", "too", "as"}))) {
+    for (std::size_t k = 0; k < i; ++k)
+      if (IsFloorNoun(tokens_[k]) && tokens_[k].sentence == t.sentence) {
+        item.ref = RefType::kEach;
+        return 2;
+      }
+  }
   if (In(t, {"this", "that", "same"}) && floor_at(i + 1)) {
     item.ref = RefType::kSame;
     return 2;

@@ -382,9 +382,12 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         size_t f = k + 1;
         while (f < t.size() && f < k + 4 && OneOf(t[f], {"upper", "lower", "other", "of", "the", "two", "three"})) ++f;
         const std::string& next = f < t.size() ? t[f] : t[k + 1];
-        if (FloorWord(next)) {
+        // "on each one", after the floors were named ("Three floors with a bathroom on each one").
+        const bool each_one = OneOf(w, {"each", "every"}) && t[k + 1] == "one" && k > 0 && t[k - 1] == "on" &&
+                              std::any_of(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(i), [](const std::string& x) { return FloorWord(x); });
+        if (FloorWord(next) || each_one) {
           n = std::max(n, 1) * (w == "both" ? 2 : std::max(floors, 1));
-          to = f + 1;
+          to = each_one ? k + 2 : f + 1;
           break;
         }
         if (OneOf(next, {"bedroom", "bedrooms"}) && (w == "per" || w == "each" || w == "every")) {

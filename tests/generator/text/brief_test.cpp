@@ -174,6 +174,50 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
   }
 }
 
+TEST_CASE("issue 32: one room for each of others, sums across floors, negations that run on, spec headings") {
+  SECTION("each with, a bathroom each, every bedroom has, for each of, both en-suite, each storey") {
+    CHECK(Exact(ParseBrief("Four bedrooms upstairs, each with an en-suite bathroom."), Category::kBathroom) == 4);
+    CHECK(Exact(ParseBrief("A house with two bedrooms with a bathroom each."), Category::kBathroom) == 2);
+    CHECK(Exact(ParseBrief("Three bedrooms; every bedroom has a balcony."), Category::kBalcony) == 3);
+    CHECK(Exact(ParseBrief("Three bedrooms upstairs and a balcony for each of the three upstairs bedrooms."),
+                Category::kBalcony) == 3);
+    CHECK(Exact(ParseBrief("A bungalow with 2 bedrooms, both en-suite, plus a guest WC."), Category::kBathroom) == 3);
+    CHECK(Exact(ParseBrief("Three storeys, each with its own bathroom."), Category::kBathroom) == 3);
+    CHECK(Exact(ParseBrief("A bungalow with a kitchen and 3 bedrooms, 2 of them en-suite."), Category::kBathroom) == 2);
+  }
+  SECTION("rooms with no floor and rooms on a floor add up") {
+    Brief brief = ParseBrief("A two-storey house with a WC under the stairs and a family bathroom upstairs.");
+    CHECK(Exact(brief, Category::kBathroom) == 2);
+  }
+  SECTION("a negation runs on over or, nor and 'and the'; after the noun") {
+    Brief brief = ParseBrief("Two bedrooms and a kitchen. We won't need a study or a dining room. Skip the balcony "
+                             "and the office. Living room not needed.");
+    CHECK(Exact(brief, Category::kOffice) == 0);
+    CHECK(Exact(brief, Category::kDiningRoom) == 0);
+    CHECK(Exact(brief, Category::kBalcony) == 0);
+    CHECK(Exact(brief, Category::kLivingRoom) == 0);
+    CHECK(Exact(brief, Category::kBedroom) == 2);
+  }
+  SECTION("spec headings and shorthand") {
+    Brief brief = ParseBrief("Floors: 2. Footprint: L. Ground: kitchen, lounge. Upper: bedrooms x3, bathrooms (2).");
+    REQUIRE(brief.shape.has_value());
+    CHECK(*brief.shape == ShapeClass::kL);
+    CHECK(Exact(brief, Category::kBedroom, 1) == 3);
+    CHECK(Exact(brief, Category::kBathroom, 1) == 2);
+    // A text that names its ground floor counts numbered floors up from it.
+    Brief numbered = ParseBrief("Floors: 3. Ground: kitchen. Floor 1: two bedrooms. Floor 2: an office.");
+    CHECK(Exact(numbered, Category::kBedroom, 1) == 2);
+    CHECK(Exact(numbered, Category::kOffice, 2) == 1);
+    Brief each = ParseBrief("Three floors with a bathroom on each one. Ground floor: a kitchen.");
+    CHECK(Exact(each, Category::kBathroom, kEachLevel) == 1);
+  }
+  SECTION("British words") {
+    CHECK(Exact(ParseBrief("A bungalow with two reception rooms, a kitchen and a box room."), Category::kLivingRoom) == 2);
+    CHECK(Exact(ParseBrief("A bungalow with two reception rooms, a kitchen and a box room."), Category::kBedroom) == 1);
+    CHECK(Exact(ParseBrief("A bungalow with a kitchen, a bedroom and a cloakroom WC."), Category::kBathroom) == 1);
+  }
+}
+
 TEST_CASE("a definite list refers to rooms, an indefinite one counts them") {
   Brief definite = ParseBrief("The ground floor holds the kitchen, dining room and living room.");
   for (Category c : {Category::kKitchen, Category::kDiningRoom, Category::kLivingRoom}) {

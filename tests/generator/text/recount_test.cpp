@@ -39,6 +39,7 @@ TEST_CASE("The recount distributes: each with, on each floor, per bedroom, a sec
   CHECK(Counts("three bedrooms and a balcony per bedroom", 2) == M{{"bedroom", 3}, {"balcony", 3}});
   CHECK(Counts("a study on both floors", 2) == M{{"office", 2}});
   CHECK(Counts("a bathroom on both upper floors", 3) == M{{"bathroom", 2}});
+  CHECK(Counts("Three floors with a bathroom on each one.", 3) == M{{"bathroom", 3}});
   CHECK(Counts("Floors: 2. Bedrooms: 3. Bathrooms (2), offices x2", 2) == M{{"bedroom", 3}, {"bathroom", 2}, {"office", 2}});
   CHECK(Counts("a living room and another living room for the kids", 2) == M{{"living-room", 2}});
   // An ordinal of a floor is no count: "a second-floor bedroom" is one bedroom.
