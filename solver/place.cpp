@@ -398,17 +398,10 @@ int RoomySeats(const Layer& layer, int table, const Candidate& c, double cx, dou
   box.yaw = c.yaw;
   std::vector<Point> counted;
   for (const TableSeat& seat : TableSeats(box, cx, cy, gap, true)) {
-    bool fits = BehindClear(layer, table, table, seat.c, seat.normal, seat.along, cx, cy, kSeatBehind + 0.05);
-    for (double s : {-1.0, 1.0})
-      for (double d : {-1.0, 1.0}) {
-        if (!fits) break;
-        const Point p = geo::Add(geo::Add(seat.c, geo::Scale(seat.along, s * cx)), geo::Scale(seat.normal, d * cy));
-        fits = PointInRing(p, layer.region, 0.0);
-        for (size_t k = 0; k < layer.bodies.size() && fits; ++k) {
-          const Body& q = layer.bodies[k];
-          if (static_cast<int>(k) != table && q.active && !q.covering && LayerBox(q).ContainsPlan(p)) fits = false;
-        }
-      }
+    // The chair's own footprint (the strip from its front to its back) and the clear strip behind it.
+    const Point front = geo::Sub(seat.c, geo::Scale(seat.normal, 2.0 * cy));
+    const bool fits = BehindClear(layer, table, table, front, seat.normal, seat.along, cx, cy, 2.0 * cy) &&
+                      BehindClear(layer, table, table, seat.c, seat.normal, seat.along, cx, cy, kSeatBehind + 0.05);
     if (!fits || std::any_of(counted.begin(), counted.end(), [&](Point q) { return geo::Dist(q, seat.c) < 2.0 * cx; })) continue;
     counted.push_back(seat.c);
   }
@@ -744,7 +737,7 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   const std::string& category = state.objects[b.object].category;
   if ((category == "plate" || category == "glass") && layer.parent >= 0 &&
       OneOf(state.objects[layer.parent].category, {"dining-table", "conference-table"})) {
-    const Point mid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
+    const Point mid = centroid;
     const double half_x = 0.5 * (x1 - x0), half_y = 0.5 * (y1 - y0);
     int seat = 0;
     for (size_t k = 0; k < state.objects.size(); ++k) {

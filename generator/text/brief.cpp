@@ -1239,36 +1239,27 @@ void Parser::Quantify(Mention& m) {
       }
     }
   }
-  // "bedrooms x3", "bedrooms (3)" (list shorthand).
+  // A count after the noun: "Bedrooms: 3", "bathrooms x 2", "bedrooms x3", "bedrooms (3)" (spec sheets and lists).
   int after = item.last + 1;
-  if (!determined && after < static_cast<int>(tokens_.size()) && tokens_[after].sentence == sentence) {
+  const int size = static_cast<int>(tokens_.size());
+  auto trailing = [&]() -> std::optional<std::pair<int, int>> {  // the count and the last token it takes
+    if (determined || after >= size || tokens_[after].sentence != sentence) return std::nullopt;
     const Token& next = tokens_[after];
     if (next.word.size() >= 2 && next.word[0] == 'x' &&
-        std::all_of(next.word.begin() + 1, next.word.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
-      m.counting = true;
-      m.min = m.max = std::stoi(next.word.substr(1));
-      Consume(after, after);
-      m.last = after;
-      determined = true;
-    } else if (next.punct == '(' && after + 2 < static_cast<int>(tokens_.size()) && Cardinal(tokens_[after + 1]) &&
-               tokens_[after + 2].punct == ')') {
-      m.counting = true;
-      m.min = m.max = *Cardinal(tokens_[after + 1]);
-      Consume(after, after + 2);
-      m.last = after + 2;
-      determined = true;
-    }
-  }
-  // "Bedrooms: 3", "bathrooms x 2" (spec style).
-  if (!determined && after + 1 < static_cast<int>(tokens_.size()) &&
-      (tokens_[after].punct == ':' || tokens_[after].word == "x" || tokens_[after].punct == '*') &&
-      Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
-      !(after + 2 < static_cast<int>(tokens_.size()) && IsFloorNoun(tokens_[after + 2]))) {
-    int n = *Cardinal(tokens_[after + 1]);
+        std::all_of(next.word.begin() + 1, next.word.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      return std::pair{std::stoi(next.word.substr(1)), after};
+    if (next.punct == '(' && after + 2 < size && Cardinal(tokens_[after + 1]) && tokens_[after + 2].punct == ')')
+      return std::pair{*Cardinal(tokens_[after + 1]), after + 2};
+    if ((next.punct == ':' || next.word == "x" || next.punct == '*') && after + 1 < size && Cardinal(tokens_[after + 1]) &&
+        tokens_[after + 1].sentence == sentence && !(after + 2 < size && IsFloorNoun(tokens_[after + 2])))
+      return std::pair{*Cardinal(tokens_[after + 1]), after + 1};
+    return std::nullopt;
+  };
+  if (const auto count = trailing()) {
     m.counting = true;
-    m.min = m.max = n;
-    Consume(after, after + 1);
-    m.last = after + 1;
+    m.min = m.max = count->first;
+    Consume(after, count->second);
+    m.last = count->second;
     determined = true;
   }
   // "the kitchen, dining room and living room": a bare noun continuing a definite list is definite too.
@@ -1522,11 +1513,6 @@ std::vector<int> Parser::MentionLevels(const Mention& m) const {
   return levels;
 }
 
-// One room for each of others (issue 32): "four bedrooms, each with an en-suite bathroom" is four
-// bathrooms, not one; so are "two bedrooms with a bathroom each", "a master and a guest bedroom, each with
-// its own shower room", "every bedroom has a balcony" and "a balcony for every bedroom". The rooms it is
-// spread over are the bedrooms (and children's rooms) counted right before it in the sentence, or, after
-// "every bedroom", all the bedrooms the text counts.
 // The floors counted right before token `at` in its sentence, no room between ("Three storeys, each ..."); 0 if none.
 int Parser::FloorsBefore(int at, int sentence) const {
   for (int j = at - 1, steps = 0; j >= 0 && steps < 8 && tokens_[j].sentence == sentence; --j, ++steps)
@@ -1534,6 +1520,12 @@ int Parser::FloorsBefore(int at, int sentence) const {
   return 0;
 }
 
+// One room for each of others (issue 32): "four bedrooms, each with an en-suite bathroom" is four
+// bathrooms, not one; so are "two bedrooms with a bathroom each", "a master and a guest bedroom, each with
+// its own shower room", "every bedroom has a balcony", "a balcony for every bedroom" and "three storeys,
+// each with its own bathroom". The rooms it is spread over are the bedrooms (and children's rooms) counted
+// right before it in the sentence, the floors counted right before it, or, after "every bedroom", all the
+// bedrooms the text counts.
 void Parser::Spread() {
   auto word = [&](int j) -> const Token* { return j >= 0 && j < static_cast<int>(tokens_.size()) ? &tokens_[j] : nullptr; };
   auto sleeping = [](Category c) { return c == Category::kBedroom || c == Category::kChildrenRoom; };
@@ -1626,10 +1618,10 @@ void Parser::Spread() {
       }
     }
     if (over < 2) continue;  // one bedroom with its bathroom needs no spreading
+    m.min = m.max = over * std::max(1, m.min);  // "two bathrooms each" spreads two
     m.spread = true;
     m.counting = true;
     m.definite = false;
-    m.min = m.max = over * std::max(1, m.counting && m.min > 0 ? m.min : 1);
   }
 }
 

@@ -3,7 +3,6 @@
 #include "generator/text/recount.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -154,12 +153,6 @@ std::vector<std::string> Tokens(std::string_view text) {
   return out;
 }
 
-struct Mention {
-  Category category;
-  int count = 0;
-  std::string phrase;
-};
-
 std::string Join(const std::vector<std::string>& t, size_t from, size_t to) {
   std::string s;
   for (size_t k = from; k < to && k < t.size(); ++k) {
@@ -173,17 +166,17 @@ std::string Join(const std::vector<std::string>& t, size_t from, size_t to) {
 
 std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
   const std::vector<std::string> t = Tokens(text);
-  std::map<Category, RoomRecount> best;
+  // Within a sentence the rooms of a list add up ("a lounge, a separate sitting room"); across sentences a
+  // kind counts as the most one sentence reads (a later sentence names the rooms again).
+  std::map<Category, RoomRecount> best;      // over the sentences read
+  std::map<Category, RoomRecount> sentence;  // this sentence's counts
+  auto so_far = [&](Category c) {
+    return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
+  };
   std::optional<int> last_count;  // the count of the last counted noun (for "..., each with an en-suite")
   // Token k a verb of having ("with", "has", "gets") after "each" / "all" / "every" within three words
   // ("each with", "each bedroom has"): how many rooms the distribution covers (the bedrooms read so far for
-  // "each bedroom", else the last count read); nothing when it is no such verb.
-  // (`at`: the index of "each".)
-  std::map<Category, RoomRecount> sentence;  // this sentence's counts (see below)
-  const auto bedrooms_so_far = [&] {
-    const Category c = Category::kBedroom;
-    return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
-  };
+  // "each bedroom", else the last count read); nothing when it is no such verb. `at`: the index of "each".
   const auto EachAt = [&](size_t k, size_t* at) -> std::optional<int> {
     if (!OneOf(t[k], {"with", "has", "have", "having", "gets", "get", "includes", "include"})) return std::nullopt;
     for (size_t j = k, steps = 0; j > 0 && steps < 3; ++steps) {
@@ -191,7 +184,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       if (OneOf(t[j], {".", ";", ":"})) break;
       if (!OneOf(t[j], {"each", "all", "every"})) continue;
       *at = j;
-      if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"})) return bedrooms_so_far();
+      if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"})) return so_far(Category::kBedroom);
       return last_count.value_or(0);
     }
     return std::nullopt;
@@ -204,14 +197,9 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       r.phrase = phrase;
     }
   };
-  // Within a sentence the rooms of a list add up ("a lounge, a separate sitting room"); across sentences a
-  // kind counts as the most one sentence reads (a later sentence names the rooms again).
   auto flush = [&] {
     for (const auto& [c, r] : sentence) note(c, r.count, r.phrase);
     sentence.clear();
-  };
-  auto so_far = [&](Category c) {
-    return std::max(best.count(c) ? best[c].count : 0, sentence.count(c) ? sentence[c].count : 0);
   };
   std::optional<Category> last_category;
   std::map<Category, int> readings;             // how many times a kind was counted
