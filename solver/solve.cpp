@@ -656,6 +656,36 @@ struct RoomSolver::Impl {
     return "";
   }
 
+  // Place settings follow the chairs (issue 27): a dining or meeting table keeps as many plates, glasses,
+  // laptops and cups of each kind as it has chairs; the surplus, farthest from any chair first, is left out
+  // (the planner laid one per seat it planned, and chairs that could not be pulled out have gone).
+  bool DropUnseatedSettings() {
+    std::vector<std::string> surplus;
+    for (size_t t = 0; t < state.objects.size(); ++t) {
+      const std::string& table = state.objects[t].category;
+      if (table != "dining-table" && table != "conference-table") continue;
+      std::vector<Point> chairs;
+      for (size_t k = 0; k < state.objects.size(); ++k) {
+        const Membership m = GroupMembership(state, static_cast<int>(k));
+        if (m.role == GroupRole::kTableSeat && m.hub == static_cast<int>(t)) chairs.push_back(state.WorldBox(static_cast<int>(k)).c);
+      }
+      for (std::string_view kind : {"plate", "glass", "laptop", "cup"}) {
+        std::vector<std::pair<double, std::string>> settings;  // distance to the nearest chair, id
+        for (int c : state.children[t]) {
+          if (state.objects[c].category != kind || IsProtected(state.objects[c].priority)) continue;
+          double nearest = 1e9;
+          for (Point p : chairs) nearest = std::min(nearest, geo::Dist(p, state.WorldBox(c).c));
+          settings.push_back({nearest, state.objects[c].id});
+        }
+        if (settings.size() <= chairs.size()) continue;
+        std::sort(settings.begin(), settings.end());
+        for (size_t k = chairs.size(); k < settings.size(); ++k) surplus.push_back(settings[k].second);
+      }
+    }
+    for (const std::string& id : surplus) TakeRemoval(id, "a place setting with no chair at its table: left out");
+    return !surplus.empty();
+  }
+
   // How many of the room's group members break their group's rules now; with `seats`, a dining or meeting
   // chair without its 0.75 m behind it counts too (a table moved for a relation must not cram its chairs).
   int GroupTrouble(bool seats = false) const {
@@ -1528,6 +1558,7 @@ struct RoomSolver::Impl {
       TakeRemoval(id, "no seat at its table with 0.75 m behind it to pull it out: left out");
       changed = true;
     }
+    changed = DropUnseatedSettings() || changed;
     // The other members out of their group's rules (a TV stand off the sofa's axis, a nightstand at the
     // bed's foot): with `moves`, to their best free place by the hub when it holds them (for a TV stand,
     // else the sofa with its group to its best free place); else an optional one is left out.

@@ -255,6 +255,35 @@ TEST_CASE("Place settings lie before the chairs at their table: each plate on a 
   CHECK(used.size() == 2);  // one setting a chair
 }
 
+TEST_CASE("The tidy stage leaves out the place settings of seats with no chair: a table keeps one plate a chair",
+          "[solver][groups]") {
+  // Four plates planned for four seats, two chairs: the two plates farthest from a chair go.
+  RoomProblem room = Rectangle(4.0, 4.0);
+  room.objects.push_back(TableObject("dining-table-0", 1.6, 0.9, 0.75));
+  AddTableSeats(room, "dining-table-0", 2, 0.45, 0.5, 0.85);
+  for (int k = 0; k < 4; ++k) {
+    ProblemObject plate = SmallObject("plate-" + std::to_string(k), 0.24, 0.24, 0.02, "dining-table-0", Relation::kOnTop);
+    plate.category = "plate";
+    room.objects.push_back(plate);
+  }
+  MarkEssentials(Category::kDiningRoom, room);
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  solver.TidyGroups(true);
+  const RoomSolution s = solver.Solution();
+  INFO(s.summary.BriefReport());
+  int chairs = 0, plates = 0;
+  for (size_t k = 0; k < s.objects.size(); ++k) {
+    if (!s.placements[k].placed) continue;
+    chairs += s.objects[k].category == "chair";
+    plates += s.objects[k].category == "plate";
+  }
+  CHECK(chairs == 2);
+  CHECK(plates == chairs);
+  CHECK(s.summary.metrics.Clean());
+}
+
 TEST_CASE("The tidy stage turns furniture left a few degrees off the walls square to them, the coffee table like its sofa",
           "[solver][groups]") {
   RoomProblem room = Rectangle(8.0, 6.0);
