@@ -287,6 +287,7 @@ Result<Action> ActionFromJson(const nlohmann::json& json, const std::string& whe
     a.id = r.String("id");
   }
   if (a.kind == ActionKind::kUpdateScale) a.scale = r.Number("scale", true, 0.1, 10.0);
+  if (a.kind == ActionKind::kUpdatePose && r.Has("scale")) a.scale = r.Number("scale", true, 0.1, 10.0);  // moved and resized
   if (a.kind == ActionKind::kUpdatePose && !r.Has("pose")) r.Fail(r.Path("pose") + ": missing (update_pose needs a pose)");
   if (!error.empty()) return Error{error};
   return a;

@@ -8,6 +8,7 @@
 // JSON (angles in degrees, lengths in metres):
 //   {"action": "update_pose", "id": "living-room_0/0/armchair-0", "pose": {"x": 1.2, "y": 3.4, "yaw": 90},
 //    "reason": "..."}                       pose.z only for on_wall objects; optional "surface"/"cavity"/"wall"
+//                                           (the wall is kept, not the nearest) and "scale" (resized too)
 //   {"action": "update_scale", "id": "...", "scale": 0.9}
 //   {"action": "remove_entity", "id": "..."}
 //   {"action": "add_entity", "object": {"id", "category", "asset", "parent", "relation", "surface", "cavity",
@@ -36,7 +37,7 @@ struct Action {
   std::string id;                       // the object acted on (add_entity: the new object's id)
   std::optional<Pose> pose;             // update_pose (required), add_entity (optional start); world frame
   std::optional<int> surface, cavity, wall;  // update_pose: a new support choice for the object
-  std::optional<double> scale;          // update_scale (required)
+  std::optional<double> scale;          // update_scale (required); update_pose (optional: moved and resized at once)
   std::optional<ProblemObject> object;  // add_entity: the new object, its asset already resolved
   std::vector<SemanticEdge> edges;      // add_entity: the new object's semantic edges
   std::string reason;                   // why: the agent's rule or the critic's words

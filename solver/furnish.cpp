@@ -267,12 +267,12 @@ Result<ReachFigures> CheckReachability(const Layout& layout, const BuildingMesh&
     if (!solver.Solution().summary.metrics.Clean()) solver.RunAgent();
   }
   // Issue 27: two steps on every room after the feedback, each kept where one more reachability check loses
-  // no room or zone a person reached and leaves no new zone unreachable; when the villa's step loses one,
+  // no room a person reached and leaves no zone unreachable that was not; when the villa's step loses one,
   // room by room (a room whose step loses one goes back, and `fallback` runs there).
   ReachReport last = loop->last;
+  // (A zone that went with an object the step left out is not a zone lost: only unreached ones count.)
   auto worse = [&](const ReachReport& r) {
-    return r.rooms_reachable < last.rooms_reachable || r.zones_reachable < last.zones_reachable ||
-           r.zones - r.zones_reachable > last.zones - last.zones_reachable;
+    return r.rooms_reachable < last.rooms_reachable || r.zones - r.zones_reachable > last.zones - last.zones_reachable;
   };
   auto stepwise = [&](const std::function<bool(RoomSolver&)>& step, const std::function<void(const std::string&, RoomSolver&)>& fallback) {
     std::map<std::string, std::shared_ptr<const RoomSolver::Snapshot>> undo;

@@ -10,6 +10,7 @@
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
 #include "scene/scene.h"
+#include "solver/place.h"
 #include "solver/energy.h"
 #include "solver/free_space.h"
 
@@ -348,6 +349,7 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
   summary.first = *first;
   ReachReport report = *first;
   const double half = options.reach.radius + options.walkway_margin;
+  constexpr int kProtectedTries = 8;  // reachability checks for one protected piece's slots
   // The last resort for a protected piece (essential, or asked for: issue 27) that closes room `target`
   // after every round (the agent never pushes such a piece through a wall or out of its group): moved, with
   // its group, to the nearest slot where a person gets into the room, a reachability check for each of at
@@ -358,7 +360,6 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
     const std::string room = b->second.room;  // (a copy: the checks below rebuild `seen`)
     RoomSolver& solver = *solvers.at(room);
     if (!Protected(solver, id)) return std::nullopt;
-    constexpr int kProtectedTries = 8;
     constexpr double kApart = 0.4;  // m between the slots tried (and from where it stands): nudges do not open a way
     std::vector<Point> tried{seen.at(id).footprint.empty() ? Point{} : Centroid(seen.at(id).footprint)};
     const auto spread = [&](const OrientedBox& box, const std::vector<Ring>&) {
@@ -377,6 +378,106 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
                             "where a person gets into " + target + ", its group along", entered, /*zoneless=*/true);
     if (!moved) return std::nullopt;
     return RoomAction{room, *moved};
+  };
+  // Before the last resort removes a protected piece that closes room `target` (a children's bed across the
+  // only way into the next bedroom while a desk holds the room's far end): slots clear of the blocked way
+  // (`way`, the cells the feedback keeps free), nearest first, each taken where only optional floor pieces
+  // stand in it (they go, with what stands on them; the refill puts back what fits afterwards), at most
+  // eight with a reachability check each; at full size, else at its smallest. The actions taken, none when
+  // no slot lets a person in (the room is then as it was).
+  const auto make_room = [&](const std::string& target, const std::string& id,
+                             const std::vector<std::pair<int, std::vector<Point>>>& way) -> std::vector<ActionResult> {
+    const auto b = seen.find(id);
+    if (b == seen.end() || !solvers.count(b->second.room)) return {};
+    RoomSolver& solver = *solvers.at(b->second.room);
+    const int level = rooms.count(b->second.room) ? rooms.at(b->second.room)->level : 0;
+    std::vector<Point> cells;  // the way's points, 0.1 m apart
+    for (const auto& [l, points] : way)
+      for (size_t k = 0; l == level && k < points.size(); ++k) {
+        cells.push_back(points[k]);
+        if (k + 1 == points.size()) continue;
+        const double length = geo::Dist(points[k], points[k + 1]);
+        for (double t = 0.1; t < length; t += 0.1) cells.push_back(geo::Add(points[k], geo::Scale(geo::Sub(points[k + 1], points[k]), t / length)));
+      }
+    if (cells.empty()) return {};
+    const std::shared_ptr<const RoomSolver::Snapshot> undo = solver.Save();
+    int checks = 0, misfits = 0;
+    std::vector<ActionResult> out;
+    for (int shrunk = 0; shrunk < 2; ++shrunk) {
+      const RoomSolution now = solver.Solution();
+      int i = -1;
+      for (size_t k = 0; k < now.objects.size() && k < now.placements.size(); ++k)
+        if (now.objects[k].id == id && now.placements[k].placed) i = static_cast<int>(k);
+      if (i < 0) break;
+      const double scale = shrunk == 0 ? now.placements[i].pose.scale : now.objects[i].scale_min;
+      if (shrunk == 1 && scale >= now.placements[i].pose.scale - 1e-9) break;
+      ObjectPlacement at = now.placements[i];
+      at.pose.scale = scale;
+      const std::shared_ptr<const RoomSolver::Snapshot> here = solver.Save();
+      for (Slot slot : FloorSlots(solver.Problem(), now.objects[i], at, options.slot_step)) {
+        slot.pose.scale = scale;
+        if (checks >= kProtectedTries || misfits >= options.slot_tries) break;
+        const PlanShape shape = PlanShape::Polygon(StandingBox(now.objects[i], slot.pose).Footprint());
+        if (!std::all_of(cells.begin(), cells.end(), [&](Point p) { return PlanClearance(PlanShape::Disc(p, half), shape) > 0.0; }))
+          continue;
+        // What stands in the slot: optional floor pieces only.
+        std::vector<std::string> in_way;
+        bool kept = false;
+        for (size_t k = 0; k < now.objects.size() && !kept; ++k) {
+          const ProblemObject& o = now.objects[k];
+          if (static_cast<int>(k) == i || o.parent != "floor" || !now.placements[k].placed) continue;
+          if (PlanClearance(PlanShape::Polygon(StandingBox(o, now.placements[k].pose).Footprint()), shape) > 0.05) continue;
+          if (!IsProtected(o.priority)) {
+            if (std::find(in_way.begin(), in_way.end(), o.id) == in_way.end()) in_way.push_back(o.id);
+            continue;
+          }
+          // A desk's own chair is protected to stay at its desk: it goes with an optional desk.
+          bool seat = false;
+          for (const ProblemObject& desk : now.objects)
+            if (desk.category == "desk" && !IsProtected(desk.priority) && IsDeskSeat(now.edges, o.id, desk.id)) {
+              if (std::find(in_way.begin(), in_way.end(), desk.id) == in_way.end()) in_way.push_back(desk.id);
+              seat = true;
+            }
+          kept = !seat;
+        }
+        if (kept) continue;
+        std::vector<ActionResult> taken;
+        for (const std::string& other : in_way) {
+          ActionResult r = Remove(solver, other, "makes room for " + id + " off the way into " + target);
+          if (r.status != ActionStatus::kRefused) taken.push_back(std::move(r));
+        }
+        const std::optional<int> wall = slot.wall >= 0 ? std::optional<int>(slot.wall) : std::nullopt;
+        bool ok = solver.Fits(id, slot.pose, wall);
+        if (!ok) ++misfits;
+        if (ok) {
+          Action a;
+          a.kind = ActionKind::kUpdatePose;
+          a.id = id;
+          a.pose = slot.pose;
+          a.wall = wall;
+          if (shrunk == 1) a.scale = scale;
+          a.reason = "reachability: it closes the way into " + target + "; moved " + Fixed(slot.distance, 2) + " m to a slot off the way" +
+                     (shrunk == 1 ? " at its smallest scale" : "") +
+                     (in_way.empty() ? "" : ", " + std::to_string(in_way.size()) + " optional piece(s) there out");
+          ActionResult r = solver.Apply(a);
+          ok = r.status != ActionStatus::kRefused;
+          if (ok) {
+            ++checks;
+            const auto again = check();
+            const TargetResult* after = again.ok() ? again->Find(target) : nullptr;
+            ok = after && after->reachable;
+          }
+          if (ok) {
+            out.insert(out.end(), taken.begin(), taken.end());
+            out.push_back(std::move(r));
+            return out;
+          }
+        }
+        solver.Restore(*here);
+      }
+    }
+    solver.Restore(*undo);
+    return {};
   };
   std::set<std::string> aside_tried;  // protected blockers tried with move_aside (once each)
   int extra_rounds = 0;               // one more round after a protected blocker moved aside
@@ -516,9 +617,12 @@ Result<FeedbackSummary> FreeBlockedWays(const ReachInput& building, const std::m
             if (!aside_tried.insert(id).second) continue;  // tried in the rounds already
             if (std::optional<RoomAction> a = move_aside(t.name, id)) act(a->room, a->result);
           } else {
-            // No slot lets a person in: the way wins (a room no one can enter serves no one); the room's
-            // functional check reports the piece missing, with this reason.
-            act(room, Remove(solver, id, why + ", and no slot off the way holds it", /*even_protected=*/true));
+            // The room's optional pieces make way for it where that lets a person in; else no slot does: the
+            // way wins (a room no one can enter serves no one); the room's functional check reports the
+            // piece missing, with this reason.
+            const std::vector<ActionResult> made = make_room(t.name, id, t.blocked_way);
+            for (const ActionResult& r : made) act(room, r);
+            if (made.empty()) act(room, Remove(solver, id, why + ", and no slot off the way holds it", /*even_protected=*/true));
           }
         }
         continue;

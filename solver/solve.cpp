@@ -391,13 +391,14 @@ struct RoomSolver::Impl {
 
   // The pose an object may take near `want`: z from its support, against_wall and on_wall objects put on
   // a wall (the one asked for, else the nearest) with their back at the gap and facing the room.
-  Pose Snap(int i, Pose want) {
+  // `own_wall`: the placement's wall is the one asked for (an action's or a slot's), not the nearest.
+  Pose Snap(int i, Pose want, bool own_wall = false) {
     const ProblemObject& o = state.objects[i];
     ObjectPlacement& pl = state.placements[i];
     const double s = want.scale;
     if (o.relation == Relation::kAgainstWall || o.relation == Relation::kOnWall) {
       int w = pl.wall;
-      if (w < 0 || o.wall < 0) {
+      if (w < 0 || (o.wall < 0 && !own_wall)) {
         double best = 1e300;
         for (size_t k = 0; k < problem.walls.size(); ++k) {
           if (o.wall >= 0 && static_cast<int>(k) != o.wall) continue;
@@ -539,6 +540,12 @@ struct RoomSolver::Impl {
       want.y = action.pose->y;
       want.yaw = action.pose->yaw;
       if (!std::isnan(action.pose->z)) want.z = action.pose->z;
+      if (action.scale) {  // moved and resized at once (a slot that holds it only smaller)
+        if (*action.scale < o.scale_min - 1e-9 || *action.scale > o.scale_max + 1e-9)
+          return Refuse(r, "scale " + Fixed(*action.scale, 3) + " is outside the object's range [" + Fixed(o.scale_min, 3) + ", " +
+                               Fixed(o.scale_max, 3) + "]");
+        want.scale = *action.scale;
+      }
       ObjectPlacement& pl = state.placements[i];
       const int p = state.parent[i];
       if (action.surface) {
@@ -570,7 +577,7 @@ struct RoomSolver::Impl {
                                                          action.reason.rfind("relations or interaction zones unmet", 0) == 0);
     const int trouble_before = semantic ? GroupTrouble(true) : 0;
     const Pose from = state.placements[i].pose;
-    state.SetPose(i, Snap(i, want));
+    state.SetPose(i, Snap(i, want, action.wall.has_value()));
     if (!members.empty()) Carry(members, from, state.placements[i].pose);
     std::string how;
     const Pose snapped = state.placements[i].pose;
@@ -694,6 +701,22 @@ struct RoomSolver::Impl {
       const int kk = static_cast<int>(k);
       n += !GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9);
     }
+    // A sofa without the coffee table or the TV stand its plan gave it breaks its group's rule too: putting
+    // one back is never more trouble than its absence (an armchair it brings back into the group with it).
+    auto planned = [&](std::string_view category) {
+      return std::any_of(problem.objects.begin(), problem.objects.end(), [&](const ProblemObject& o) { return o.category == category; });
+    };
+    const bool coffee_planned = planned("coffee-table"), tv_planned = planned("tv-stand");
+    for (size_t k = 0; k < state.objects.size(); ++k) {
+      if (state.objects[k].category != "sofa" || state.parent[k] >= 0) continue;
+      bool coffee = false, tv = false;
+      for (int j : MembersOf(static_cast<int>(k))) {
+        const GroupRole role = GroupMembership(state, j).role;
+        coffee = coffee || role == GroupRole::kCoffeeTable;
+        tv = tv || role == GroupRole::kTvStand;
+      }
+      n += (coffee_planned && !coffee) + (tv_planned && !tv);
+    }
     return n;
   }
 
@@ -708,14 +731,19 @@ struct RoomSolver::Impl {
 
   // Moves `members` rigidly with their hub from pose `from` to pose `to` (plan turn and shift; heights from
   // their support, wall-bound ones onto their wall).
-  void Carry(const std::vector<int>& members, const Pose& from, const Pose& to) {
+  // `armchairs`: false leaves the armchairs where they stand.
+  void Carry(const std::vector<int>& members, const Pose& from, const Pose& to, bool armchairs = true) {
     const double turn = WrapAngle(to.yaw - from.yaw);
     const double c = std::cos(turn), s = std::sin(turn);
     // A member that is a hub itself (the coffee table of the sofa, with its armchairs) takes its own along.
-    std::vector<int> all = members;
+    std::vector<int> all;
+    for (int j : members)
+      if (armchairs || GroupMembership(state, j).role != GroupRole::kArmchair) all.push_back(j);
     for (size_t k = 0; k < all.size(); ++k)
       for (int m : MembersOf(all[k]))
-        if (std::find(all.begin(), all.end(), m) == all.end()) all.push_back(m);
+        if (std::find(all.begin(), all.end(), m) == all.end() &&
+            (armchairs || GroupMembership(state, m).role != GroupRole::kArmchair))
+          all.push_back(m);
     for (int j : all) {
       Pose p = state.placements[j].pose;
       const double dx = p.x - from.x, dy = p.y - from.y;
@@ -1249,7 +1277,9 @@ struct RoomSolver::Impl {
   // (the exact check has the last word) and the groups break fewer rules. True when one held.
   bool AlignWithTv(int sofa, int stand, const std::string& why) {
     const std::string sofa_id = state.objects[sofa].id, stand_id = state.objects[stand].id;
-    for (int which = 0; which < 2; ++which) {
+    // 0: the stand slides; 1: the sofa with all its floor members; 2: the sofa with its coffee and side
+    // tables while the armchairs stay (a short slide carries one into a bookcase).
+    for (int which = 0; which < 3; ++which) {
       const std::string& mover = which == 0 ? stand_id : sofa_id;
       const int k = state.Find(mover), sofa_k = state.Find(sofa_id), stand_k = state.Find(stand_id);
       if (sofa_k < 0 || stand_k < 0) return false;
@@ -1268,7 +1298,7 @@ struct RoomSolver::Impl {
       }
       if (std::abs(shift) < 0.05 || std::abs(shift) > 3.0) continue;
       std::vector<int> carried;
-      if (which == 1)
+      if (which > 0)
         for (int j : MembersOf(k))
           if (state.objects[j].relation != Relation::kAgainstWall) carried.push_back(j);
       const RoomState saved = state;
@@ -1280,7 +1310,7 @@ struct RoomSolver::Impl {
         to.x += frac * shift * along.x;
         to.y += frac * shift * along.y;
         state.SetPose(k, to);
-        Carry(carried, from, to);
+        Carry(carried, from, to, which < 2);
         // An optional side table that no longer fits at the sofa's end is left out; a protected member
         // that does not fit keeps the sofa where it was.
         bool ok = true;
@@ -1353,7 +1383,15 @@ struct RoomSolver::Impl {
         if (k < 0) continue;
         const RoomState saved = state;
         const int trouble = GroupTrouble();
+        // Its best free place with the view kept out of reach (what is lower than the view may stand in it).
+        KeepOut view;
+        view.polygon = strip().Footprint();
+        view.z_min = problem.floor_z + kLow;
+        view.z_max = problem.floor_z + 3.0;
+        view.name = "the view from the sofa to its TV";
+        problem.keep_outs.push_back(view);
         const std::optional<Slot> slot = FindSlot(k);
+        problem.keep_outs.pop_back();
         if (slot) {
           state.placements[k].wall = slot->wall;
           state.SetPose(k, slot->pose);
@@ -1917,7 +1955,12 @@ struct RoomSolver::Impl {
       if (CostAt(i).hard > kFeasible || !GroupProblem(i).empty() || (TableSeat(i) && !SeatHolds(i)) || GroupTrouble(true) > trouble)
         continue;
       const EnergyTerms e = StateEnergy(state);
-      if (e.collision > 0.0 || e.support > 0.0 || e.semantic > saved_energy.semantic + kRefillSemantic || !ExactlyClean()) continue;
+      // The coffee table or TV stand a sofa lacks completes its group by its rules (GroupProblem, above): the
+      // relations it brings along may cost more than a decorative piece may.
+      const GroupRole role = GroupMembership(state, i).role;
+      const bool completes = role == GroupRole::kCoffeeTable || role == GroupRole::kTvStand;
+      if (e.collision > 0.0 || e.support > 0.0 || (!completes && e.semantic > saved_energy.semantic + kRefillSemantic) || !ExactlyClean())
+        continue;
       ActionResult r;
       r.action.kind = ActionKind::kAddEntity;
       r.action.id = original.id;
@@ -2131,7 +2174,7 @@ bool RoomSolver::Fits(const std::string& id, const Pose& pose, std::optional<int
   if (wall) im.state.placements[i].wall = *wall;
   Pose want = pose;
   if (std::isnan(want.z)) want.z = im.state.placements[i].pose.z;
-  im.state.SetPose(i, im.Snap(i, want));
+  im.state.SetPose(i, im.Snap(i, want, wall.has_value()));
   const bool fits = im.CostAt(i).hard <= kFeasible;
   im.state = saved;
   return fits;

@@ -3,6 +3,9 @@
 // object's children along, a new object is placed in a free slot.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <numbers>
+
 #include "fixtures.h"
 #include "solver/solve.h"
 
@@ -103,6 +106,47 @@ TEST_CASE("update_pose into a collision is repaired, an unknown object refused",
   const ActionResult missing = s.solver->Apply(away);
   CHECK(missing.status == ActionStatus::kRefused);
   CHECK(missing.message == "no object \"r/nothing-0\" in the room");
+}
+
+TEST_CASE("update_pose keeps the wall it names, not the nearest, and may resize at once", "[solver]") {
+  // A bed with its head to the east wall of a 6.5 x 3 m room, pushed towards the south wall: its centre
+  // (1.0 m from the east wall) is nearer the south wall (0.6 m). The wall asked for holds: it stays with
+  // its head east, not turned against the south wall. Then it moves and shrinks in one action.
+  RoomProblem room = Rectangle(6.5, 3.0);
+  ProblemObject bed = BoxObject("bed-0", 0.9, 2.0, 0.5);
+  bed.relation = Relation::kAgainstWall;
+  bed.scale_min = 0.8;
+  room.objects.push_back(bed);
+  RoomSolver solver(room, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  int east = -1;
+  for (size_t w = 0; w < room.walls.size(); ++w)
+    if (std::abs(room.walls[w].a.x - 6.5) < 1e-6 && std::abs(room.walls[w].b.x - 6.5) < 1e-6) east = static_cast<int>(w);
+  REQUIRE(east >= 0);
+  Action a;
+  a.kind = ActionKind::kUpdatePose;
+  a.id = "r/bed-0";
+  a.pose = Pose{5.48, 0.6, std::nan(""), -std::numbers::pi / 2.0, 1.0};
+  a.wall = east;
+  const ActionResult r = solver.Apply(a);
+  INFO(r.message);
+  REQUIRE(r.status == ActionStatus::kApplied);
+  RoomSolution s = solver.Solution();
+  REQUIRE(s.objects.size() == 1);
+  CHECK(s.placements[0].wall == east);
+  CHECK(std::abs(WrapAngle(s.placements[0].pose.yaw + std::numbers::pi / 2.0)) < 1e-6);  // its front west
+  CHECK(s.placements[0].pose.x == Approx(6.5 - 1.0 - room.objects[0].wall_gap).margin(1e-6));
+  CHECK(s.placements[0].pose.y == Approx(0.6).margin(1e-6));
+  a.pose = Pose{5.48, 2.0, std::nan(""), -std::numbers::pi / 2.0, 1.0};
+  a.scale = 0.8;
+  REQUIRE(solver.Apply(a).status == ActionStatus::kApplied);
+  s = solver.Solution();
+  CHECK(s.placements[0].pose.scale == Approx(0.8));
+  CHECK(s.placements[0].pose.x == Approx(6.5 - 0.8 - room.objects[0].wall_gap).margin(1e-6));
+  CHECK(s.summary.metrics.Clean());
+  a.scale = 0.5;  // below its range
+  CHECK(solver.Apply(a).status == ActionStatus::kRefused);
 }
 
 TEST_CASE("update_scale outside the range is refused, inside it applied", "[solver]") {

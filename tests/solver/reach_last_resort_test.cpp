@@ -249,5 +249,55 @@ TEST_CASE("an essential piece that closes the only way in moves off the way, or 
   }
 }
 
+TEST_CASE("an essential piece across the only way in takes the slot an optional desk holds, rather than go",
+          "[reach]") {
+  // Issue 27 (a children's bed across the way into the next bedroom while a desk holds the room's far end):
+  // the bed, as wide as the 4.7 x 3.7 m room, stands against its south wall across the door; the only slot
+  // off the way, along the north wall, is a desk's, and the desk's own chair is protected (it stays with its
+  // desk), so no rule of the agent's makes way. The optional desk goes with its chair, the bed moves north;
+  // without that the bed would be removed, as the test above shows for a bed no slot holds.
+  const Built built = BuildFixture("house_one_floor.json");
+  RoomProblem problem = WithFloor({{0.25, 5.06}, {4.94, 5.06}, {4.94, 8.75}, {0.25, 8.75}});
+  problem.room = "bedroom_0/0";
+  ProblemObject bed = BoxObject("bed-0", 4.6, 2.2, 0.5);
+  bed.priority = Priority::kEssential;
+  problem.objects.push_back(bed);
+  RoomSolver solver(problem, {});
+  REQUIRE(solver.Initialise().ok());
+  solver.RunAgent();
+  REQUIRE(Put(solver, "r/bed-0", 2.595, 5.06 + 0.01 + 1.1, 0.0).status != ActionStatus::kRefused);
+  // The desk along the north wall, its chair pulled in before it.
+  auto add = [&](ProblemObject o, double y, double yaw, std::vector<SemanticEdge> edges) {
+    Action a;
+    a.kind = ActionKind::kAddEntity;
+    a.id = o.id;
+    a.object = std::move(o);
+    a.pose = Pose{2.595, y, std::nan(""), yaw, 1.0};
+    a.edges = std::move(edges);
+    return solver.Apply(a).status;
+  };
+  REQUIRE(add(BoxObject("desk-0", 1.6, 0.7, 0.75), 8.75 - 0.01 - 0.35, 0.0, {}) != ActionStatus::kRefused);  // a prior
+  ProblemObject chair = BoxObject("chair-0", 0.5, 0.5, 0.9);
+  chair.priority = Priority::kNamed;  // a desk's own chair, as MarkEssentials marks it
+  SemanticEdge close = DefaultEdge("r/chair-0", SemanticRelation::kNextTo, "r/desk-0");
+  close.max_gap = 0.3;
+  REQUIRE(add(chair, 8.75 - 0.01 - 0.7 - 0.1 - 0.25, std::numbers::pi,
+              {DefaultEdge("r/chair-0", SemanticRelation::kFrontOf, "r/desk-0"), close}) != ActionStatus::kRefused);
+
+  auto summary = FreeBlockedWays(built.input, {{"bedroom_0/0", &solver}}, {});
+  REQUIRE(summary.ok());
+  INFO(summary->BriefReport() << summary->first.BriefReport());
+  const TargetResult* before = summary->first.Find("bedroom_0/0");
+  REQUIRE(before);
+  CHECK_FALSE(before->reachable);
+  CHECK(summary->all_reachable);
+  const RoomSolution s = solver.Solution();
+  CHECK_FALSE(Removed(s, "r/bed-0"));
+  CHECK(Removed(s, "r/desk-0"));
+  CHECK(Removed(s, "r/chair-0"));  // with its desk
+  for (size_t k = 0; k < s.objects.size(); ++k)
+    if (s.objects[k].id == "r/bed-0") CHECK(s.placements[k].pose.y > 6.17 + 0.4);  // north, where the desk stood
+}
+
 }  // namespace
 }  // namespace villa::solver
