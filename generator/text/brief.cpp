@@ -1427,6 +1427,13 @@ void Parser::PlaceLevels() {
             if (!joined) break;
             --from;
           }
+          // The "and" that ends a comma list joins its last room to the list, not to the floor: "a living
+          // room, a kitchen, a dining room and two bedrooms upstairs" puts only the bedrooms upstairs.
+          if (from > 0 && from + 1 < pending.size()) {
+            bool comma = false;
+            for (int k = mentions_[pending[from - 1]].last + 1; k < mentions_[pending[from]].first; ++k) comma = comma || tokens_[k].punct == ',';
+            if (comma) from = pending.size() - 1;
+          }
           for (std::size_t k = from; k < pending.size(); ++k) mentions_[pending[k]].ref = it;
           pending.clear();
           // A trailing phrase at the very start of a list still scopes what follows a colon.

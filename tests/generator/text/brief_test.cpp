@@ -167,6 +167,14 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
     CHECK(Exact(drafts, Category::kOffice, 1) == 1);
     CHECK(Exact(drafts, Category::kBedroom, 2) == 1);
   }
+  SECTION("a trailing floor phrase after a comma list's 'and' places only the last room") {
+    Brief brief = ParseBrief("A two-storey house with a living room, a kitchen, a dining room and two bedrooms upstairs.");
+    CHECK(Exact(brief, Category::kDiningRoom) == 1);  // on no floor in particular
+    CHECK(Exact(brief, Category::kBedroom, 1) == 2);
+    Brief pair = ParseBrief("A two-storey house: a kitchen and a dining room on the ground floor, two bedrooms upstairs.");
+    CHECK(Exact(pair, Category::kKitchen, 0) == 1);
+    CHECK(Exact(pair, Category::kDiningRoom, 0) == 1);
+  }
   SECTION("top floor and level numbers") {
     Brief brief = ParseBrief("A three-storey villa with a meeting room on the top floor and a study on level 2.");
     CHECK(Exact(brief, Category::kMeetingRoom, 2) == 1);
