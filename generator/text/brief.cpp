@@ -131,6 +131,11 @@ std::vector<Token> Tokenise(std::string_view text) {
         t.value = word.size() > 6 ? 1000000 : std::stoi(word);
         // A minus sign right before it, not a hyphen joining words ("-3 bedrooms", not "3-bedroom").
         t.negative = t.begin > 0 && text[t.begin - 1] == '-' && (t.begin == 1 || !IsWordByte(static_cast<unsigned char>(text[t.begin - 2])));
+      } else if (word.size() >= 3 && word.size() <= 4 && word.compare(word.size() - 2, 2, ".5") == 0 &&
+                 std::all_of(word.begin(), word.end() - 2, [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); })) {
+        // "2.5 baths": two and a half bathrooms are three rooms (the half bath is a room too).
+        t.number = true;
+        t.value = std::stoi(word.substr(0, word.size() - 2)) + 1;
       } else if (word.size() >= 3 && std::isdigit(static_cast<unsigned char>(word[0]))) {
         std::string digits, suffix;
         std::size_t k = 0;
@@ -250,6 +255,8 @@ const std::unordered_set<std::string>& FillerWords() {
       "following", "below", "above", "overall", "share", "shares", "shared", "rise", "rises",
       // the building itself and generic nouns
       "villa", "home", "building", "residence", "mansion", "cottage", "dwelling", "property", "family",
+      "detached", "semi", "terraced", "townhouse", "farmhouse", "colonial", "craftsman", "victorian",
+      "georgian", "cabin", "chalet",
       "footprint", "structure", "floorplan", "project", "place", "space", "area", "room", "rooms",
       "design", "style", "version", "option", "setup", "arrangement", "configuration", "program",
       "programme", "brief", "request", "requirement", "requirements", "spec", "specification",
@@ -359,24 +366,25 @@ const std::vector<RoomWord>& RoomLexicon() {
     add(C::kLivingRoom, {"living room", "living", "lounge", "sitting room", "family room", "living area",
                          "living space", "salon", "drawing room", "parlor", "parlour", "great room",
                          "tv room", "media room", "day room", "living hall", "livingroom", "living-room",
-                         "lounge area", "sitting area", "den", "reception room", "snug", "front room"});
+                         "lounge area", "sitting area", "den", "reception room", "snug", "front room", "living rm"});
     add(C::kBedroom, {"bedroom", "master bedroom", "main bedroom", "primary bedroom", "guest bedroom",
                       "guest room", "master suite", "sleeping room", "bed room", "parent bedroom",
                       "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
                       "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area", "box room",
-                      "twin room", "twin bedroom", "primary suite", "guest suite", "double room"});
+                      "twin room", "twin bedroom", "primary suite", "guest suite", "double room", "bedrm", "bdrm",
+                      "br"});
     add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
     add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
                        "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
                        "water closet", "toilet room", "bathroom suite", "shower", "cloakroom", "cloakroom wc",
-                       "cloakroom toilet"});
+                       "cloakroom toilet", "bathrm", "ba", "hall bath", "guest bath", "guest bathroom"});
     add(C::kBathroom, {"en suite bathroom", "ensuite bathroom", "en suite", "ensuite", "en suite shower room",
                        "ensuite shower room", "en suite wc", "ensuite wc", "attached bathroom",
-                       "private bathroom", "own bathroom", "en suite bath", "ensuite bath"},
+                       "private bathroom", "own bathroom", "en suite bath", "ensuite bath", "own bath"},
         true);
     add(C::kDiningRoom, {"dining room", "dining", "dining area", "dining hall", "dining space",
-                         "breakfast room", "eating area", "dining corner", "diningroom", "dining-room"});
+                         "breakfast room", "eating area", "dining corner", "diningroom", "dining-room", "dining rm"});
     add(C::kChildrenRoom, {"children room", "child room", "kid room", "kids room", "kid bedroom",
                            "kids bedroom", "children bedroom", "child bedroom", "nursery", "playroom",
                            "play room", "baby room", "youth room", "teen room", "kiddie room",
@@ -493,6 +501,7 @@ struct Item {
   // kFloorRef
   RefType ref = RefType::kGround;
   int n = 0;
+  bool each = false;  // kUpper: each of those floors on its own ("both upper floors get a balcony")
   // kShape
   std::optional<ShapeClass> shape;  // unset: unsupported
   // kRoom
@@ -744,6 +753,24 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kTop;
     return 2;
   }
+  // "both upper floors", "each of the upper floors", "all the upper two floors": each one on its own.
+  if (In(t, {"both", "each", "every", "all"})) {
+    std::size_t k = i + 1;
+    if (k < tokens_.size() && tokens_[k].word == "of") ++k;
+    if (k < tokens_.size() && tokens_[k].word == "the") ++k;
+    if (k < tokens_.size() && In(tokens_[k], {"upper", "higher"})) {
+      std::size_t f = k + 1;
+      int n = 0;
+      if (f < tokens_.size() && Cardinal(tokens_[f]) && *Cardinal(tokens_[f]) > 0 && !In(tokens_[f], {"single", "double", "triple"}))
+        n = *Cardinal(tokens_[f++]);
+      if (floor_at(f)) {
+        item.ref = RefType::kUpper;
+        item.n = n > 0 ? n : t.word == "both" ? 2 : 0;
+        item.each = true;
+        return static_cast<int>(f - i) + 1;
+      }
+    }
+  }
   // "the upper two floors", "the top 2 levels": the highest n floors together.
   if (In(t, {"upper", "higher", "top", "uppermost", "topmost"}) && i + 1 < tokens_.size() && Cardinal(tokens_[i + 1]) &&
       *Cardinal(tokens_[i + 1]) > 0 && floor_at(i + 2) && !In(tokens_[i + 1], {"single", "double", "triple"})) {
@@ -883,6 +910,9 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   const Token& t = tokens_[i];
   if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
       !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
+    return 0;
+  // "a Victorian-style terrace", "an end terrace": the house, not a balcony.
+  if (t.word == "terrace" && i > 0 && In(tokens_[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"}))
     return 0;
   if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
       i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "inside"}))
@@ -1567,9 +1597,10 @@ void Parser::Spread() {
           break;
         }
       }
-    // "every bedroom has (its own) a balcony": the mention before the verb says "every".
+    // "every bedroom has (its own) a balcony", "every bedroom with its own bathroom": the mention before
+    // the verb says "every".
     for (int j = m.first - 1, steps = 0; j >= 0 && steps < 4 && tokens_[j].sentence == sentence; --j, ++steps) {
-      if (In(tokens_[j], {"has", "have", "gets", "get"})) {
+      if (In(tokens_[j], {"has", "have", "gets", "get", "with"})) {
         // "two bedrooms that each have their own bathroom".
         if (j > 0 && In(tokens_[j - 1], {"each", "all", "both"})) {
           preceding = true;
@@ -1606,9 +1637,11 @@ void Parser::Spread() {
       if (list) chained = mentions_[mi - 1].min;
     }
     int over = chained;
-    if (all_of) {
+    if (all_of) {  // (every bedroom: the children's rooms are bedrooms too)
       for (std::size_t k = 0; k < mentions_.size(); ++k)
-        if (k != mi && mentions_[k].category == *all_of && mentions_[k].counting && mentions_[k].max != 0) over += mentions_[k].min;
+        if (k != mi && (mentions_[k].category == *all_of || (*all_of == Category::kBedroom && mentions_[k].category == Category::kChildrenRoom)) &&
+            mentions_[k].counting && mentions_[k].max != 0)
+          over += mentions_[k].min;
     } else if (const int floors = preceding ? FloorsBefore(m.first, sentence) : 0;
                floors > 1 && !(mi > 0 && sleeping(mentions_[mi - 1].category) && tokens_[mentions_[mi - 1].first].sentence == sentence)) {
       over = floors;  // "Three storeys, each with its own bathroom"
@@ -1896,6 +1929,22 @@ void Parser::Finish(Brief& brief) {
     }
     floors_min_ = std::max(floors_min_, need);
   }
+  // "Bedrooms upstairs, the kitchen downstairs" with no count of floors and no other floor named: a house
+  // of two floors (as people mean it), not two or more.
+  if (!floors_ && floors_min_ <= 2) {
+    int upstairs = -1;
+    bool other = false;
+    for (const Item& item : items_) {
+      if (item.kind == ItemKind::kFloorCount) other = true;
+      if (item.kind != ItemKind::kFloorRef) continue;
+      if (item.ref == RefType::kUpper && item.n == 0 && !item.each && In(tokens_[item.first], {"upstairs", "upstair"})) upstairs = item.first;
+      else if (item.ref != RefType::kGround && item.ref != RefType::kSame) other = true;
+    }
+    if (upstairs >= 0 && !other) {
+      floors_ = 2;
+      floors_source_ = Span(upstairs, upstairs);
+    }
+  }
   if (floors_ && floors_min_ > *floors_)
     conflicts_.push_back("the text names level " + std::to_string(floors_min_ - 1) + " but asks for " +
                          std::to_string(*floors_) + (*floors_ == 1 ? " floor" : " floors"));
@@ -1931,6 +1980,16 @@ void Parser::Finish(Brief& brief) {
     if (lb != kAnyLevel && la == kAnyLevel) mentions_[c.a].partner_levels.push_back(lb);
   }
 
+  // "A four-bed house: four bedrooms, ..." names the bedrooms twice: the "N-bed" of the house is a
+  // reference when the text counts its bedrooms as rooms too.
+  for (Mention& m : mentions_) {
+    const Token& bed = tokens_[m.last];
+    if (m.category != Category::kBedroom || !In(bed, {"bed", "beds"}) || !bed.joined) continue;
+    const bool counted_elsewhere = std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {
+      return &o != &m && o.category == Category::kBedroom && o.counting && o.max != 0 && !In(tokens_[o.last], {"bed", "beds"});
+    });
+    if (counted_elsewhere) m.counting = false;
+  }
   // Rooms: counted mentions add up per (category, level); references only say "at least one there".
   struct Acc {
     int min = 0;
@@ -1965,8 +2024,11 @@ void Parser::Finish(Brief& brief) {
       acc.min += min;
       acc.max = (acc.max < 0 || max < 0) ? -1 : acc.max + max;
     };
-    std::vector<int> each_levels = counting && m.per_level >= 0 ? RefLevels(m.ref) : std::vector<int>{};
-    if (!each_levels.empty()) {
+    const bool each_ref = m.ref >= 0 && items_[m.ref].each && m.per_level < 0;  // "both upper floors get a balcony"
+    std::vector<int> each_levels = counting && (m.per_level >= 0 || each_ref) ? RefLevels(m.ref) : std::vector<int>{};
+    if (each_ref && !each_levels.empty()) {
+      for (int l : each_levels) add_count(l, m.min, m.max);
+    } else if (!each_levels.empty()) {
       const int spread = m.per_level * static_cast<int>(each_levels.size());
       if (spread != m.min || (m.max >= 0 && spread != m.max))
         conflicts_.push_back(std::to_string(m.min) + " " + std::string(CategoryName(m.category)) + " asked as " +

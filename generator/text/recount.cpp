@@ -183,6 +183,7 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       --j;
       if (OneOf(t[j], {".", ";", ":"})) break;
       if (!OneOf(t[j], {"each", "all", "every"})) continue;
+      if (j + 1 < k && FloorWord(t[j + 1])) return std::nullopt;  // "each floor has a bathroom": the floors' (below)
       *at = j;
       if (j + 1 < k && OneOf(t[j + 1], {"bedroom", "bedrooms"})) return so_far(Category::kBedroom);
       return last_count.value_or(0);
@@ -360,6 +361,21 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     } else if (!IsPlural(*noun)) {
       n = 1;  // a bare singular in a list ("kitchen, lounge, 2 bedrooms")
     }
+    // Backwards over a verb: "Both upper floors get a balcony", "each floor has a bathroom".
+    if (n > 0 && !distributed && !ordinal && !another && (!count || *count == 1)) {
+      for (size_t k = i, steps = 0; k > 1 && steps < 4; ++steps) {
+        --k;
+        if (OneOf(t[k], {"get", "gets", "has", "have", "needs", "need", "with"}) && FloorWord(t[k - 1])) {
+          size_t q = k - 1;
+          bool upper = false;
+          while (q > 0 && OneOf(t[q - 1], {"upper", "other", "of", "the", "two", "three"})) upper = upper || t[--q] == "upper";
+          if (q > 0 && OneOf(t[q - 1], {"each", "every", "both", "all"}))
+            n *= t[q - 1] == "both" ? 2 : std::max(upper ? floors - 1 : floors, 1);
+          break;
+        }
+        if (Boundary(t[k]) && t[k] != "with") break;
+      }
+    }
     // Forwards: "on each floor", "per floor", "on both floors", "per bedroom", "for each bedroom".
     size_t to = std::max(end, end_after);
     for (size_t k = end; k < t.size() && k < end + 4; ++k) {
@@ -388,7 +404,15 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     }
     if (n > 0) {
       ++readings[noun->category];
-      explicit_reading[noun->category] = count && !distributed && !ordinal && !another && n == *count && *count >= 2 &&
+      // ("two more bedrooms" adds to one named before: no exact count of its own)
+      const bool more = std::any_of(t.begin() + static_cast<std::ptrdiff_t>(from), t.begin() + static_cast<std::ptrdiff_t>(i),
+                                    [](const std::string& w) { return OneOf(w, {"more", "other", "additional", "extra", "further"}); });
+      // ("two bedrooms and a bathroom on both upper floors": a list spread over floors later in the sentence)
+      bool spread_later = false;  // (no comma between: "Bathrooms: 2, one on each floor" stays exact)
+      for (size_t k = to; k + 1 < t.size() && !OneOf(t[k], {".", "!", "?", ";", ","}) && !spread_later; ++k)
+        if (OneOf(t[k], {"each", "every", "both", "all"}))
+          for (size_t f = k + 1; f < t.size() && f < k + 4 && !spread_later; ++f) spread_later = FloorWord(t[f]);
+      explicit_reading[noun->category] = count && !distributed && !ordinal && !another && !more && !spread_later && n == *count && *count >= 2 &&
                                          !OneOf(t[from], {"a", "an", "one", "single", "couple", "pair"});
       RoomRecount& r = sentence[noun->category];
       r.category = noun->category;

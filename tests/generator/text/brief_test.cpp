@@ -126,10 +126,14 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
                              "and a bathroom.");
     CHECK(Exact(brief, Category::kLivingRoom, 0) == 1);
     CHECK(Exact(brief, Category::kKitchen, 0) == 1);
-    CHECK(brief.floors_min == 2);
-    // "upstairs" without a floor count: the upper floors together.
-    CHECK(Exact(brief, Category::kBedroom, kUpperLevels) == 2);
-    CHECK(Exact(brief, Category::kBathroom, kUpperLevels) == 1);
+    // "upstairs" and the ground floor with no count of floors and no other floor named: two floors, as
+    // people mean it (issue 32's unseen requests), the upstairs rooms on level 1.
+    CHECK(brief.floors == 2);
+    CHECK(Exact(brief, Category::kBedroom, 1) == 2);
+    CHECK(Exact(brief, Category::kBathroom, 1) == 1);
+    // Another floor named: "upstairs" stays the upper floors together.
+    Brief top = ParseBrief("Kitchen on the ground floor, bedrooms upstairs and an office on the top floor.");
+    CHECK(!top.floors);
   }
   SECTION("upstairs in a two-floor house is level 1") {
     Brief brief = ParseBrief("A two-story house: a kitchen and a lounge downstairs, three bedrooms upstairs.");
@@ -192,6 +196,26 @@ TEST_CASE("issue 32: one room for each of others, sums across floors, negations 
     CHECK(Exact(ParseBrief("A bungalow with 2 bedrooms, both en-suite, plus a guest WC."), Category::kBathroom) == 3);
     CHECK(Exact(ParseBrief("Three storeys, each with its own bathroom."), Category::kBathroom) == 3);
     CHECK(Exact(ParseBrief("A bungalow with a kitchen and 3 bedrooms, 2 of them en-suite."), Category::kBathroom) == 2);
+  }
+  SECTION("every bedroom with its own bathroom (the children's rooms too); both upper floors get one each") {
+    Brief every = ParseBrief("Two kids' rooms and one main bedroom, every bedroom with its own bathroom.");
+    CHECK(Exact(every, Category::kBathroom) == 3);
+    Brief both = ParseBrief("Three floors. Both upper floors get a balcony.");
+    CHECK(Exact(both, Category::kBalcony, 1) == 1);
+    CHECK(Exact(both, Category::kBalcony, 2) == 1);
+  }
+  SECTION("estate-agent shorthand: 3 bed 2.5 bath, br, ba, a four-bed house that lists its bedrooms") {
+    Brief agent = ParseBrief("A 3 bed 2.5 bath two-story with a kitchen.");
+    CHECK(Exact(agent, Category::kBedroom) == 3);
+    CHECK(Exact(agent, Category::kBathroom) == 3);  // the half bath is a room
+    Brief abbreviated = ParseBrief("Two floors. Upstairs: 2 br, 2 ba. Ground: kitchen, living rm.");
+    CHECK(Exact(abbreviated, Category::kBedroom, 1) == 2);
+    CHECK(Exact(abbreviated, Category::kBathroom, 1) == 2);
+    CHECK(Exact(abbreviated, Category::kLivingRoom, 0) == 1);
+    Brief four = ParseBrief("Four-bed detached house: four bedrooms, a bathroom and a kitchen.");
+    CHECK(Exact(four, Category::kBedroom) == 4);
+    CHECK(four.unparsed.empty());
+    CHECK(Exact(ParseBrief("A Victorian-style terrace with two bedrooms."), Category::kBalcony) == -100);  // the house
   }
   SECTION("rooms with no floor and rooms on a floor add up") {
     Brief brief = ParseBrief("A two-storey house with a WC under the stairs and a family bathroom upstairs.");

@@ -38,6 +38,9 @@ TEST_CASE("The recount distributes: each with, on each floor, per bedroom, a sec
   CHECK(Counts("A kitchen, a bathroom on each floor, and a second bedroom.", 3) == M{{"kitchen", 1}, {"bathroom", 3}, {"bedroom", 2}});
   CHECK(Counts("three bedrooms and a balcony per bedroom", 2) == M{{"bedroom", 3}, {"balcony", 3}});
   CHECK(Counts("a study on both floors", 2) == M{{"office", 2}});
+  // The floors named before the verb: "both upper floors get a balcony", "each floor has a bathroom".
+  CHECK(Counts("Three floors. Both upper floors get a balcony.", 3) == M{{"balcony", 2}});
+  CHECK(Counts("Two floors; each floor has a bathroom.", 2) == M{{"bathroom", 2}});
   CHECK(Counts("a bathroom on both upper floors", 3) == M{{"bathroom", 2}});
   CHECK(Counts("Three floors with a bathroom on each one.", 3) == M{{"bathroom", 3}});
   CHECK(Counts("Floors: 2. Bedrooms: 3. Bathrooms (2), offices x2", 2) == M{{"bedroom", 3}, {"bathroom", 2}, {"office", 2}});
