@@ -911,9 +911,11 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
       !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
     return 0;
-  // "a Victorian-style terrace", "an end terrace": the house, not a balcony.
-  if (t.word == "terrace" && i > 0 && In(tokens_[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"}))
+  // "a Victorian-style terrace", "an end terrace": the house, not a balcony (understood, asking nothing).
+  if (t.word == "terrace" && i > 0 && In(tokens_[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"})) {
+    tokens_[i].consumed = true;
     return 0;
+  }
   if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
       i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "inside"}))
     return 0;  // "a shower in the bathroom": furniture
@@ -1457,9 +1459,16 @@ void Parser::PlaceLevels() {
             if (!joined) break;
             --from;
           }
+          // "..., all upstairs", "..., all on the ground floor": the whole list.
+          bool all = false;
+          for (int k = item.first - 1; k >= 0 && k >= item.first - 3 && !all; --k) {
+            if (In(tokens_[k], {"all", "both"})) all = true;
+            else if (!In(tokens_[k], {"on", "the", "are", "is", "of", "them"})) break;
+          }
+          if (all) from = 0;
           // The "and" that ends a comma list joins its last room to the list, not to the floor: "a living
           // room, a kitchen, a dining room and two bedrooms upstairs" puts only the bedrooms upstairs.
-          if (from > 0 && from + 1 < pending.size()) {
+          if (!all && from > 0 && from + 1 < pending.size()) {
             bool comma = false;
             for (int k = mentions_[pending[from - 1]].last + 1; k < mentions_[pending[from]].first; ++k) comma = comma || tokens_[k].punct == ',';
             if (comma) from = pending.size() - 1;
@@ -1989,6 +1998,15 @@ void Parser::Finish(Brief& brief) {
       return &o != &m && o.category == Category::kBedroom && o.counting && o.max != 0 && !In(tokens_[o.last], {"bed", "beds"});
     });
     if (counted_elsewhere) m.counting = false;
+  }
+  // "a primary suite (bedroom + bath)": a bedroom in brackets right after a suite is the suite itself.
+  for (std::size_t mi = 1; mi < mentions_.size(); ++mi) {
+    Mention& m = mentions_[mi];
+    const Mention& suite = mentions_[mi - 1];
+    if (m.category != Category::kBedroom || suite.category != Category::kBedroom || !In(tokens_[suite.last], {"suite"})) continue;
+    bool bracketed = false;
+    for (int k = suite.last + 1; k < m.first; ++k) bracketed = bracketed || tokens_[k].punct == '(';
+    if (bracketed && m.first - suite.last <= 2) m.counting = false;
   }
   // Rooms: counted mentions add up per (category, level); references only say "at least one there".
   struct Acc {

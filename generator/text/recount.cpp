@@ -234,6 +234,8 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
       }
     }
     if (!noun) continue;
+    // "a Victorian-style terrace", "an end terrace": the house.
+    if (t[i] == "terrace" && i > 0 && OneOf(t[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"})) continue;
     const size_t end = i + noun->words.size();
     size_t end_after = end;  // past a count written after the noun
     // Backwards: the quantity within four words, up to a boundary or another noun.

@@ -175,6 +175,11 @@ TEST_CASE("rooms per floor: leading scopes, trailing phrases, upstairs, each flo
     Brief brief = ParseBrief("A two-storey house with a living room, a kitchen, a dining room and two bedrooms upstairs.");
     CHECK(Exact(brief, Category::kDiningRoom) == 1);  // on no floor in particular
     CHECK(Exact(brief, Category::kBedroom, 1) == 2);
+    // "..., all upstairs": the whole list.
+    Brief all = ParseBrief("Two kids' rooms, a main bedroom and a bathroom, all upstairs. Downstairs: kitchen.");
+    CHECK(Exact(all, Category::kChildrenRoom, 1) == 2);
+    CHECK(Exact(all, Category::kBedroom, 1) == 1);
+    CHECK(Exact(all, Category::kBathroom, 1) == 1);
     Brief pair = ParseBrief("A two-storey house: a kitchen and a dining room on the ground floor, two bedrooms upstairs.");
     CHECK(Exact(pair, Category::kKitchen, 0) == 1);
     CHECK(Exact(pair, Category::kDiningRoom, 0) == 1);
@@ -216,6 +221,8 @@ TEST_CASE("issue 32: one room for each of others, sums across floors, negations 
     CHECK(Exact(four, Category::kBedroom) == 4);
     CHECK(four.unparsed.empty());
     CHECK(Exact(ParseBrief("A Victorian-style terrace with two bedrooms."), Category::kBalcony) == -100);  // the house
+    // A bedroom in brackets after a suite is the suite.
+    CHECK(Exact(ParseBrief("Living room, kitchen, primary suite (bedroom + bath), and one guest bedroom."), Category::kBedroom) == 2);
   }
   SECTION("rooms with no floor and rooms on a floor add up") {
     Brief brief = ParseBrief("A two-storey house with a WC under the stairs and a family bathroom upstairs.");
