@@ -1301,6 +1301,12 @@ struct RoomSolver::Impl {
       if (which > 0)
         for (int j : MembersOf(k))
           if (state.objects[j].relation != Relation::kAgainstWall) carried.push_back(j);
+      if (which == 2) {  // (no armchair in the group: the same as the try before)
+        bool armchair = false;
+        for (int j : carried)
+          for (int m : MembersOf(j)) armchair = armchair || GroupMembership(state, m).role == GroupRole::kArmchair;
+        if (!armchair) continue;
+      }
       const RoomState saved = state;
       const int trouble = GroupTrouble();
       for (double frac : {1.0, 0.75, 0.5, 0.35, 0.25, 0.15}) {
