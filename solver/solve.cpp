@@ -7,6 +7,7 @@
 #include <deque>
 #include <map>
 #include <numbers>
+#include <iterator>
 #include <set>
 
 #include "mesh/geometry2d.h"
@@ -96,6 +97,7 @@ struct RoomSolver::Impl {
   std::map<std::string, int> tries;   // hard-trouble actions taken per object
   std::deque<Action> queued;           // removals still to make for a protected object (MakeWayAction)
   bool strict_groups = false;          // GroupFitsAt asks each member to keep its group's rules (TidyGroups)
+  bool coffee_planned = false, tv_planned = false;  // the plan gives the room a coffee table, a TV stand (GroupTrouble)
   std::set<std::string> semantic_tried;
   Clock::time_point start;
   bool initialised = false;
@@ -697,26 +699,19 @@ struct RoomSolver::Impl {
   // chair without its 0.75 m behind it counts too (a table moved for a relation must not cram its chairs).
   int GroupTrouble(bool seats = false) const {
     int n = 0;
+    std::set<int> with_coffee, with_tv;  // sofas that have them
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);
       n += !GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9);
+      const Membership m = GroupMembership(state, kk);
+      if (m.role == GroupRole::kCoffeeTable) with_coffee.insert(m.hub);
+      if (m.role == GroupRole::kTvStand) with_tv.insert(m.hub);
     }
     // A sofa without the coffee table or the TV stand its plan gave it breaks its group's rule too: putting
     // one back is never more trouble than its absence (an armchair it brings back into the group with it).
-    auto planned = [&](std::string_view category) {
-      return std::any_of(problem.objects.begin(), problem.objects.end(), [&](const ProblemObject& o) { return o.category == category; });
-    };
-    const bool coffee_planned = planned("coffee-table"), tv_planned = planned("tv-stand");
-    for (size_t k = 0; k < state.objects.size(); ++k) {
-      if (state.objects[k].category != "sofa" || state.parent[k] >= 0) continue;
-      bool coffee = false, tv = false;
-      for (int j : MembersOf(static_cast<int>(k))) {
-        const GroupRole role = GroupMembership(state, j).role;
-        coffee = coffee || role == GroupRole::kCoffeeTable;
-        tv = tv || role == GroupRole::kTvStand;
-      }
-      n += (coffee_planned && !coffee) + (tv_planned && !tv);
-    }
+    for (size_t k = 0; k < state.objects.size(); ++k)
+      if (state.objects[k].category == "sofa" && state.parent[k] < 0)
+        n += (coffee_planned && !with_coffee.count(static_cast<int>(k))) + (tv_planned && !with_tv.count(static_cast<int>(k)));
     return n;
   }
 
@@ -736,14 +731,12 @@ struct RoomSolver::Impl {
     const double turn = WrapAngle(to.yaw - from.yaw);
     const double c = std::cos(turn), s = std::sin(turn);
     // A member that is a hub itself (the coffee table of the sofa, with its armchairs) takes its own along.
+    auto taken = [&](int j) { return armchairs || GroupMembership(state, j).role != GroupRole::kArmchair; };
     std::vector<int> all;
-    for (int j : members)
-      if (armchairs || GroupMembership(state, j).role != GroupRole::kArmchair) all.push_back(j);
+    std::copy_if(members.begin(), members.end(), std::back_inserter(all), taken);
     for (size_t k = 0; k < all.size(); ++k)
       for (int m : MembersOf(all[k]))
-        if (std::find(all.begin(), all.end(), m) == all.end() &&
-            (armchairs || GroupMembership(state, m).role != GroupRole::kArmchair))
-          all.push_back(m);
+        if (std::find(all.begin(), all.end(), m) == all.end() && taken(m)) all.push_back(m);
     for (int j : all) {
       Pose p = state.placements[j].pose;
       const double dx = p.x - from.x, dy = p.y - from.y;
@@ -2146,6 +2139,10 @@ Status RoomSolver::Initialise() {
   if (!im.check_options.IsValid(&message)) return Error{"exact check options: " + message};
   if (Status s = im.problem.Check(); !s.ok()) return s;
   im.state = RoomState::From(im.problem);
+  for (const ProblemObject& o : im.problem.objects) {
+    im.coffee_planned = im.coffee_planned || o.category == "coffee-table";
+    im.tv_planned = im.tv_planned || o.category == "tv-stand";
+  }
   im.checker = std::make_unique<ExactChecker>(im.problem, im.check_options);
   im.SolveLayers();
   im.Check();

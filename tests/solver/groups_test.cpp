@@ -51,6 +51,15 @@ void MoveTo(RoomSolver& solver, const std::string& id, double x, double y, doubl
   REQUIRE(solver.Apply(a).status != ActionStatus::kRefused);
 }
 
+// A sofa (2 x 0.9 m), its coffee table (front_of) and an armchair near the coffee table: a seating group.
+void AddSeatingGroup(RoomProblem& room) {
+  room.objects.push_back(BoxObject("sofa-0", 2.0, 0.9, 0.85));
+  room.objects.push_back(BoxObject("coffee-table-0", 1.0, 0.5, 0.4));
+  room.objects.push_back(BoxObject("armchair-0", 0.8, 0.8, 0.9));
+  room.edges.push_back(DefaultEdge("r/coffee-table-0", SemanticRelation::kFrontOf, "r/sofa-0"));
+  room.edges.push_back(DefaultEdge("r/armchair-0", SemanticRelation::kNear, "r/coffee-table-0"));
+}
+
 // `n` chairs of `w` x `d` x `h` seated at `table` (face_to and next_to within 0.3 m, as the planner relates them).
 void AddTableSeats(RoomProblem& room, const std::string& table, int n, double w, double d, double h) {
   for (int k = 0; k < n; ++k) {
@@ -390,12 +399,8 @@ TEST_CASE("The refill gives a sofa back the coffee table it lost, though its arm
   // relations cost more than a decorative piece's may. A sofa without the coffee table its plan gave it is
   // a broken rule itself.
   RoomProblem room = Rectangle(6.0, 5.0);
-  room.objects.push_back(BoxObject("sofa-0", 2.0, 0.9, 0.85));
-  room.objects.push_back(BoxObject("coffee-table-0", 1.0, 0.5, 0.4));
-  room.objects.push_back(BoxObject("armchair-0", 0.8, 0.8, 0.9));
-  room.edges.push_back(DefaultEdge("r/coffee-table-0", SemanticRelation::kFrontOf, "r/sofa-0"));
+  AddSeatingGroup(room);
   room.edges.push_back(DefaultEdge("r/coffee-table-0", SemanticRelation::kCentered, "r/sofa-0"));
-  room.edges.push_back(DefaultEdge("r/armchair-0", SemanticRelation::kNear, "r/coffee-table-0"));
   room.edges.push_back(DefaultEdge("r/armchair-0", SemanticRelation::kFaceTo, "r/coffee-table-0"));
   RoomSolver solver(room, {});
   REQUIRE(solver.Initialise().ok());
@@ -526,12 +531,8 @@ TEST_CASE("A sofa slid sideways before its TV leaves an armchair behind where ca
   // slide carried the armchair into a bookcase, so nothing moved. The sofa slides with its coffee table;
   // the armchair stays where it stood (and then, in the view, steps out of it).
   RoomProblem room = Rectangle(5.0, 5.0);
-  room.objects.push_back(BoxObject("sofa-0", 2.0, 0.9, 0.85));
-  room.objects.push_back(BoxObject("coffee-table-0", 1.0, 0.5, 0.4));
-  room.objects.push_back(BoxObject("armchair-0", 0.8, 0.8, 0.9));
+  AddSeatingGroup(room);
   for (const char* cabinet : {"cabinet-0", "cabinet-1", "cabinet-2"}) room.objects.push_back(BoxObject(cabinet, 0.7, 0.45, 1.2));
-  room.edges.push_back(DefaultEdge("r/coffee-table-0", SemanticRelation::kFrontOf, "r/sofa-0"));
-  room.edges.push_back(DefaultEdge("r/armchair-0", SemanticRelation::kNear, "r/coffee-table-0"));
   RoomSolver solver(room, {});
   REQUIRE(solver.Initialise().ok());
   solver.RunAgent();
