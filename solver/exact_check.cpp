@@ -336,7 +336,7 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
     const double cs = std::cos(pose.yaw), sn = std::sin(pose.yaw);
     int inside = 0, total = 0;
     const bool on_wall = o.relation == Relation::kOnWall && st.placements[i].wall >= 0;
-    const Ring region = on_wall ? Ring{} : (o.relation == Relation::kHanging ? problem.free_floor : st.SupportRegion(i));
+    const Ring region = on_wall || o.relation == Relation::kHanging ? problem.free_floor : st.SupportRegion(i);
     WallEdge wall;
     if (on_wall) wall = problem.walls[st.placements[i].wall];
     const Point wd = geo::Unit(geo::Sub(wall.b, wall.a));
@@ -347,8 +347,11 @@ ExactMetrics ExactChecker::Check(const RoomState& st, bool measure_clearance) {
       if (on_wall) {
         const Point r = geo::Sub(w, wall.a);
         const double t = geo::Dot(r, wd), depth = geo::Dot(r, geo::Left(wd)), z = pose.z + v.z;
-        in = t >= -1e-4 && t <= wall_length + 1e-4 && depth >= -1e-4 && z >= problem.floor_z - 1e-4 &&
-             z <= problem.floor_z + problem.clear_height + 1e-4;
+        // Along its wall, or anywhere over the free floor: a hood at a reflex corner reaches past the end of
+        // its wall's edge where the region is still the room's (a .glb read alone gives the floor to the
+        // walls' centre lines, whose edges end half a wall short of the free floor's there).
+        in = ((t >= -1e-4 && t <= wall_length + 1e-4 && depth >= -1e-4) || InsideWithTolerance(w, region, 1e-4)) &&
+             z >= problem.floor_z - 1e-4 && z <= problem.floor_z + problem.clear_height + 1e-4;
       } else {
         in = InsideWithTolerance(w, region, 1e-4);
       }

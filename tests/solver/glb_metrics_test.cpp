@@ -63,14 +63,32 @@ struct Box {
   double yaw = 0.0;  // rad
   int mesh = 1;      // 1: a 1 m cube; 2: a 2 x 0.5 x 0.8 bench; 3: a 0.2 m cube
   std::string parent = "floor";
+  std::string relation = "ontop";
 };
+
+// The top of an L-shaped floor slab (0.175 thick): the 4 x 4 m square less its 2 x 2 m north-east quarter.
+gltf::Mesh LFloorMesh() {
+  gltf::Mesh mesh;
+  mesh.name = "floor";
+  gltf::Primitive p;
+  p.material = 0;
+  const double ring[6][2] = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
+  for (const auto& v : ring) {
+    const auto f = File(v[0], v[1], 0.175);
+    p.positions.insert(p.positions.end(), f.begin(), f.end());
+  }
+  // A fan from the south-west corner, counter-clockwise from above.
+  for (uint32_t k = 1; k + 1 < 6; ++k) p.indices.insert(p.indices.end(), {0u, k, k + 1});
+  mesh.primitives.push_back(std::move(p));
+  return mesh;
+}
 
 // A one-room building in villa's contract: villa / level_0 / living-room_0/0 (a 4 x 4 m floor slab whose
 // top is at 0.175) holding one node per box, extras as `villa furnish` writes them.
-void WriteRoom(const fs::path& path, const std::vector<Box>& boxes) {
+void WriteRoom(const fs::path& path, const std::vector<Box>& boxes, bool l_floor = false) {
   gltf::Document doc;
   doc.materials.push_back(gltf::Material{"grey"});
-  doc.meshes.push_back(BoxMesh("floor", {0, 0, 0}, {4, 4, 0.175}));
+  doc.meshes.push_back(l_floor ? LFloorMesh() : BoxMesh("floor", {0, 0, 0}, {4, 4, 0.175}));
   doc.meshes.push_back(BoxMesh("cube", {-0.5, -0.5, 0}, {0.5, 0.5, 1.0}));
   doc.meshes.push_back(BoxMesh("bench", {-1.0, -0.25, 0}, {1.0, 0.25, 0.8}));
   doc.meshes.push_back(BoxMesh("small", {-0.1, -0.1, 0}, {0.1, 0.1, 0.2}));
@@ -85,7 +103,7 @@ void WriteRoom(const fs::path& path, const std::vector<Box>& boxes) {
     n.translation = std::array<double, 3>{t[0], t[1], t[2]};
     n.rotation = std::array<double, 4>{0.0, std::sin(b.yaw / 2), 0.0, std::cos(b.yaw / 2)};  // a turn about +Y: the yaw
     n.extras = {{"name", b.id}, {"id", b.id}, {"category", "box"}, {"asset", "hand-made"}, {"room", "living-room_0/0"},
-                {"level", 0}, {"parent", b.parent}, {"relation", "ontop"}};
+                {"level", 0}, {"parent", b.parent}, {"relation", b.relation}};
     doc.nodes[2].children.push_back(static_cast<int>(doc.nodes.size()));
     doc.nodes.push_back(std::move(n));
   }
@@ -94,8 +112,8 @@ void WriteRoom(const fs::path& path, const std::vector<Box>& boxes) {
 }
 
 // The one room of a file written by WriteRoom, measured from the .glb alone.
-solver::GlbRoomMetrics MeasureRoom(const fs::path& glb, const std::vector<Box>& boxes) {
-  WriteRoom(glb, boxes);
+solver::GlbRoomMetrics MeasureRoom(const fs::path& glb, const std::vector<Box>& boxes, bool l_floor = false) {
+  WriteRoom(glb, boxes, l_floor);
   auto s = solver::MeasureFurnishedGlb(glb);
   INFO((s.ok() ? s->frame : s.error()));
   REQUIRE(s.ok());
@@ -224,4 +242,19 @@ TEST_CASE("Our own furnished.glb scores as its report says, from its layout and 
   REQUIRE_FALSE(wrong.ok());
   CHECK(wrong.error().find("other.json: not the layout ") != std::string::npos);
   CHECK(wrong.error().find("differs from the scene's") != std::string::npos);
+}
+
+TEST_CASE("A .glb read alone: a wall-hung box reaching past its wall's end at an inner corner is in bounds, one through the wall is not",
+          "[solver][glb]") {
+  // The floor of a .glb runs to the walls' centre lines, so at an inner corner a wall's edge ends half a
+  // wall short of the free floor's: make run's range hood was counted out of bounds (OBR 3 % in its kitchen).
+  TempDir dir("glbm_corner");
+  const fs::path glb = dir.path / "room.glb";
+  Box past{"living-room_0/0/hood-0", {2.5, 1.75, 1.2}, 0.0, 2, "wall", "on_wall"};  // x 1.5-3.5 on the edge x 2-4
+  const solver::GlbRoomMetrics in = MeasureRoom(glb, {past}, true);
+  CHECK(in.metrics.objects == 1);
+  CHECK(in.metrics.out_of_bounds == 0);
+  Box through{"living-room_0/0/hood-0", {3.0, 1.9, 1.2}, 0.0, 2, "wall", "on_wall"};  // 0.15 m into the wall
+  const solver::GlbRoomMetrics out = MeasureRoom(glb, {through}, true);
+  CHECK(out.metrics.out_of_bounds == 1);
 }
