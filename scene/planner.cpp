@@ -285,6 +285,23 @@ class Planning {
     // Issue 27: a narrow room gets the narrower pieces of the range, so that its essentials keep their
     // clearances: a bed a free long side of 0.6 m, a table a row of chairs with 0.75 m behind them (chair
     // 0.5 m, a 0.1 m gap) along its free side.
+    // A table the request sizes for its people: one seat every 0.6 m of a long side, one at each end of a
+    // table 1.5 m long or more (SeatCap's template), within the category's range.
+    if (seats_for_ > 0 && (c.name == "dining-table" || c.name == "conference-table")) {
+      const int n = seats_for_;
+      double length = n <= 4 ? 0.6 * ((n + 1) / 2) : std::max(1.5, 0.6 * ((n - 1) / 2));
+      double across = 1e9;  // the room's shorter direction
+      if (!room_.free_floor.empty()) {  // 0.8 m to spare at each end in the room's longer direction
+        const Box2 box = BoundingBox(room_.free_floor.front());
+        length = std::min(length, std::max(box.max_x - box.min_x, box.max_y - box.min_y) - 1.6);
+        across = std::min(box.max_x - box.min_x, box.max_y - box.min_y);
+      }
+      size.x = std::clamp(Round2(length), c.size_min.x, c.size_max.x);
+      // Both long sides seated where the room is wide enough (a chair and 1.3 m on each), and 0.9 m wide
+      // for its ends where that allows.
+      const double fit = Round2(across - 2.0 * 1.3 - 0.01);
+      if (n > 4 && fit >= c.size_min.y) size.y = std::clamp(std::max(size.y, 0.9), c.size_min.y, std::min(c.size_max.y, fit));
+    }
     auto cap = [&](double& v, double lo, double limit) { v = std::max(lo, std::min(v, Round2(limit))); };
     if (clear_width_ > 0.0) {
       if (c.name == "bed" || c.name == "child-bed") cap(size.x, c.size_min.x, clear_width_ - 0.65);
@@ -634,10 +651,13 @@ class Planning {
   void Wishes(const RoomRequest& request) {
     std::vector<std::vector<int>> made(request.wishes.size());
     // Containers first, so "bookshelves full of books" has its bookcases before its books.
+    // (A table sized for its people before its chairs, which it caps.)
     std::vector<int> order;
-    for (int pass = 0; pass < 2; ++pass)
-      for (int w = 0; w < static_cast<int>(request.wishes.size()); ++w)
-        if ((request.wishes[w].container >= 0) == (pass == 1)) order.push_back(w);
+    for (int pass = 0; pass < 3; ++pass)
+      for (int w = 0; w < static_cast<int>(request.wishes.size()); ++w) {
+        const Wish& wish = request.wishes[w];
+        if (pass == 0 ? wish.seats > 0 : wish.seats == 0 && (wish.container >= 0) == (pass == 2)) order.push_back(w);
+      }
     for (int w : order) {
       const Wish& wish = request.wishes[w];
       if (wish.count == 0) continue;
@@ -658,6 +678,15 @@ class Planning {
                                                      : options_.max_per_receptacle;
         want = per * static_cast<int>(parents.size());
       }
+      // Chairs for a table: as many as its sides seat with room to pull them out.
+      if (item && !item->requires_category.empty() && want > SeatCap(*item)) {
+        notes_.push_back("the request asks for " + std::to_string(want) + " x " + std::string(info.name) + "; the " +
+                         std::string(item->requires_category) + " seats " + std::to_string(SeatCap(*item)) +
+                         " with 0.75 m behind each in this room");
+        dropped_ += want - SeatCap(*item);
+        want = SeatCap(*item);
+      }
+      seats_for_ = wish.seats;
       int added = 0;
       for (int k = 0; k < want; ++k) {
         int parent = -1;
@@ -678,6 +707,7 @@ class Planning {
         made[w].push_back(node);
         ++added;
       }
+      seats_for_ = 0;
       if (added < want && !wish.fill) {
         notes_.push_back("the request asks for " + std::to_string(want) + " x " + std::string(info.name) + "; " +
                          std::to_string(added) + " fit");
@@ -1078,6 +1108,7 @@ class Planning {
   int dropped_ = 0;
   std::set<std::string> excluded_, named_;
   std::set<const ItemPrior*> capped_;  // items whose seats MinWanted noted
+  int seats_for_ = 0;                  // while a table the request sizes for its people is added: their number
   std::vector<std::string> notes_;
 };
 

@@ -215,6 +215,85 @@ bool IsSeat(const CategoryInfo* c) {
          c->name == "outdoor-chair" || c->name == "armchair" || c->name == "bench";
 }
 
+// The people a phrase at token i asks seats for, and the token after it; nullopt when none. "seat(s) /
+// seating / sit(s) [for / up to / at least] N [people]", "room / space for N [people]", "for N people",
+// "N-seat(er)", and a bare "for N" right after a table or a room that dines or meets (`after_table`).
+std::optional<int> SeatsAt(const std::vector<Token>& tokens, size_t i, bool after_table) {
+  auto same = [&](size_t k) { return k < tokens.size() && tokens[k].sentence == tokens[i].sentence; };
+  auto people = [&](size_t k) { return same(k) && IsOneOf(tokens[k].word, {"people", "persons", "guests", "diners", "adults", "person"}); };
+  auto count = [&](size_t k) -> std::optional<int> {
+    if (!same(k)) return std::nullopt;
+    const std::optional<int> n = NumberWord(tokens[k].word);
+    return n && *n >= 2 && *n <= 40 ? n : std::nullopt;
+  };
+  const std::string& w = tokens[i].word;
+  if (count(i) && same(i + 1) && IsOneOf(tokens[i + 1].word, {"seat", "seater"})) return count(i);
+  size_t k = i + 1;
+  const bool verb = IsOneOf(w, {"seat", "seats", "seating", "sit", "sits", "seated"});
+  const bool room_for = IsOneOf(w, {"room", "space", "places"}) && same(k) && tokens[k].word == "for";
+  if (!verb && !room_for && w != "for") return std::nullopt;
+  if (room_for) ++k;
+  for (int skip = 0; skip < 3 && same(k) && IsOneOf(tokens[k].word, {"for", "up", "to", "at", "least", "around", "about", "comfortably"}); ++skip) ++k;
+  const std::optional<int> n = count(k);
+  if (!n || (w == "for" && !after_table && !people(k + 1))) return std::nullopt;
+  return n;
+}
+
+void Capacities(const std::vector<Token>& tokens, const std::vector<Mention>& mentions,
+                const std::vector<std::optional<Category>>& bound, Category room, RoomRequest& out) {
+  const bool meets = room == Category::kMeetingRoom || room == Category::kOffice;
+  const CategoryInfo* table = FindCategory(meets ? "conference-table" : "dining-table");
+  const CategoryInfo* chair = FindCategory("chair");
+  if (!table || !chair) return;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    // What the phrase speaks of: the nearest mention before it in its sentence (a room, or a table and
+    // the room it is bound to).
+    int before = -1;
+    for (size_t k = 0; k < mentions.size(); ++k)
+      if (mentions[k].end <= i && tokens[mentions[k].begin].sentence == tokens[i].sentence) before = static_cast<int>(k);
+    const bool tabled = before >= 0 && (mentions[before].room ? (mentions[before].room_category == Category::kDiningRoom ||
+                                                                 mentions[before].room_category == Category::kMeetingRoom)
+                                                              : mentions[before].category->name.find("table") != std::string_view::npos);
+    const std::optional<int> seats = SeatsAt(tokens, i, tabled && mentions[before].end == i);
+    if (!seats) continue;
+    const std::optional<Category> of = before < 0 ? std::optional<Category>(room)
+                                       : mentions[before].room ? std::optional<Category>(mentions[before].room_category)
+                                                               : bound[before];
+    if (of != room) continue;
+    auto find = [&](const CategoryInfo* c) {
+      return std::find_if(out.wishes.begin(), out.wishes.end(), [&](const Wish& w) { return w.category == c; });
+    };
+    if (find(table) == out.wishes.end()) {
+      Wish t;
+      t.category = table;
+      t.explicit_count = true;
+      t.phrase = Join(tokens, i, std::min(tokens.size(), i + 3));
+      out.wishes.insert(out.wishes.begin(), t);  // before the chairs it seats
+      for (Wish& w : out.wishes)
+        if (w.container >= 0) ++w.container;
+      for (WishEdge& e : out.edges) ++e.source, ++e.target;
+    }
+    find(table)->seats = *seats;
+    const int t = static_cast<int>(find(table) - out.wishes.begin());
+    auto c = find(chair);
+    if (c == out.wishes.end()) {
+      Wish w;
+      w.category = chair;
+      w.count = *seats;
+      w.explicit_count = true;
+      w.phrase = Join(tokens, i, std::min(tokens.size(), i + 3));
+      out.wishes.push_back(w);
+      c = out.wishes.end() - 1;
+    } else if (!c->explicit_count) {
+      c->count = *seats;
+      c->explicit_count = true;
+    }
+    const int seat = static_cast<int>(c - out.wishes.begin());
+    out.edges.push_back({seat, SemanticRelation::kFaceTo, t});
+    out.edges.push_back({seat, SemanticRelation::kNextTo, t});
+  }
+}
+
 }  // namespace
 
 RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) {
@@ -403,6 +482,7 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       }
     }
   }
+  Capacities(tokens, mentions, bound, room, out);
   return out;
 }
 

@@ -27,6 +27,7 @@ struct Wish {
   int container = -1;            // index of the wish it goes on / in ("books" in "bookcase full of books")
   Relation relation = Relation::kOnTop;  // with a container: kOnTop or kInside
   bool fill = false;             // "full of": as many as the container holds
+  int seats = 0;                 // a table's: the people it is to seat ("a dining room that can seat eight")
   std::vector<std::string> hints;  // kHint* words
   std::string phrase;            // the words of the request that named it
 };
@@ -47,6 +48,10 @@ struct RoomRequest {
 // the first). A wish bound to one room of several ("a TV in one of the bedrooms", "a desk in a bedroom",
 // "one bedroom needs a TV") goes to the first of them only; the others note it in other_rooms. A wish for
 // "each" / "every" / "both" / "all" the rooms, or for "the bedroom(s)", goes to every one of them.
+// Seats asked of a room or its table ("a dining room that can seat eight people", "seating for ten", "a
+// table for six", "an eight-seat table", "a meeting room for twelve") give that room's table (a
+// conference table in a meeting room or an office, else a dining table) `seats` and as many chairs, unless
+// the text counts the chairs itself.
 RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal = 0);
 
 }  // namespace villa::scene

@@ -566,6 +566,7 @@ class Parser {
   int TryCue(std::size_t i, Item& item);
   int TryPanoramic(std::size_t i, Item& item);
   int TryFurniture(std::size_t i, Item& item);
+  int TryCapacity(std::size_t i, Item& item);
   int TryEntrance(std::size_t i, Item& item);
   int TrySide(std::size_t i, Item& item);
   bool RoomStartsWithin(std::size_t i, int span) const;
@@ -916,6 +917,12 @@ int Parser::TryRoom(std::size_t i, Item& item) {
     tokens_[i].consumed = true;
     return 0;
   }
+  // "an office villa": a kind of building, not a room in it ("a three-bedroom bungalow" counts rooms).
+  if (i + best < tokens_.size() && !tokens_[i + best].punct && !(i > 0 && Cardinal(tokens_[i - 1])) &&
+      In(tokens_[i + best], {"villa", "house", "building", "bungalow", "home", "cottage", "block"})) {
+    for (int k = 0; k < best; ++k) tokens_[i + k].consumed = true;
+    return 0;
+  }
   if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
       i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "inside"}))
     return 0;  // "a shower in the bathroom": furniture
@@ -1001,6 +1008,38 @@ int Parser::TryFurniture(std::size_t i, Item& item) {
   return best;
 }
 
+// Seats asked of a room or its table, for the furnishing stage: "that can seat eight people", "seats 10",
+// "seating for twelve", "for six guests", "a dining room for twelve", "an eight-seat table". The words
+// from the verb to the number (and the people after it) are the wish; the room it names binds it.
+int Parser::TryCapacity(std::size_t i, Item& item) {
+  auto same = [&](std::size_t k) { return k < tokens_.size() && !tokens_[k].punct && tokens_[k].sentence == tokens_[i].sentence; };
+  auto people = [&](std::size_t k) {
+    return same(k) && In(tokens_[k], {"people", "persons", "guests", "diners", "adults", "comfortably", "person", "guest"});
+  };
+  const Token& t = tokens_[i];
+  std::size_t k = i + 1;
+  if (Cardinal(t) && same(k) && In(tokens_[k], {"seat", "seater", "seats"})) {  // "an eight-seat table"
+    item.item_first = static_cast<int>(i);
+    return 2;
+  }
+  const bool verb = In(t, {"seat", "seats", "seating", "sit", "sits", "sitting", "seated"});
+  const bool room_for = In(t, {"room", "space", "place", "places"}) && same(k) && tokens_[k].word == "for";
+  if (!verb && !room_for && t.word != "for") return 0;
+  if (room_for) ++k;
+  for (int skip = 0; skip < 3 && same(k) && In(tokens_[k], {"for", "up", "to", "at", "least", "around", "about", "comfortably"}); ++skip) ++k;
+  if (!same(k) || !Cardinal(tokens_[k]) || *Cardinal(tokens_[k]) < 2 || *Cardinal(tokens_[k]) > 40) return 0;
+  // A bare "for twelve" seats only after a room that dines or meets ("a dining room for twelve"), or with
+  // people after it ("for six guests"): "a garage for two" is no table.
+  if (t.word == "for") {
+    const bool dines = i > 0 && tokens_[i - 1].item >= 0 && items_[tokens_[i - 1].item].kind == ItemKind::kRoom &&
+                       (items_[tokens_[i - 1].item].category == Category::kDiningRoom ||
+                        items_[tokens_[i - 1].item].category == Category::kMeetingRoom);
+    if (!dines && !people(k + 1)) return 0;
+  }
+  item.item_first = static_cast<int>(i);
+  return static_cast<int>(k - i) + 1 + (people(k + 1) ? 1 : 0);
+}
+
 int Parser::TryEntrance(std::size_t i, Item& item) {
   static const std::vector<std::vector<std::string>> phrases = [] {
     std::vector<std::vector<std::string>> out;
@@ -1072,6 +1111,7 @@ void Parser::MatchAll() {
     consider(ItemKind::kFloorRef, &Parser::TryFloorRef);
     consider(ItemKind::kPanoramic, &Parser::TryPanoramic);
     consider(ItemKind::kFurniture, &Parser::TryFurniture);
+    consider(ItemKind::kFurniture, &Parser::TryCapacity);
     consider(ItemKind::kRoom, &Parser::TryRoom);
     consider(ItemKind::kShape, &Parser::TryShape);
     consider(ItemKind::kEntrance, &Parser::TryEntrance);

@@ -237,6 +237,8 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
     // "a Victorian-style terrace", "an end terrace": the house.
     if (t[i] == "terrace" && i > 0 && OneOf(t[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"})) continue;
     const size_t end = i + noun->words.size();
+    // "an office villa": the building ("a three-bedroom bungalow" counts rooms).
+    if (end < t.size() && !(i > 0 && NumberOf(t[i - 1])) && OneOf(t[end], {"villa", "house", "building", "bungalow", "home", "cottage", "block"})) continue;
     size_t end_after = end;  // past a count written after the noun
     // Backwards: the quantity within four words, up to a boundary or another noun.
     std::optional<int> count, ordinal;

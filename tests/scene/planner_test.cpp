@@ -456,3 +456,41 @@ TEST_CASE("a count below zero adds nothing and says so, ten thousand armchairs a
   CHECK(planned >= 2);
   CHECK(notes(many).find("the request asks for 10000 x armchair; " + std::to_string(planned) + " fit") != std::string::npos);
 }
+
+TEST_CASE("a dining room asked to seat eight gets a table that seats eight and eight chairs, a meeting room for twelve its twelve", "[scene][planner]") {
+  BuiltLayout b = LoadBuilt("examples/three-floor-villa.json");
+  RoomContext dining = ContextOf(b, "dining-room_0/0");  // 4 x 6 m
+  const std::string text = "A dining room that can seat eight people, and a meeting room for twelve.";
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("seed " << seed);
+    RoomPlan plan = PlanOf(dining, text, seed);
+    INFO(PlanTable(plan, dining.name));
+    CHECK(Check(b, dining, plan).empty());
+    const SceneObject* table = Find(plan, dining.name + "/dining-table-0");
+    REQUIRE(table);
+    // One seat every 0.6 m of a long side and one at each end: 1.8 m long, 0.9 m wide or more.
+    CHECK(table->size.x >= 1.8 - 1e-9);
+    CHECK(table->size.y >= 0.9 - 1e-9);
+    CHECK(CountCategory(plan, "dining-table") == 1);
+    CHECK(CountCategory(plan, "chair", Origin::kPrompt) == 8);
+    CHECK(CountCategory(plan, "chair") == 8);
+  }
+  RoomContext meeting = ContextOf(b, "meeting-room_1/0");  // 11 x 4 m
+  RoomPlan m = PlanOf(meeting, text);
+  INFO(PlanTable(m, meeting.name));
+  const SceneObject* table = Find(m, meeting.name + "/conference-table-0");
+  REQUIRE(table);
+  CHECK(table->size.x >= 3.0 - 1e-9);
+  CHECK(CountCategory(m, "chair", Origin::kPrompt) == 12);
+  // More than the room seats: as many as it does, and says so.
+  const BuiltLayout house = LoadBuilt("examples/l-shaped-house.json");
+  RoomContext l = ContextOf(house, "dining-room_0/0");  // 4 x 7 m
+  RoomPlan p = PlanOf(l, "a dining room for 20 people");
+  const int chairs = CountCategory(p, "chair", Origin::kPrompt);
+  CHECK(chairs >= 6);
+  CHECK(chairs < 20);
+  bool noted = false;
+  for (const std::string& n : p.record.notes)
+    noted = noted || n.find("the request asks for 20 x chair; the dining-table seats " + std::to_string(chairs)) == 0;
+  CHECK(noted);
+}

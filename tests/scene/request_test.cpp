@@ -171,3 +171,29 @@ TEST_CASE("counts keep their sign and size: -3 armchairs is no count, 10000 armc
   REQUIRE(Named(negative, "side-table"));
   CHECK(Named(negative, "side-table")->count == 1);
 }
+
+TEST_CASE("seats asked of a room size its table and bring as many chairs", "[scene][request]") {
+  RoomRequest r = ParseRoomRequest("A kitchen, and a dining room that can seat eight people.", Category::kDiningRoom);
+  REQUIRE(Named(r, "dining-table"));
+  CHECK(Named(r, "dining-table")->seats == 8);
+  REQUIRE(Named(r, "chair"));
+  CHECK(Named(r, "chair")->count == 8);
+  CHECK(Named(r, "chair")->explicit_count);
+  CHECK(HasEdge(r, "chair", SemanticRelation::kFaceTo, "dining-table"));
+  // A meeting room's table is a conference table; "for twelve" right after the room.
+  RoomRequest m = ParseRoomRequest("two offices and a meeting room for twelve", Category::kMeetingRoom);
+  REQUIRE(Named(m, "conference-table"));
+  CHECK(Named(m, "conference-table")->seats == 12);
+  CHECK(Named(m, "chair")->count == 12);
+  // The text's own chair count stands; "seating for", "an eight-seat table", digits.
+  RoomRequest c = ParseRoomRequest("a dining table for six with four chairs", Category::kDiningRoom);
+  CHECK(Named(c, "dining-table")->seats == 6);
+  CHECK(Named(c, "chair")->count == 4);
+  CHECK(Named(ParseRoomRequest("a dining room with seating for 10 guests", Category::kDiningRoom), "dining-table")->seats == 10);
+  CHECK(Named(ParseRoomRequest("an eight-seat table in the dining room", Category::kDiningRoom), "dining-table")->seats == 8);
+  // Not seats: another room's, a bare "for two" after what is no table, a number out of range.
+  CHECK(ParseRoomRequest("a dining room that seats eight", Category::kLivingRoom).wishes.empty());
+  CHECK(ParseRoomRequest("a garage for two", Category::kDiningRoom).wishes.empty());
+  CHECK(ParseRoomRequest("a dining room for 500", Category::kDiningRoom).wishes.empty());
+  CHECK(Named(ParseRoomRequest("a dining room for two people", Category::kDiningRoom), "dining-table")->seats == 2);
+}
