@@ -124,10 +124,13 @@ std::vector<Mention> FindMentions(const std::vector<Token>& tokens) {
 }
 
 std::optional<int> NumberWord(const std::string& w) {
-  static constexpr std::array<std::string_view, 13> kWords = {"zero", "one", "two", "three", "four", "five", "six",
-                                                              "seven", "eight", "nine", "ten", "eleven", "twelve"};
+  static constexpr std::array<std::string_view, 21> kWords = {
+      "zero",   "one",    "two",    "three",    "four",     "five",    "six",     "seven",     "eight",    "nine",  "ten",
+      "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty"};
   for (size_t i = 0; i < kWords.size(); ++i)
     if (w == kWords[i]) return static_cast<int>(i);
+  if (w == "thirty") return 30;
+  if (w == "dozen") return 12;
   // Digits of any length keep their size (capped at a million: "10000 armchairs" is not two) and their sign.
   const bool negative = !w.empty() && w[0] == '-';
   const std::string digits = negative ? w.substr(1) : w;

@@ -196,4 +196,5 @@ TEST_CASE("seats asked of a room size its table and bring as many chairs", "[sce
   CHECK(ParseRoomRequest("a garage for two", Category::kDiningRoom).wishes.empty());
   CHECK(ParseRoomRequest("a dining room for 500", Category::kDiningRoom).wishes.empty());
   CHECK(Named(ParseRoomRequest("a dining room for two people", Category::kDiningRoom), "dining-table")->seats == 2);
+  CHECK(Named(ParseRoomRequest("a boardroom that seats sixteen", Category::kMeetingRoom), "conference-table")->seats == 16);
 }
