@@ -71,7 +71,7 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
     aiColor3D diffuse(color.r, color.g, color.b);
     mat->AddProperty(&diffuse, 1, AI_MATKEY_COLOR_DIFFUSE);
     mat->AddProperty(&color, 1, AI_MATKEY_BASE_COLOR);
-    float metallic = 0.0f, roughness = static_cast<float>(m.roughness);
+    float metallic = static_cast<float>(m.metallic), roughness = static_cast<float>(m.roughness);
     mat->AddProperty(&metallic, 1, AI_MATKEY_METALLIC_FACTOR);
     mat->AddProperty(&roughness, 1, AI_MATKEY_ROUGHNESS_FACTOR);
     if (m.alpha < 1.0) {
@@ -165,11 +165,13 @@ Vec3 ToGltfFrame(const Vec3& p) { return {p.x, p.z, -p.y}; }
 struct PartPrimitives {
   gltf::Primitive main;
   gltf::Primitive edges;
+  gltf::Primitive below;  // a floor slab's underside: the ceiling of the room below
 };
 PartPrimitives SplitPart(const MeshPart& part) {
   const bool slab = part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace;
   PartPrimitives out;
-  std::vector<int> main_index(part.mesh.vertices.size(), -1), edge_index(part.mesh.vertices.size(), -1);
+  std::vector<int> main_index(part.mesh.vertices.size(), -1), edge_index(part.mesh.vertices.size(), -1),
+      below_index(part.mesh.vertices.size(), -1);
   auto add = [&](gltf::Primitive& p, std::vector<int>& index, int v) {
     if (index[v] < 0) {
       index[v] = static_cast<int>(p.positions.size() / 3);
@@ -183,25 +185,30 @@ PartPrimitives SplitPart(const MeshPart& part) {
     const Vec3 n = Cross(b - a, c - a);
     const double len = Norm(n);
     const bool steep = slab && len > 0.0 && std::abs(n.z) < 0.5 * len;
-    gltf::Primitive& p = steep ? out.edges : out.main;
-    std::vector<int>& index = steep ? edge_index : main_index;
+    const bool below = part.kind == PartKind::kFloor && !steep && n.z < 0.0;
+    gltf::Primitive& p = steep ? out.edges : below ? out.below : out.main;
+    std::vector<int>& index = steep ? edge_index : below ? below_index : main_index;
     for (int k = 0; k < 3; ++k) add(p, index, t[k]);
   }
   return out;
 }
 
-// One glTF material per distinct look, the sRGB colour written linear.
+// One glTF material per distinct look, the sRGB colour written linear, metals as PbrByName reads their
+// names; each name once (a second look under a name already taken is "glass-2").
 class MaterialTable {
  public:
-  int Of(const PartMaterial& m) {
+  int Of(const PartMaterial& given) {
+    const PartMaterial m = PbrByName(given);
     const std::string key = m.name + "|" + std::to_string(m.color.r) + "," + std::to_string(m.color.g) + "," +
                             std::to_string(m.color.b) + "," + std::to_string(m.alpha) + "," + std::to_string(m.roughness);
     auto [it, added] = index_.emplace(key, static_cast<int>(materials_.size()));
     if (added) {
       gltf::Material g;
       g.name = m.name;
+      for (int n = 2; !names_.insert(g.name).second; ++n) g.name = m.name + "-" + std::to_string(n);
       g.base_color = {gltf::SrgbToLinear(m.color.r), gltf::SrgbToLinear(m.color.g), gltf::SrgbToLinear(m.color.b), m.alpha};
       g.roughness = m.roughness;
+      g.metallic = m.metallic;
       g.blend = m.alpha < 1.0;
       g.double_sided = m.alpha < 1.0;  // glass is seen from both sides
       materials_.push_back(g);
@@ -212,6 +219,7 @@ class MaterialTable {
 
  private:
   std::map<std::string, int> index_;
+  std::set<std::string> names_;
   std::vector<gltf::Material> materials_;
 };
 
@@ -247,6 +255,10 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
     if (!split.edges.indices.empty()) {
       split.edges.material = materials.Of(facade);
       mesh.primitives.push_back(std::move(split.edges));
+    }
+    if (!split.below.indices.empty()) {
+      split.below.material = materials.Of(CeilingMaterial());
+      mesh.primitives.push_back(std::move(split.below));
     }
     if (mesh.primitives.empty()) continue;
     part_mesh[i] = static_cast<int>(doc.meshes.size());

@@ -45,7 +45,7 @@ TEST_CASE("the .glb re-imports with a node per level, room and element, and the 
     const SceneNodeInfo* node = scene->Find(r.name());
     REQUIRE(node);
     CHECK(node->path == "villa/level_" + std::to_string(r.level) + "/" + r.name());
-    CHECK(node->meshes.size() == 2);  // top and bottom in the room's colour, edges in the facade's
+    CHECK(node->meshes.size() == 3);  // the top in the room's colour, edges in the facade's, the bottom the ceiling's
     // Room metadata written as glTF extras comes back as node metadata.
     CHECK(node->metadata.at("category") == std::string(CategoryName(r.category)));
     CHECK(std::stod(node->metadata.at("area_m2")) == Approx(Area(r.polygon)).margin(0.01));
@@ -179,7 +179,7 @@ TEST_CASE("issue 18: base colours are the palette's values made linear, as glTF 
   CHECK(roof[0].get<double>() < 0.3);
 }
 
-TEST_CASE("issue 18: no slab edge carries a room colour, every named node carries its exact name in extras") {
+TEST_CASE("issue 18: no slab edge carries a room colour, no ceiling the colour of the room above, every named node carries its exact name in extras") {
   const BuildingMesh& b = ThreeFloorBuilding();
   auto bytes = BuildingToGlb(b);
   REQUIRE(bytes);
@@ -197,12 +197,13 @@ TEST_CASE("issue 18: no slab edge carries a room colour, every named node carrie
   CHECK(named > static_cast<int>(b.parts.size()));  // parts, groups, levels and the root
 
   // Re-read through assimp: every steep triangle of a floor or terrace slab is in the exterior wall's
-  // material; the room colour stays on the flat faces.
+  // material; the room colour stays on the top, and the underside is the ceiling below (issue 31: it took
+  // the colour of the room above).
   fs::path dir = TempDir("edges");
   REQUIRE(ExportBuilding(b, dir / "villa.glb", MeshFormat::kGlb));
   auto scene = ReadSceneInfo(dir / "villa.glb");
   REQUIRE(scene);
-  int steep = 0;
+  int steep = 0, below = 0;
   for (const MeshPart& part : b.parts) {
     if (part.kind != PartKind::kFloor) continue;
     const SceneNodeInfo* node = scene->Find(part.name);
@@ -215,11 +216,58 @@ TEST_CASE("issue 18: no slab edge carries a room colour, every named node carrie
         const Vec3 n = Cross(mesh.mesh.vertices[t[1]] - mesh.mesh.vertices[t[0]], mesh.mesh.vertices[t[2]] - mesh.mesh.vertices[t[0]]);
         const bool is_steep = std::abs(n.y) < 0.5 * Norm(n);
         steep += is_steep;
+        below += !is_steep && n.y < 0.0;
         INFO(part.name << " " << material);
-        CHECK(material == (is_steep ? std::string("exterior-wall") : MaterialOf(part).name));
+        CHECK(material == (is_steep ? std::string("exterior-wall") : n.y < 0.0 ? std::string("ceiling") : MaterialOf(part).name));
       }
     }
   }
   CHECK(steep > 0);
+  CHECK(below > 0);
   fs::remove_all(dir);
+}
+
+TEST_CASE("issue 31: materials by what they are made of: one name each, bare metals metallic, the ceiling its own") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  TriangleMesh cube;
+  for (int k = 0; k < 8; ++k) cube.vertices.push_back({k & 1 ? 0.1 : -0.1, k & 2 ? 0.1 : -0.1, k & 4 ? 0.2 : 0.0});
+  for (const auto& f : std::vector<std::array<int, 3>>{{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}})
+    cube.AddTriangle(f[0], f[1], f[2]);
+  ExportFurniture furniture;
+  ExportAssetMesh asset;
+  asset.name = "test:asset";
+  for (PartMaterial m : {PartMaterial{"glass", {0.75, 0.85, 0.88}, 0.3, 0.05}, PartMaterial{"chrome", {0.8, 0.81, 0.83}, 1.0, 0.5},
+                         PartMaterial{"matte-white-metal", {0.9, 0.9, 0.9}, 1.0, 0.9}, PartMaterial{"gold-brocade", {0.72, 0.58, 0.3}, 1.0, 0.9},
+                         PartMaterial{"white-enamel", {0.95, 0.95, 0.95}, 1.0, 0.5}, PartMaterial{"mirror", {0.85, 0.88, 0.9}, 1.0, 0.9}})
+    asset.parts.push_back({&cube, m});
+  furniture.meshes.push_back(asset);
+  ExportObject object;
+  object.name = "kitchen_0/0/thing-0";
+  object.room = b.rooms.front().name;
+  object.mesh = 0;
+  furniture.objects.push_back(object);
+  auto bytes = BuildingToGlb(b, &furniture);
+  REQUIRE(bytes);
+  auto json = GlbJson(*bytes);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& m : json["materials"]) {
+    INFO(m["name"]);
+    CHECK(by_name.emplace(m["name"].get<std::string>(), m).second);  // no name twice
+  }
+  // The window's glass and the asset's (another colour and opacity) are two materials with two names.
+  REQUIRE(by_name.count("glass"));
+  REQUIRE(by_name.count("glass-2"));
+  auto metallic = [&](const std::string& name) { return by_name.at(name)["pbrMetallicRoughness"]["metallicFactor"].get<double>(); };
+  CHECK(metallic("chrome") > 0.5);
+  CHECK(metallic("matte-white-metal") > 0.5);
+  CHECK(metallic("mirror") > 0.5);
+  CHECK(metallic("gold-brocade") == 0.0);  // a fabric
+  CHECK(metallic("white-enamel") == 0.0);  // a painted finish
+  CHECK(metallic("floor-kitchen") == 0.0);
+  // The ceiling is one material, unlike every floor's.
+  REQUIRE(by_name.count("ceiling"));
+  const auto ceiling = by_name["ceiling"]["pbrMetallicRoughness"]["baseColorFactor"];
+  for (const auto& [name, m] : by_name)
+    if (name.rfind("floor-", 0) == 0) CHECK(m["pbrMetallicRoughness"]["baseColorFactor"] != ceiling);
 }
