@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <set>
 
 #include "building/export.h"
 #include "layout/layout.h"
@@ -27,7 +28,10 @@ std::optional<double> ParseNumber(const std::string& text) {
 
 }  // namespace
 
-static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string& glb, const std::vector<std::string>& only) {
+// `rooms`: when given, only the objects of these rooms become bodies (the rest are left out; their rugs are
+// still counted as decals).
+static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string& glb, const std::vector<std::string>& only,
+                                       const std::set<std::string>* rooms = nullptr) {
   GlbBodies out;
   for (const SceneNodeInfo& n : info.nodes) {
     if (n.meshes.empty()) continue;
@@ -61,6 +65,7 @@ static Result<GlbBodies> ReadGlbBodies(const SceneInfo& info, const std::string&
       ++out.decals;
       continue;
     }
+    if (rooms && !rooms->count(room)) continue;
     SettleBody b;
     b.id = n.Meta("id").empty() ? n.name : n.Meta("id");
     // Welded: what hangs on a wall, from the ceiling or on a rail, and a washbasin against a wall (plumbed
@@ -88,10 +93,20 @@ Result<GlbBodies> ReadGlbBodies(const std::filesystem::path& glb) {
 
 namespace {
 
+// The stability counts (all, by room type) of a summary's free objects.
+void CountStable(GlbSettleSummary& s) {
+  for (const GlbObjectMotion& o : s.objects) {
+    if (o.motion.welded) continue;
+    const StabilityCount one{1, o.motion.strict, o.motion.loose};
+    s.all += one;
+    s.by_room_type[o.room_type] += one;
+  }
+}
+
 Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::string& glb, const SettleOptions& options,
-                                     const std::vector<std::string>& only) {
+                                     const std::vector<std::string>& only, const std::set<std::string>* rooms = nullptr) {
   if (!info.ok()) return Error{info.error()};
-  auto scene = ReadGlbBodies(*info, glb, only);
+  auto scene = ReadGlbBodies(*info, glb, only, rooms);
   if (!scene.ok()) return Error{scene.error()};
   GlbSettleSummary summary;
   summary.objects = std::move(scene->objects);
@@ -100,14 +115,8 @@ Result<GlbSettleSummary> SettleScene(const Result<SceneInfo>& info, const std::s
   const std::vector<SettleBody>& bodies = scene->bodies;
   auto settled = Settle(statics, bodies, options);
   if (!settled.ok()) return Error{glb + ": " + settled.error()};
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    GlbObjectMotion& o = summary.objects[i];
-    o.motion = settled->bodies[i];
-    if (o.motion.welded) continue;
-    const StabilityCount one{1, o.motion.strict, o.motion.loose};
-    summary.all += one;
-    summary.by_room_type[o.room_type] += one;
-  }
+  for (size_t i = 0; i < bodies.size(); ++i) summary.objects[i].motion = settled->bodies[i];
+  CountStable(summary);
   summary.parts = settled->parts;
   summary.starts_inside = settled->starts_inside;
   summary.static_triangles = settled->static_triangles;
@@ -124,6 +133,25 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
 
 Result<GlbSettleSummary> SettleGlbBytes(const std::string& glb, const SettleOptions& options) {
   return SettleScene(ReadSceneInfoFromMemory(glb, "glb"), "furnished.glb", options, {});
+}
+
+Result<GlbSettleSummary> ResettleRooms(const std::string& glb, const GlbSettleSummary& before, const std::set<std::string>& rooms,
+                                       const SettleOptions& options) {
+  auto part = SettleScene(ReadSceneInfoFromMemory(glb, "glb"), "furnished.glb", options, {}, &rooms);
+  if (!part.ok()) return Error{part.error()};
+  GlbSettleSummary out;
+  for (const GlbObjectMotion& o : before.objects)
+    if (!rooms.count(o.room)) out.objects.push_back(o);
+  out.objects.insert(out.objects.end(), part->objects.begin(), part->objects.end());
+  for (const GlbObjectMotion& o : out.objects) {
+    out.starts_inside += o.motion.start_depth > 0.002;
+    out.parts += o.motion.parts;
+  }
+  CountStable(out);
+  out.decals = part->decals;
+  out.static_triangles = part->static_triangles;
+  out.seconds = part->seconds;
+  return out;
 }
 
 nlohmann::ordered_json StabilityJson(const StabilityCount& c) {

@@ -6,6 +6,7 @@
 // `seconds` and are judged by the strict and loose rules of physics/settle.h, per room type.
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,12 @@ Result<GlbSettleSummary> SettleGlb(const std::filesystem::path& glb, const Settl
                                    const std::vector<std::string>& only = {});
 // The same for a .glb's bytes (a furnished villa before it is written).
 Result<GlbSettleSummary> SettleGlbBytes(const std::string& glb, const SettleOptions& options = {});
+
+// The villa settled again where only `rooms` changed since `before` (the settle of the same villa): only
+// their objects are simulated (the building whole; objects of different rooms never touch) and the other
+// rooms keep what `before` found for them. `seconds` is this settle's.
+Result<GlbSettleSummary> ResettleRooms(const std::string& glb, const GlbSettleSummary& before, const std::set<std::string>& rooms,
+                                       const SettleOptions& options = {});
 
 // {"free", "strict", "loose", "strict_share", "loose_share"}.
 nlohmann::ordered_json StabilityJson(const StabilityCount& count);
