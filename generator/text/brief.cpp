@@ -265,7 +265,7 @@ const std::unordered_set<std::string>& FillerWords() {
       "kind", "sort", "type", "way", "part", "stairs", "staircase", "stairway", "stair", "staircases",
       "stairwell", "window", "windows", "wall", "walls", "door", "doors", "shaped", "shape", "form",
       "floors", "mix", "people", "guests", "guest", "friends", "kid", "kids", "children", "parents",
-      "im", "ive", "id", "youre", "theyre", "its", "count", "storey", "story", "wed", "weve", "youd",
+      "nook", "breakfast", "im", "ive", "id", "youre", "theyre", "its", "count", "storey", "story", "wed", "weve", "youd",
       "youll", "ill", "itll", "thats", "theres", "heres", "whats", "lets", "hes", "shes", "theyll", "hoping",
       "looking", "searching", "wondering", "planning", "considering", "thinking", "floor", "number",
       "connections", "furniture", "extras", "layouts", "storeys", "stories", "levels", "great",
@@ -366,19 +366,22 @@ const std::vector<RoomWord>& RoomLexicon() {
     add(C::kLivingRoom, {"living room", "living", "lounge", "sitting room", "family room", "living area",
                          "living space", "salon", "drawing room", "parlor", "parlour", "great room",
                          "tv room", "media room", "day room", "living hall", "livingroom", "living-room",
-                         "lounge area", "sitting area", "den", "reception room", "snug", "front room", "living rm"});
+                         "lounge area", "sitting area", "den", "reception room", "snug", "front room", "living rm",
+                         "games room", "game room", "rumpus room", "family area"});
     add(C::kBedroom, {"bedroom", "master bedroom", "main bedroom", "primary bedroom", "guest bedroom",
                       "guest room", "master suite", "sleeping room", "bed room", "parent bedroom",
                       "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
                       "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area", "box room",
                       "twin room", "twin bedroom", "primary suite", "guest suite", "double room", "bedrm", "bdrm",
                       "br"});
-    add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse"});
+    add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse", "kitchen diner",
+                      "eat in kitchen"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
     add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
                        "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
                        "water closet", "toilet room", "bathroom suite", "shower", "cloakroom", "cloakroom wc",
-                       "cloakroom toilet", "bathrm", "ba", "hall bath", "guest bath", "guest bathroom"});
+                       "cloakroom toilet", "bathrm", "ba", "hall bath", "guest bath", "guest bathroom",
+                       "jack and jill bathroom", "jack and jill bath"});
     add(C::kBathroom, {"en suite bathroom", "ensuite bathroom", "en suite", "ensuite", "en suite shower room",
                        "ensuite shower room", "en suite wc", "ensuite wc", "attached bathroom",
                        "private bathroom", "own bathroom", "en suite bath", "ensuite bath", "own bath"},
@@ -1332,6 +1335,16 @@ void Parser::Quantify(Mention& m) {
     m.min = m.max = count->first;
     Consume(after, count->second);
     m.last = count->second;
+    determined = true;
+  }
+  // "two baths including a Jack and Jill bathroom": one of those counted before it in the sentence.
+  if (m.counting && m.first > 0 && In(tokens_[m.first - 1], {"including", "incl", "includes", "include"}) &&
+      std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {
+        return o.category == item.category && o.counting && o.max != 0 && tokens_[o.last].sentence == sentence;
+      })) {
+    m.counting = false;
+    m.definite = true;
+    tokens_[m.first - 1].consumed = true;
     determined = true;
   }
   // "the kitchen, dining room and living room": a bare noun continuing a definite list is definite too.

@@ -70,6 +70,10 @@ const std::vector<Noun>& Nouns() {
     }
     for (std::string_view w : {"snug", "snugs", "lounge"}) add({w}, C::kLivingRoom);
     add({"front", "room"}, C::kLivingRoom);
+    for (std::string_view w : {"games", "game", "rumpus"}) {
+      add({w, "room"}, C::kLivingRoom);
+      add({w, "rooms"}, C::kLivingRoom);
+    }
     add({"lounges"}, C::kLivingRoom);
     for (std::string_view w : {"room", "rooms", "area", "areas", "hall"}) add({"dining", w}, C::kDiningRoom);
     for (std::string_view w : {"office", "offices", "study", "studies"}) add({w}, C::kOffice);
