@@ -697,6 +697,19 @@ int Parser::TryFloorCount(std::size_t i, Item& item) {
     item.floors = 2;
     return 1;
   }
+  // "No upstairs please", "no stairs", "without an upper floor": one floor (not a scope for what follows).
+  if (In(t, {"no", "without"})) {
+    std::size_t k = i + 1;
+    if (k < tokens_.size() && In(tokens_[k], {"a", "an", "any"})) ++k;
+    if (k < tokens_.size() && In(tokens_[k], {"upstairs", "stairs", "staircase"})) {
+      item.floors = 1;
+      return static_cast<int>(k - i) + 1;
+    }
+    if (k + 1 < tokens_.size() && In(tokens_[k], {"upper", "second", "top"}) && IsFloorNoun(tokens_[k + 1])) {
+      item.floors = 1;
+      return static_cast<int>(k - i) + 2;
+    }
+  }
   if (t.word == "triplex") {
     item.floors = 3;
     return 1;
