@@ -399,7 +399,8 @@ const std::vector<RoomWord>& RoomLexicon() {
                           "meeting area", "meeting-room", "conference area"});
     add(C::kUtilityRoom, {"utility room", "utility", "staircase room", "stair room", "stairwell room",
                           "stair hall", "stairway room", "staircase-room", "utility-room", "stair core",
-                          "stairs room", "utility area", "service room"});
+                          "stairs room", "utility area", "service room", "laundry room", "laundry", "laundry area",
+                          "pantry", "mudroom", "mud room", "boot room", "scullery", "storage room", "store room"});
     add(C::kBalcony, {"balcony", "terrace", "veranda", "verandah", "loggia", "deck", "sun deck",
                       "roof terrace", "balconette"});
     return out;
@@ -1974,6 +1975,9 @@ void Parser::Attach() {
   }
 }
 
+// Utility rooms that are no staircase room (Finish).
+constexpr std::string_view kServiceRooms[] = {"laundry", "pantry", "mudroom", "mud room", "boot room", "scullery", "storage", "store room"};
+
 void Parser::Finish(Brief& brief) {
   // Floors.
   for (const Item& item : items_) {
@@ -2297,6 +2301,26 @@ void Parser::Finish(Brief& brief) {
       default: break;
     }
   }
+
+  // A laundry, pantry or mudroom is a utility room, but in a building of more floors the format's utility
+  // room holds the stairs: no separate one can be made, so the words stay unmet rather than met by the
+  // staircase room.
+  if (floors_.value_or(0) > 1 || floors_min_ > 1)
+    for (size_t r = 0; r < brief.rooms.size();) {
+      std::string words = brief.rooms[r].source.text;
+      std::transform(words.begin(), words.end(), words.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      const bool service = brief.rooms[r].category == Category::kUtilityRoom &&
+                           std::any_of(std::begin(kServiceRooms), std::end(kServiceRooms),
+                                       [&](std::string_view w) { return words.find(w) != std::string::npos; });
+      if (!service) {
+        ++r;
+        continue;
+      }
+      conflicts_.push_back("\"" + brief.rooms[r].source.text + "\": in a building of more floors the utility room holds the stairs; "
+                           "no separate laundry, pantry or store room can be made");
+      brief.unparsed.push_back(brief.rooms[r].source);
+      brief.rooms.erase(brief.rooms.begin() + static_cast<std::ptrdiff_t>(r));
+    }
 
   // Conflicts between counts and with the format's limits.
   int floors_known = floors_.value_or(0);

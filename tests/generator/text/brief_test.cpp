@@ -556,3 +556,23 @@ TEST_CASE("a number keeps its sign: -3 bedrooms and -2 floors are no counts, rep
 }
 
 }  // namespace villa
+
+namespace villa {
+
+TEST_CASE("a laundry, pantry or mudroom is a utility room on one floor, and no false met where the stairs take it") {
+  const Brief one = ParseBrief("Single floor: kitchen, lounge, a laundry room, two bedrooms and a bathroom");
+  CHECK(Exact(one, Category::kUtilityRoom) == 1);
+  CHECK(one.unparsed.empty());
+  CHECK(Exact(ParseBrief("a bungalow with a kitchen, a pantry, a living room and a bedroom"), Category::kUtilityRoom) == 1);
+  // Two floors: the utility room on each floor holds the stairs, so a laundry there stays unmet and says why.
+  const Brief two = ParseBrief("two storey; kitchen, dining room, living room, 3 bedrooms, 2 bathrooms, laundry");
+  CHECK(FindRooms(two, Category::kUtilityRoom, kAnyLevel) == nullptr);
+  REQUIRE(two.unparsed.size() == 1);
+  CHECK(two.unparsed[0].text == "laundry");
+  CHECK(std::any_of(two.conflicts.begin(), two.conflicts.end(),
+                    [](const std::string& c) { return c.find("the utility room holds the stairs") != std::string::npos; }));
+  // The staircase room asked by name is still that room.
+  CHECK(Exact(ParseBrief("two floors with a staircase room on each floor, a kitchen and two bedrooms"), Category::kUtilityRoom, kEachLevel) == 1);
+}
+
+}  // namespace villa
