@@ -277,7 +277,7 @@ const std::unordered_set<std::string>& FillerWords() {
       "additional", "extra", "main", "decent", "proper", "sizable", "sizeable", "wide", "long",
       "bigger", "smaller", "larger", "warm", "welcoming", "open", "convenient", "typical", "standard",
       "usual", "neat", "clean", "fine", "real", "actual", "dream", "perfect", "ideal", "charming",
-      "stylish", "lavish", "grand", "stunning", "gorgeous", "pleasant", "relaxing", "peaceful",
+      "stylish", "lavish", "formal", "informal", "casual", "grand", "stunning", "gorgeous", "pleasant", "relaxing", "peaceful",
       "fully", "nicely", "properly", "generously", "comfortably", "totally", "exactly", "precisely",
       "approximately", "roughly", "least", "most", "highly", "clearly", "simply", "naturally",
       "respective", "individual", "current", "several", "multiple", "few", "couple", "pair",
