@@ -373,7 +373,7 @@ const std::vector<RoomWord>& RoomLexicon() {
                       "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
                       "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area", "box room",
                       "twin room", "twin bedroom", "primary suite", "guest suite", "double room", "bedrm", "bdrm",
-                      "br"});
+                      "br", "doubles"});  // "two doubles and a box room" (the plural only: a "double" is a bed)
     add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse", "kitchen diner",
                       "eat in kitchen"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);

@@ -59,6 +59,7 @@ const std::vector<Noun>& Nouns() {
       add({w, "room"}, C::kBedroom);
       add({w, "rooms"}, C::kBedroom);
     }
+    add({"doubles"}, C::kBedroom);
     add({"master", "suite"}, C::kBedroom);
     add({"master", "suites"}, C::kBedroom);
     add({"bed", "room"}, C::kBedroom);
