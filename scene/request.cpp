@@ -244,6 +244,10 @@ std::optional<int> SeatsAt(const std::vector<Token>& tokens, size_t i, bool afte
 
 void Capacities(const std::vector<Token>& tokens, const std::vector<Mention>& mentions,
                 const std::vector<std::optional<Category>>& bound, Category room, RoomRequest& out) {
+  // Only where people sit at a table: not "a window seat for two" in a bedroom.
+  if (room != Category::kDiningRoom && room != Category::kMeetingRoom && room != Category::kOffice && room != Category::kKitchen &&
+      room != Category::kLivingRoom)
+    return;
   const bool meets = room == Category::kMeetingRoom || room == Category::kOffice;
   const CategoryInfo* table = FindCategory(meets ? "conference-table" : "dining-table");
   const CategoryInfo* chair = FindCategory("chair");
@@ -259,6 +263,8 @@ void Capacities(const std::vector<Token>& tokens, const std::vector<Mention>& me
                                                               : mentions[before].category->name.find("table") != std::string_view::npos);
     const std::optional<int> seats = SeatsAt(tokens, i, tabled && mentions[before].end == i);
     if (!seats) continue;
+    // "a sofa that seats four", "a bench for three": the seats are that piece's, not a table's.
+    if (before >= 0 && !mentions[before].room && !tabled) continue;
     const std::optional<Category> of = before < 0 ? std::optional<Category>(room)
                                        : mentions[before].room ? std::optional<Category>(mentions[before].room_category)
                                                                : bound[before];

@@ -197,4 +197,10 @@ TEST_CASE("seats asked of a room size its table and bring as many chairs", "[sce
   CHECK(ParseRoomRequest("a dining room for 500", Category::kDiningRoom).wishes.empty());
   CHECK(Named(ParseRoomRequest("a dining room for two people", Category::kDiningRoom), "dining-table")->seats == 2);
   CHECK(Named(ParseRoomRequest("a boardroom that seats sixteen", Category::kMeetingRoom), "conference-table")->seats == 16);
+  // A sofa's seats are the sofa's; a bedroom has no table to seat.
+  RoomRequest sofa = ParseRoomRequest("a big sofa that seats four and a TV", Category::kLivingRoom);
+  CHECK_FALSE(Named(sofa, "dining-table"));
+  CHECK_FALSE(Named(sofa, "chair"));
+  CHECK(Named(sofa, "sofa"));
+  CHECK(ParseRoomRequest("room for two people to sleep", Category::kBedroom).wishes.empty());
 }
