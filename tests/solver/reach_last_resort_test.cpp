@@ -214,7 +214,7 @@ TEST_CASE("an essential piece that closes the only way in moves off the way, or 
   const Built built = BuildFixture("house_one_floor.json");
   for (const double depth : {3.0, 3.65}) {
     DYNAMIC_SECTION("depth " << depth) {
-      RoomProblem problem = WithFloor({{0.25, 5.06}, {4.94, 5.06}, {4.94, 8.75}, {0.25, 8.75}});
+      RoomProblem problem = WithFloor(kBedroomFloor);
       problem.room = "bedroom_0/0";
       ProblemObject bed = BoxObject("bed-0", 4.6, depth, 0.5);
       bed.priority = Priority::kEssential;
@@ -257,7 +257,7 @@ TEST_CASE("an essential piece across the only way in takes the slot an optional 
   // desk), so no rule of the agent's makes way. The optional desk goes with its chair, the bed moves north;
   // without that the bed would be removed, as the test above shows for a bed no slot holds.
   const Built built = BuildFixture("house_one_floor.json");
-  RoomProblem problem = WithFloor({{0.25, 5.06}, {4.94, 5.06}, {4.94, 8.75}, {0.25, 8.75}});
+  RoomProblem problem = WithFloor(kBedroomFloor);
   problem.room = "bedroom_0/0";
   ProblemObject bed = BoxObject("bed-0", 4.6, 2.2, 0.5);
   bed.priority = Priority::kEssential;
