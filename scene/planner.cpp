@@ -278,7 +278,8 @@ class Planning {
   }
 
   // ---- budgets
-  Vec3 SizeOf(const CategoryInfo& c) {
+  // `seats`: the people a table the request sizes is to seat (0: none asked).
+  Vec3 SizeOf(const CategoryInfo& c, int seats = 0) {
     double f = std::clamp(size_factor_ + 0.2 * (rng_.Unit() - 0.5), 0.0, 1.0);
     auto pick = [&](double lo, double hi) { return Round2(lo + f * (hi - lo)); };
     Vec3 size{pick(c.size_min.x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
@@ -287,8 +288,8 @@ class Planning {
     // 0.5 m, a 0.1 m gap) along its free side.
     // A table the request sizes for its people: one seat every 0.6 m of a long side, one at each end of a
     // table 1.5 m long or more (SeatCap's template), within the category's range.
-    if (seats_for_ > 0 && (c.name == "dining-table" || c.name == "conference-table")) {
-      const int n = seats_for_;
+    if (seats > 0 && (c.name == "dining-table" || c.name == "conference-table")) {
+      const int n = seats;
       double length = n <= 4 ? 0.6 * ((n + 1) / 2) : std::max(1.5, 0.6 * ((n - 1) / 2));
       double across = 1e9;  // the room's shorter direction
       if (!room_.free_floor.empty()) {  // 0.8 m to spare at each end in the room's longer direction
@@ -469,9 +470,10 @@ class Planning {
   }
 
   // ---- adding
-  // Adds one object; for small ones finds (or, when `make_parent`, plans) a parent. The index, or -1.
+  // Adds one object; for small ones finds (or, when `make_parent`, plans) a parent; `seats` sizes a table for
+  // that many people (SizeOf). The index, or -1.
   int Add(const CategoryInfo& info, const ItemPrior* item, Origin origin, int wish, int parent, Relation relation,
-          bool make_parent) {
+          bool make_parent, int seats = 0) {
     Node n;
     n.info = &info;
     n.item = item;
@@ -481,7 +483,7 @@ class Planning {
     if (parent >= 0) n.mount = Mount::kParent;
     if (n.mount == Mount::kWall && info.name == "sofa" && room_.category == Category::kLivingRoom && SofaFloats())
       n.mount = Mount::kFloor;
-    n.size = SizeOf(info);
+    n.size = SizeOf(info, seats);
     if (item) n.hints.assign(item->hints.begin(), item->hints.end());
     const bool prompt = origin == Origin::kPrompt;
     if (n.mount == Mount::kParent) {
@@ -686,7 +688,6 @@ class Planning {
         dropped_ += want - SeatCap(*item);
         want = SeatCap(*item);
       }
-      seats_for_ = wish.seats;
       int added = 0;
       for (int k = 0; k < want; ++k) {
         int parent = -1;
@@ -699,7 +700,7 @@ class Planning {
               parent = p;
           if (parent < 0) break;
         }
-        int node = Add(info, item, Origin::kPrompt, w, parent, relation, true);
+        int node = Add(info, item, Origin::kPrompt, w, parent, relation, true, wish.seats);
         if (node < 0) break;
         for (const std::string& h : wish.hints)
           if (std::find(nodes_[node].hints.begin(), nodes_[node].hints.end(), h) == nodes_[node].hints.end())
@@ -707,7 +708,6 @@ class Planning {
         made[w].push_back(node);
         ++added;
       }
-      seats_for_ = 0;
       if (added < want && !wish.fill) {
         notes_.push_back("the request asks for " + std::to_string(want) + " x " + std::string(info.name) + "; " +
                          std::to_string(added) + " fit");
@@ -1108,7 +1108,6 @@ class Planning {
   int dropped_ = 0;
   std::set<std::string> excluded_, named_;
   std::set<const ItemPrior*> capped_;  // items whose seats MinWanted noted
-  int seats_for_ = 0;                  // while a table the request sizes for its people is added: their number
   std::vector<std::string> notes_;
 };
 
