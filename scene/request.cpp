@@ -253,6 +253,7 @@ void Capacities(const std::vector<Token>& tokens, const std::vector<Mention>& me
   const CategoryInfo* chair = FindCategory("chair");
   if (!table || !chair) return;
   for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!SeatsAt(tokens, i, true)) continue;  // no seats here however it is read
     // What the phrase speaks of: the nearest mention before it in its sentence (a room, or a table and
     // the room it is bound to).
     int before = -1;
