@@ -5,13 +5,16 @@
 // the bed's head, floor use in rooms of 14 m2 or more, wishes, support slips) beside CR, FR, OBR, CSR and NO,
 // and the seconds a room.
 //   villa_bench_rooms [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--no-reach]
-//                     [--text "request"] [--failing] [--type T]
+//                     [--text "request"] [--failing] [--type T] [--only I,J,...]
 // --failing lists every room whose check fails and why; --type furnishes only rooms of one type; --text
-// furnishes every villa with that request's wishes. The seed 2027 is the default: no test uses it.
+// furnishes every villa with that request's wishes; --only furnishes only the villas of those indices (0 is
+// villa-000000). The seed 2027 is the default: no test uses it.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -61,6 +64,7 @@ std::vector<std::string> Header() {
 
 int main(int argc, char** argv) {
   uint64_t villas = 50, seed = 2027;
+  std::set<uint64_t> only_villas;
   std::string library_dir, critic_name = "offline", text, only_type;
   bool reach = true, failing = false;
   for (int i = 1; i < argc; ++i) {
@@ -71,12 +75,17 @@ int main(int argc, char** argv) {
     else if (a == "--critic" && i + 1 < argc) critic_name = argv[++i];
     else if (a == "--text" && i + 1 < argc) text = argv[++i];
     else if (a == "--type" && i + 1 < argc) only_type = argv[++i];
+    else if (a == "--only" && i + 1 < argc) {
+      // Villa indices to furnish, comma separated (the failing ones of a full run, to iterate on).
+      std::stringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');) only_villas.insert(std::strtoull(item.c_str(), nullptr, 10));
+    }
     else if (a == "--no-reach") reach = false;
     else if (a == "--failing") failing = true;
     else {
       std::fprintf(stderr,
                    "usage: villa_bench_rooms [--villas N] [--seed S] [--library DIR] [--critic none|offline] [--no-reach] "
-                   "[--text \"request\"] [--failing] [--type T]\n");
+                   "[--text \"request\"] [--failing] [--type T] [--only I,J,...]\n");
       return 2;
     }
   }
@@ -96,7 +105,9 @@ int main(int argc, char** argv) {
   int starts_inside = 0, physics_removed = 0, furnished_rooms = 0;
   double physics_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
-  for (const bench::BenchVilla& v : all) {
+  for (size_t index = 0; index < all.size(); ++index) {
+    const bench::BenchVilla& v = all[index];
+    if (!only_villas.empty() && !only_villas.count(index)) continue;
     solver::FurnishOptions options;
     options.jobs = 1;
     options.seed = seed;

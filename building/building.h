@@ -92,6 +92,9 @@ struct BuildingMesh {
   std::vector<std::vector<Ring>> slab_holes;
   // Things the builder had to adapt: "door living0_kitchen0: no wall under it, leaf only".
   std::vector<std::string> warnings;
+  // The villa's style (issue 31: its floor finishes and paint, building/materials.h); "" reads as modern.
+  // The builder leaves it empty; the furnishing sets the style its assets were chosen in.
+  std::string style;
 
   Box3 Bounds() const;
   int CountParts(PartKind kind) const;

@@ -54,7 +54,7 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
   std::map<std::string, unsigned> material_index;
   std::vector<unsigned> part_material;
   for (const MeshPart& part : building.parts) {
-    PartMaterial m = MaterialOf(part);
+    PartMaterial m = MaterialOf(part, building.style);
     auto [it, added] = material_index.emplace(m.name, static_cast<unsigned>(materials.size()));
     if (added) materials.push_back(m);
     part_material.push_back(it->second);
@@ -223,10 +223,10 @@ class MaterialTable {
   std::vector<gltf::Material> materials_;
 };
 
-PartMaterial ExteriorWallMaterial() {
+PartMaterial ExteriorWallMaterial(std::string_view style) {
   MeshPart wall;
   wall.kind = PartKind::kExteriorWall;
-  return MaterialOf(wall);
+  return MaterialOf(wall, style);
 }
 
 }  // namespace
@@ -234,7 +234,7 @@ PartMaterial ExteriorWallMaterial() {
 Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurniture* furniture) {
   gltf::Document doc;
   MaterialTable materials;
-  const PartMaterial facade = ExteriorWallMaterial();
+  const PartMaterial facade = ExteriorWallMaterial(building.style);
   auto named = [](const std::string& name) { return nlohmann::ordered_json{{"name", name}}; };
   auto add_node = [&](gltf::Node node) {
     doc.nodes.push_back(std::move(node));
@@ -249,7 +249,7 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
     gltf::Mesh mesh;
     mesh.name = part.name;
     if (!split.main.indices.empty()) {
-      split.main.material = materials.Of(MaterialOf(part));
+      split.main.material = materials.Of(MaterialOf(part, building.style));
       mesh.primitives.push_back(std::move(split.main));
     }
     if (!split.edges.indices.empty()) {

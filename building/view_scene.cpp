@@ -28,7 +28,7 @@ ViewScene ViewSceneOf(const BuildingMesh& building) {
   ViewScene scene;
   scene.meshes.reserve(building.parts.size());
   for (const MeshPart& part : building.parts) {
-    const PartMaterial material = MaterialOf(part);
+    const PartMaterial material = MaterialOf(part, building.style);
     ViewMesh view;
     view.mesh = &part.mesh;
     view.color = material.color;

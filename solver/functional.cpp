@@ -250,9 +250,8 @@ class Checker {
           g.members.push_back(tv.o->id);
           g.measures["tv_angle_deg"] = Round3(AngleDegrees(sofa.box.Front(), geo::Sub(tv.box.c, sofa.box.c)));
           g.measures["tv_distance_m"] = Round3(geo::Dist(tv.box.c, sofa.box.c));
-          // How far the screen turns from the sofa: reported, not judged (issue 27's rule is the sofa's facing).
           g.measures["tv_facing_deg"] = Round3(AngleDegrees(tv.box.Front(), geo::Sub(sofa.box.c, tv.box.c)));
-          if (std::string p = TvProblem(sofa.box, tv.box.c); !p.empty()) g.problems.push_back(p), core = false;
+          if (std::string p = TvProblem(sofa.box, tv.box); !p.empty()) g.problems.push_back(p), core = false;
         }
       }
       const Item* table = tables.empty() ? nullptr : Nearest(sofa, tables);

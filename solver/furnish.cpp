@@ -610,6 +610,8 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
   auto acquirer = scene::AssetAcquirer::Make(*library, options.acquire, options.seed, options.text);
   if (!acquirer.ok()) return Error{acquirer.error()};
   villa.assets = *acquirer;
+  // Floors and paint in the colours of the style the furniture is chosen in (issue 31).
+  villa.building.style = villa.assets->style();
 
   // Rooms in parallel; results land in layout order, so the output does not depend on the job count.
   const scene::PriorsPlanner priors(options.planner);

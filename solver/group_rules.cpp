@@ -68,12 +68,15 @@ OrientedBox MattressBox(const OrientedBox& bed, const AssetRecord* asset, double
   return box;
 }
 
-std::string TvProblem(const OrientedBox& sofa, Point tv) {
-  const double angle = AngleDegrees(sofa.Front(), geo::Sub(tv, sofa.c));
+std::string TvProblem(const OrientedBox& sofa, const OrientedBox& tv) {
+  const double angle = AngleDegrees(sofa.Front(), geo::Sub(tv.c, sofa.c));
   if (angle > kTvAngle) return "the sofa is turned " + FormatFixed(angle, 0) + " degrees from the TV (<= " + FormatFixed(kTvAngle, 0) + ")";
-  const double dist = geo::Dist(tv, sofa.c);
+  const double dist = geo::Dist(tv.c, sofa.c);
   if (dist < kTvMin || dist > kTvMax)
     return "the TV is " + FormatFixed(dist, 2) + " m from the sofa (" + FormatFixed(kTvMin, 1) + "-" + FormatFixed(kTvMax, 1) + ")";
+  const double screen = AngleDegrees(tv.Front(), geo::Sub(sofa.c, tv.c));
+  if (screen > kScreenFacing)
+    return "the TV is turned " + FormatFixed(screen, 0) + " degrees from the sofa (<= " + FormatFixed(kScreenFacing, 0) + ")";
   return "";
 }
 

@@ -24,6 +24,7 @@ inline constexpr double kSeatFacing = 30.0;       // degrees off the side's inwa
 inline constexpr double kSeatBehind = 0.75;       // m free behind a dining or meeting chair
 inline constexpr double kSeatLost = 1.5;          // m: a dining chair this far from every table is lost
 inline constexpr double kTvAngle = 25.0;          // degrees
+inline constexpr double kScreenFacing = 45.0;     // degrees: the screen turned from the sofa (seen edge-on past it)
 inline constexpr double kTvMin = 1.4, kTvMax = 4.0;            // m centre to centre
 inline constexpr double kCoffeeMin = 0.25, kCoffeeMax = 0.9;   // m gap
 inline constexpr double kDeskSeatGap = 0.5;       // m
@@ -54,8 +55,9 @@ std::string PillowProblem(Point pillow, const OrientedBox& bed);
 // imported bed's mattress may start well below its box's head, past a thick headboard); the bed's box when
 // `asset` is null or has no surface. `scale`: the bed's scale.
 OrientedBox MattressBox(const OrientedBox& bed, const AssetRecord* asset, double scale);
-// The sofa faces the TV (or its stand) within 25 degrees, 1.4-4.0 m centre to centre.
-std::string TvProblem(const OrientedBox& sofa, Point tv);
+// The sofa faces the TV (or its stand) within 25 degrees, 1.4-4.0 m centre to centre, and the screen faces
+// the sofa within 45 degrees (a stand on a side wall ahead shows the sofa its end).
+std::string TvProblem(const OrientedBox& sofa, const OrientedBox& tv);
 // The coffee table's centre in the sofa's front half-plane, within its width, at a 0.25-0.9 m gap.
 std::string CoffeeTableProblem(const OrientedBox& table, const OrientedBox& sofa);
 // A side table at an end of the sofa (outside its width, at most 0.3 m from it).

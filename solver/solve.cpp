@@ -24,6 +24,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kFeasible = 1e-10;  // hard cost below this: no proxy violation
+// Issue 27: a start whose hard cost is at most this (overlaps of a few centimetres, an optional piece in a
+// sweep) is one the rule agent repairs; among such starts the one with fewer broken group rules is kept.
+constexpr double kRepairable = 0.5;
 constexpr double kHairline = 1e-2;   // hard cost of a proxy a few millimetres into its margin
 constexpr std::string_view kOutcomeNames[] = {"converged", "budget", "infeasible"};
 
@@ -158,20 +161,35 @@ struct RoomSolver::Impl {
       state.placements[i].pose.z = problem.floor_z;
       (state.Hung(static_cast<int>(i)) ? hung : floor).push_back(static_cast<int>(i));
     }
-    // Floor layer: restarts while the best start still breaks a hard term.
+    // Floor layer: restarts while the best start still breaks a hard term, or (issue 27) a group's rule (a
+    // sofa turned from its TV, a chair with no room behind it). Of two starts whose overlaps the agent can
+    // clear (kRepairable), the one with fewer broken group rules wins: a start whose side tables overlap a
+    // little but whose sofa faces the TV beats one that overlaps less with the TV on a side wall.
     std::optional<Layer> best_layer;
     LayerCost best_cost{1e300, 1e300};
+    int best_trouble = 0;
     for (int r = 0; r < options.restarts; ++r) {
       Layer layer = RoomLayer(state, floor, {});
       Rng rng(options.seed * kSplitMix64Gamma + static_cast<uint64_t>(r) + 1);
       const LayerCost cost = Construct(layer, rng, r == 0 ? 0.0 : 0.3);
-      const bool better = cost.hard < best_cost.hard - kFeasible ||
-                          (std::abs(cost.hard - best_cost.hard) <= kFeasible && cost.soft < best_cost.soft);
+      int trouble = 0;
+      if (options.functional_groups) {
+        const auto before = state.placements;
+        WriteLayer(layer);
+        trouble = GroupTrouble(true);
+        state.placements = before;
+      }
+      const bool repairable = cost.hard <= kRepairable && best_cost.hard <= kRepairable;
+      const bool better = repairable && trouble != best_trouble
+                              ? trouble < best_trouble
+                              : cost.hard < best_cost.hard - kFeasible ||
+                                    (std::abs(cost.hard - best_cost.hard) <= kFeasible && cost.soft < best_cost.soft);
       if (better) {
         best_cost = cost;
+        best_trouble = trouble;
         best_layer = std::move(layer);
       }
-      if (best_cost.hard <= kFeasible) break;
+      if (best_cost.hard <= kFeasible && best_trouble == 0) break;
     }
     if (best_layer) WriteLayer(*best_layer);
     if (options.functional_groups) Regroup();
@@ -652,10 +670,10 @@ struct RoomSolver::Impl {
       case GroupRole::kSideTable: return SideTableProblem(self, hub);
       case GroupRole::kArmchair: return ArmchairProblem(self, hub.c);
       case GroupRole::kTvStand: {  // the TV on it where there is one (what the functional check measures)
-        Point tv = self.c;
+        OrientedBox tv = self;
         for (int c : state.children[i])
           if (state.objects[c].category == "tv") {
-            tv = state.WorldBox(c).c;
+            tv = state.WorldBox(c);
             break;
           }
         return TvProblem(hub, tv);

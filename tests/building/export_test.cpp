@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include "building/export.h"
 #include "building/glb_writer.h"
+#include "building/materials.h"
 #include "test_support.h"
 
 using namespace villa;
@@ -77,14 +79,20 @@ TEST_CASE("the .glb re-imports with a node per level, room and element, and the 
   CHECK(roof.bounds.max.x - roof.bounds.min.x == Approx(9.0));
   CHECK(roof.bounds.max.z - roof.bounds.min.z == Approx(7.0));
   CHECK(roof.bounds.min.y == Approx(3 * 2.8).epsilon(1e-6));
-  // Materials: glass is transparent and blended; a floor takes its category's colour.
+  // Materials: glass is transparent and blended; a floor is what its room type is laid with (the kitchen's
+  // tile), not the plan's zone colour.
   std::map<std::string, SceneMaterialInfo> materials;
   for (const auto& m : scene->materials) materials[m.name] = m;
   REQUIRE(materials.count("glass"));
   CHECK(materials["glass"].alpha < 1.0);
   CHECK(materials["glass"].alpha_mode == "BLEND");
-  REQUIRE(materials.count("floor-kitchen"));
-  CHECK(materials["floor-kitchen"].color.r == Approx(gltf::SrgbToLinear(CategoryColor(Category::kKitchen).r)).margin(1e-6));
+  MeshPart kitchen_floor;
+  kitchen_floor.category = Category::kKitchen;
+  const PartMaterial tile = MaterialOf(kitchen_floor);
+  CHECK(tile.name == "floor-porcelain");
+  REQUIRE(materials.count(tile.name));
+  CHECK(materials[tile.name].color.r == Approx(gltf::SrgbToLinear(tile.color.r)).margin(1e-6));
+  CHECK(std::abs(tile.color.r - CategoryColor(Category::kKitchen).r) > 0.05);
   CHECK(materials["exterior-wall"].alpha == Approx(1.0));
   fs::remove_all(dir);
 }
@@ -264,10 +272,59 @@ TEST_CASE("issue 31: materials by what they are made of: one name each, bare met
   CHECK(metallic("mirror") > 0.5);
   CHECK(metallic("gold-brocade") == 0.0);  // a fabric
   CHECK(metallic("white-enamel") == 0.0);  // a painted finish
-  CHECK(metallic("floor-kitchen") == 0.0);
+  for (const auto& [name, m] : by_name)
+    if (name.rfind("floor-", 0) == 0) CHECK(metallic(name) == 0.0);
   // The ceiling is one material, unlike every floor's.
   REQUIRE(by_name.count("ceiling"));
   const auto ceiling = by_name["ceiling"]["pbrMetallicRoughness"]["baseColorFactor"];
   for (const auto& [name, m] : by_name)
     if (name.rfind("floor-", 0) == 0) CHECK(m["pbrMetallicRoughness"]["baseColorFactor"] != ceiling);
 }
+
+namespace {
+
+TEST_CASE("issue 31: floors by what they are laid with and walls painted in the villa's style") {
+  // Tile where water is, stone in halls and outside, carpet for children (and a classic villa's bedrooms),
+  // wood elsewhere.
+  CHECK(FinishOf(Category::kKitchen, "modern") == FloorFinish::kTile);
+  CHECK(FinishOf(Category::kBathroom, "rustic") == FloorFinish::kTile);
+  CHECK(FinishOf(Category::kUtilityRoom, "modern") == FloorFinish::kStone);
+  CHECK(FinishOf(Category::kBalcony, "classic") == FloorFinish::kStone);
+  CHECK(FinishOf(Category::kChildrenRoom, "scandinavian") == FloorFinish::kCarpet);
+  CHECK(FinishOf(Category::kBedroom, "classic") == FloorFinish::kCarpet);
+  CHECK(FinishOf(Category::kBedroom, "modern") == FloorFinish::kWood);
+  CHECK(FinishOf(Category::kLivingRoom, "rustic") == FloorFinish::kWood);
+
+  // The same building in each style: its own floors and paint, every floor material named once.
+  std::map<std::string, std::string> living_floor;
+  std::set<std::string> names;
+  for (const char* style : {"modern", "classic", "rustic", "scandinavian"}) {
+    BuildingMesh b = ThreeFloorBuilding();
+    b.style = style;
+    auto bytes = BuildingToGlb(b);
+    REQUIRE(bytes);
+    const auto json = GlbJson(*bytes);
+    std::map<std::string, nlohmann::json> by_name;
+    for (const auto& m : json["materials"]) by_name[m["name"]] = m;
+    for (const MeshPart& part : b.parts) {
+      if (part.kind != PartKind::kFloor) continue;
+      const PartMaterial m = MaterialOf(part, style);
+      INFO(style << " " << part.name << " " << m.name);
+      REQUIRE(by_name.count(m.name));
+      CHECK(by_name[m.name]["pbrMetallicRoughness"]["baseColorFactor"][0].get<double>() == Approx(gltf::SrgbToLinear(m.color.r)).margin(1e-6));
+      if (part.category == Category::kLivingRoom) living_floor[style] = m.name;
+      names.insert(m.name);
+    }
+  }
+  CHECK(living_floor["modern"] == "floor-oak-grey");
+  CHECK(living_floor["classic"] == "floor-walnut");
+  CHECK(living_floor["rustic"] == "floor-pine");
+  CHECK(living_floor["scandinavian"] == "floor-oak-white");
+  // A style nobody knows reads as modern; the walls' paint follows the style.
+  MeshPart wall;
+  wall.kind = PartKind::kInteriorWall;
+  CHECK(MaterialOf(wall, "baroque-ish").color.r == MaterialOf(wall, "modern").color.r);
+  CHECK(MaterialOf(wall, "rustic").color.b < MaterialOf(wall, "scandinavian").color.b);
+}
+
+}  // namespace

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "building/materials.h"
 #include "building/view_scene.h"
 #include "test_support.h"
 
@@ -45,10 +46,16 @@ TEST_CASE("a cut-away seen from above shows each room's floor colour, the cut wa
   auto img = RenderView(b, cam, o);
   REQUIRE(img);
   CHECK(img->width == 160);
-  CHECK(Near(PixelAt(*img, cam, 6.5, 2.0), CategoryColor(Category::kKitchen)));
-  CHECK(Near(PixelAt(*img, cam, 11.5, 2.0), CategoryColor(Category::kDiningRoom)));
-  CHECK(Near(PixelAt(*img, cam, 1.5, 8.5), CategoryColor(Category::kBathroom)));
-  CHECK(Near(PixelAt(*img, cam, 10.0, 7.0), CategoryColor(Category::kLivingRoom)));
+  // Each floor in its finish (issue 31): the kitchen's and the bathroom's tile, the dining and living rooms' oak.
+  auto floor = [](Category c) {
+    MeshPart part;
+    part.category = c;
+    return MaterialOf(part).color;
+  };
+  CHECK(Near(PixelAt(*img, cam, 6.5, 2.0), floor(Category::kKitchen)));
+  CHECK(Near(PixelAt(*img, cam, 11.5, 2.0), floor(Category::kDiningRoom)));
+  CHECK(Near(PixelAt(*img, cam, 1.5, 8.5), floor(Category::kBathroom)));
+  CHECK(Near(PixelAt(*img, cam, 10.0, 7.0), floor(Category::kLivingRoom)));
   CHECK(Near(PixelAt(*img, cam, 14.0 - 0.12, 4.5), o.section_color));  // the cut east wall
   CHECK(Near(PixelAt(*img, cam, 14.6, 2.0), o.background));
   // Without the cut, the roof covers the top floor's rooms.

@@ -179,6 +179,16 @@ TEST_CASE("A seating group: the sofa faces the TV at a viewing distance with the
     INFO(FunctionalJson(c).dump());
     CHECK(c.seating_ok == 0);
   }
+  SECTION("the screen turned to the side: the sofa faces it, it shows the sofa its end") {
+    Case l = Living();
+    l["tv-stand-0"].pose->yaw = kPi / 2;
+    l["tv-0"].pose->yaw = kPi / 2;
+    const FunctionalCheck c = l.Check();
+    CHECK(c.seating_ok == 0);
+    CHECK(Group(c, "seating")->problems == std::vector<std::string>{"the TV is turned 90 degrees from the sofa (<= 45)"});
+    l["tv-stand-0"].pose->yaw = l["tv-0"].pose->yaw = 40.0 * kPi / 180.0;  // turned 40 degrees: still seen
+    CHECK(l.Check().seating_ok == 1);
+  }
   SECTION("the coffee table 2 m away, behind the sofa's front") {
     Case l = Living();
     l["coffee-table-0"].pose = scene::Pose{5.3, 0.5, 0.0, 0.0};
