@@ -546,6 +546,7 @@ StairSide ChooseStairSide(const Layout& layout, const Room& room, const StairBox
 struct StairPlan {
   Ring footprint;
   TriangleMesh mesh;
+  std::array<Point, 2> arrival{};  // where the upper flight meets the slab above: the hole's open edge
 };
 
 // The stair of one level of a stack, starting from `side`'s strip (the one the stair below arrives on).
@@ -602,11 +603,64 @@ std::optional<StairPlan> PlanStair(const Room& room, const StairBox& box, StairS
                   Add(origin, Add(Scale(along, depth), Scale(across, width))),
                   Add(origin, Add(Scale(along, run_end), Scale(across, width)))};
   plan.mesh.Append(ExtrudePlan(CleanRing(landing, 1e-9), {}, z0 + (risers - 2) * r, z0 + risers * r));
+  plan.arrival = {Add(origin, Add(Scale(along, arrival), Scale(across, width / 2.0))), Add(origin, Add(Scale(along, arrival), Scale(across, width)))};
   plan.footprint = CleanRing({Add(origin, Scale(along, arrival)), Add(origin, Scale(along, depth)),
                               Add(origin, Add(Scale(along, depth), Scale(across, width))),
                               Add(origin, Add(Scale(along, arrival), Scale(across, width)))},
                              1e-9);
   return plan;
+}
+
+// Issue 31: a railing along a to b standing on a floor at z: posts at most 1.0 m apart (one at each end),
+// a handrail at 1.0 m and a mid rail at 0.5 m, `inward` (a unit vector across the line) putting the posts
+// kRailInset inside the line. Rails and posts are separate boxes (closed solids).
+constexpr double kRailHeight = 1.0, kRailPost = 0.04, kRailBar = 0.05, kRailInset = 0.05;
+TriangleMesh RailingAlong(Point a, Point b, Point inward, double z) {
+  TriangleMesh out;
+  const double length = Distance(a, b);
+  if (length < 0.3) return out;
+  const Point d = Scale(Sub(b, a), 1.0 / length);
+  auto box = [&](double t0, double t1, double w, double z0, double z1) {
+    const Point c0 = Add(Add(a, Scale(d, t0)), Scale(inward, kRailInset - w / 2.0));
+    const Point c1 = Add(Add(a, Scale(d, t1)), Scale(inward, kRailInset - w / 2.0));
+    Ring r = {c0, c1, Add(c1, Scale(inward, w)), Add(c0, Scale(inward, w))};
+    if (SignedArea(r) < 0) std::reverse(r.begin(), r.end());
+    out.Append(ExtrudePlan(r, {}, z0, z1));
+  };
+  const int spans = std::max(1, static_cast<int>(std::ceil((length - kRailPost) / 1.0)));
+  for (int k = 0; k <= spans; ++k) {
+    const double t = kRailPost / 2.0 + (length - kRailPost) * k / spans;
+    box(t - kRailPost / 2.0, t + kRailPost / 2.0, kRailPost, z, z + kRailHeight - kRailBar);
+  }
+  box(0.0, length, kRailBar, z + kRailHeight - kRailBar, z + kRailHeight);
+  box(0.0, length, kRailBar * 0.6, z + 0.5 - kRailBar * 0.3, z + 0.5 + kRailBar * 0.3);
+  return out;
+}
+
+// The parts of segment a-b farther than `gap` from every edge of `rings` (sampled every 5 cm): where no
+// wall already stands.
+std::vector<std::array<Point, 2>> Unwalled(Point a, Point b, const std::vector<const Ring*>& rings, double gap) {
+  std::vector<std::array<Point, 2>> out;
+  const double length = Distance(a, b);
+  const int n = std::max(2, static_cast<int>(std::ceil(length / 0.05)));
+  int start = -1;
+  auto free_at = [&](int k) {
+    const Point p = Add(a, Scale(Sub(b, a), static_cast<double>(k) / n));
+    for (const Ring* r : rings)
+      if (DistanceToBoundary(p, *r) < gap) return false;
+    return true;
+  };
+  for (int k = 0; k <= n + 1; ++k) {
+    const bool free = k <= n && free_at(k);
+    if (free && start < 0) start = k;
+    if (!free && start >= 0) {
+      const Point p0 = Add(a, Scale(Sub(b, a), static_cast<double>(start) / n));
+      const Point p1 = Add(a, Scale(Sub(b, a), static_cast<double>(k - 1) / n));
+      if (Distance(p0, p1) >= 0.3) out.push_back({p0, p1});
+      start = -1;
+    }
+  }
+  return out;
 }
 
 bool RingInside(const Ring& inner, const Ring& outer) {
@@ -653,6 +707,7 @@ std::string_view PartKindName(PartKind kind) {
     case PartKind::kDoorLeaf: return "door";
     case PartKind::kWindowGlass: return "glass";
     case PartKind::kStair: return "stair";
+    case PartKind::kRailing: return "railing";
   }
   return "part";
 }
@@ -758,13 +813,19 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
       part.element = room.name();
       part.mesh = std::move(stair->mesh);
       building.parts.push_back(std::move(part));
-      building.stairs.push_back({level, room.name(), stair->footprint, stair->footprint});
+      building.stairs.push_back({level, room.name(), stair->footprint, stair->footprint, stair->arrival});
       building.slab_holes[level + 1].push_back(stair->footprint);
     }
   }
 
   // Slabs: room floors (with the holes inside them), terraces over the part of the level below that this
   // level does not cover, and the roof.
+  struct TerraceOutline {
+    std::string name;
+    int level;
+    Ring outer;
+  };
+  std::vector<TerraceOutline> terrace_outlines;
   for (int level = 0; level < levels; ++level) {
     const double z0 = level * kLevelHeight;
     std::vector<bool> hole_used(building.slab_holes[level].size(), false);
@@ -800,6 +861,7 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         part.kind = PartKind::kTerrace;
         part.level = level;
         part.mesh = ExtrudePlan(CleanRing(region.outer), holes, z0, z0 + ts);
+        terrace_outlines.push_back({part.name, level, CleanRing(region.outer)});
         building.parts.push_back(std::move(part));
         ++k;
       }
@@ -822,6 +884,58 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
     roof.level = levels - 1;
     roof.mesh = ExtrudePlan(footprints[levels - 1], {}, levels * kLevelHeight, levels * kLevelHeight + ts);
     building.parts.push_back(std::move(roof));
+  }
+  // Railings (issue 31): round each stair hole on the floor above, but where the upper flight arrives and
+  // where a wall stands; along each terrace's edges but where the level's own walls rise from it.
+  for (const BuiltStair& st : building.stairs) {
+    if (st.hole.size() < 3) continue;
+    const int up = st.level + 1;
+    std::vector<const Ring*> walls;
+    for (int j : layout.RoomsOnLevel(up)) walls.push_back(&room_rings[j]);
+    TriangleMesh rail;
+    const bool ccw = SignedArea(st.hole) > 0;
+    for (size_t k = 0; k < st.hole.size(); ++k) {
+      const Point a = st.hole[k], b = st.hole[(k + 1) % st.hole.size()];
+      const Point d = Scale(Sub(b, a), 1.0 / std::max(Distance(a, b), 1e-12));
+      const Point out_of_hole = ccw ? Point{d.y, -d.x} : Point{-d.y, d.x};  // onto the floor beside the hole
+      // The edge the upper flight arrives on stays open along the arrival: guarded on either side of it.
+      std::vector<std::array<Point, 2>> spans = {{a, b}};
+      if (PointSegmentDistance(st.arrival[0], {a, b}) < kOnLine && PointSegmentDistance(st.arrival[1], {a, b}) < kOnLine) {
+        const double t0 = Dot(Sub(st.arrival[0], a), d), t1 = Dot(Sub(st.arrival[1], a), d);
+        spans = {{a, Add(a, Scale(d, std::min(t0, t1)))}, {Add(a, Scale(d, std::max(t0, t1))), b}};
+      }
+      for (const auto& [p, q] : spans)
+        if (Distance(p, q) >= 0.3)
+          for (const auto& [s0, s1] : Unwalled(p, q, walls, 0.25)) rail.Append(RailingAlong(s0, s1, out_of_hole, building.FloorZ(up)));
+    }
+    if (rail.triangles.empty()) continue;
+    MeshPart part;
+    part.name = "railing_" + st.room;
+    part.kind = PartKind::kRailing;
+    part.level = up;
+    part.category = Category::kUtilityRoom;
+    part.element = st.room;
+    part.mesh = std::move(rail);
+    building.parts.push_back(std::move(part));
+  }
+  for (const auto& [name, level, outer] : terrace_outlines) {
+    const std::vector<const Ring*> walls = {&footprints[level]};
+    TriangleMesh rail;
+    const bool ccw = SignedArea(outer) > 0;
+    for (size_t k = 0; k < outer.size(); ++k) {
+      const Point a = outer[k], b = outer[(k + 1) % outer.size()];
+      const Point d = Scale(Sub(b, a), 1.0 / std::max(Distance(a, b), 1e-12));
+      const Point in = ccw ? Point{-d.y, d.x} : Point{d.y, -d.x};  // into the terrace
+      for (const auto& [s0, s1] : Unwalled(a, b, walls, 0.2)) rail.Append(RailingAlong(s0, s1, in, building.FloorZ(level)));
+    }
+    if (rail.triangles.empty()) continue;
+    MeshPart part;
+    part.name = "railing_" + name;
+    part.kind = PartKind::kRailing;
+    part.level = level;
+    part.element = name;
+    part.mesh = std::move(rail);
+    building.parts.push_back(std::move(part));
   }
 
   // Walls, openings, leaves and glass, level by level.

@@ -10,6 +10,7 @@
 // N*2.8 + slab tall. The slab of level L >= 1 covers the footprint of level L-1 (it is the ceiling of
 // the floor below; the part outside level L's footprint is a flat roof terrace).
 #include <optional>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,7 @@ enum class PartKind {
   kDoorLeaf,      // doors and the entrance
   kWindowGlass,
   kStair,
+  kRailing,       // issue 31: round stair holes and along terraces' open edges (posts and two rails, 1 m)
 };
 std::string_view PartKindName(PartKind kind);  // "floor", "terrace", "roof", "exterior-wall", ...
 
@@ -80,6 +82,7 @@ struct BuiltStair {
   std::string room;      // the utility room holding it
   Ring footprint;        // plan outline of flights and landing, CCW
   Ring hole;             // the hole cut into the slab of level + 1 (empty when there is none)
+  std::array<Point, 2> arrival{};  // the edge of the hole where the upper flight arrives (no railing there)
 };
 
 struct BuildingMesh {

@@ -142,9 +142,10 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
         case PartKind::kDoorLeaf: groups["doors" + suffix].push_back(node); break;
         case PartKind::kWindowGlass: groups["windows" + suffix].push_back(node); break;
         case PartKind::kStair: groups["stairs" + suffix].push_back(node); break;
+        case PartKind::kRailing: groups["railings" + suffix].push_back(node); break;
       }
     }
-    for (const char* group : {"walls", "doors", "windows", "stairs", "terraces"}) {
+    for (const char* group : {"walls", "doors", "windows", "stairs", "railings", "terraces"}) {
       auto it = groups.find(group + suffix);
       if (it == groups.end()) continue;
       aiNode* g = NewNode(it->first, nullptr);
@@ -332,9 +333,10 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
         case PartKind::kDoorLeaf: groups["doors" + suffix].push_back(index); break;
         case PartKind::kWindowGlass: groups["windows" + suffix].push_back(index); break;
         case PartKind::kStair: groups["stairs" + suffix].push_back(index); break;
+        case PartKind::kRailing: groups["railings" + suffix].push_back(index); break;
       }
     }
-    for (const char* group : {"walls", "doors", "windows", "stairs", "terraces"}) {
+    for (const char* group : {"walls", "doors", "windows", "stairs", "railings", "terraces"}) {
       auto it = groups.find(group + suffix);
       if (it == groups.end()) continue;
       gltf::Node g;

@@ -76,6 +76,7 @@ PartMaterial MaterialOf(const MeshPart& part, std::string_view style) {
     case PartKind::kDoorLeaf: return {"door", {0.55, 0.38, 0.22}, 1.0, 0.6};
     case PartKind::kWindowGlass: return {"glass", {0.62, 0.80, 0.92}, 0.35, 0.05};
     case PartKind::kStair: return {"stair", {0.62, 0.60, 0.58}, 1.0, 0.85};
+    case PartKind::kRailing: return {"railing-steel", {0.30, 0.31, 0.33}, 1.0, 0.4, 1.0};
   }
   return {"default", {0.8, 0.8, 0.8}, 1.0, 0.9};
 }

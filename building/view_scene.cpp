@@ -17,7 +17,8 @@ CutAway CutAwayOf(PartKind kind) {
     case PartKind::kStair: return CutAway::kCut;
     case PartKind::kRoof: return CutAway::kRemove;
     case PartKind::kFloor:
-    case PartKind::kTerrace: return CutAway::kKeep;
+    case PartKind::kTerrace:
+    case PartKind::kRailing: return CutAway::kKeep;
   }
   return CutAway::kKeep;
 }

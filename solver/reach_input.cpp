@@ -242,7 +242,8 @@ Result<ReachInput> BuildingReachInput(const Layout& layout, const BuildingMesh& 
     ObstacleKind kind;
     switch (part.kind) {
       case PartKind::kExteriorWall:
-      case PartKind::kInteriorWall: kind = ObstacleKind::kWall; break;
+      case PartKind::kInteriorWall:
+      case PartKind::kRailing: kind = ObstacleKind::kWall; break;
       case PartKind::kDoorLeaf: kind = ObstacleKind::kDoorLeaf; break;
       case PartKind::kWindowGlass: kind = ObstacleKind::kWindow; break;
       default: continue;  // slabs are walked on; stairs are their footprints below

@@ -4,7 +4,9 @@
 
 #include "building/building.h"
 #include "mesh/solids.h"
+#include "layout/geometry.h"
 #include "layout/layout_io.h"
+#include "mesh/geometry2d.h"
 #include "test_support.h"
 
 using namespace villa;
@@ -267,4 +269,53 @@ TEST_CASE("a wall ending on the facade beside a courtyard notch stops at the ext
     }
   }
   CHECK(b->CountParts(PartKind::kDoorLeaf) == static_cast<int>(layout->doors.size() + layout->entrances.size()));
+}
+
+TEST_CASE("issue 31: railings guard every stair hole but where the flight arrives, and every terrace's open edge") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  auto part = [&](const std::string& name) -> const MeshPart* {
+    for (const MeshPart& p : b.parts)
+      if (p.name == name) return &p;
+    return nullptr;
+  };
+  REQUIRE(b.stairs.size() == 2);
+  for (const BuiltStair& st : b.stairs) {
+    INFO(st.room);
+    const MeshPart* rail = part("railing_" + st.room);
+    REQUIRE(rail);
+    CHECK(rail->kind == PartKind::kRailing);
+    CHECK(rail->level == st.level + 1);
+    // Standing on the floor above, 1 m tall.
+    const Box3 box = rail->mesh.Bounds();
+    CHECK(box.min.z == Approx(b.FloorZ(st.level + 1)).margin(1e-9));
+    CHECK(box.max.z == Approx(b.FloorZ(st.level + 1) + 1.0).margin(1e-9));
+    CHECK(CheckSolid(rail->mesh).ok());
+    // Along the hole, on the floor beside it: every vertex within 0.15 m of the hole's outline, none inside.
+    for (const Vec3& v : rail->mesh.vertices) {
+      CHECK(DistanceToBoundary({v.x, v.y}, st.hole) < 0.15);
+      CHECK(!PointInRing({v.x, v.y}, st.hole, 0.0));
+    }
+    // The way off the flight stays open: nothing within 0.3 m of the arrival edge's middle.
+    const Point mid = geo::Scale(geo::Add(st.arrival[0], st.arrival[1]), 0.5);
+    for (const Vec3& v : rail->mesh.vertices) CHECK(Distance(mid, {v.x, v.y}) > 0.3);
+    // And it stands where a person could fall: it guards more than the arrival edge's length.
+    CHECK((box.max.x - box.min.x) + (box.max.y - box.min.y) > Distance(st.arrival[0], st.arrival[1]));
+  }
+  // The terrace: a railing on its slab, inside its outline, not along the wall of the level above.
+  int terraces = 0;
+  for (const MeshPart& t : b.parts) {
+    if (t.kind != PartKind::kTerrace) continue;
+    ++terraces;
+    const MeshPart* rail = part("railing_" + t.name);
+    REQUIRE(rail);
+    const Box3 slab = t.mesh.Bounds(), box = rail->mesh.Bounds();
+    CHECK(box.min.z == Approx(slab.max.z).margin(1e-9));
+    CHECK(box.max.z == Approx(slab.max.z + 1.0).margin(1e-9));
+    CHECK(box.min.x >= slab.min.x - 1e-9);
+    CHECK(box.max.x <= slab.max.x + 1e-9);
+    CHECK(box.min.y >= slab.min.y - 1e-9);
+    CHECK(box.max.y <= slab.max.y + 1e-9);
+  }
+  CHECK(terraces >= 1);
+  CHECK(b.CountParts(PartKind::kRailing) == static_cast<int>(b.stairs.size()) + terraces);
 }

@@ -96,7 +96,9 @@ TEST_CASE("the scene of a building cuts walls, removes the roof and keeps the sl
     CHECK(view.mesh == &part.mesh);
     CHECK(view.level == part.level);
     const CutAway expected = part.kind == PartKind::kRoof                                   ? CutAway::kRemove
-                             : part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace ? CutAway::kKeep
+                             : part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace ||
+                                       part.kind == PartKind::kRailing
+                                 ? CutAway::kKeep
                                                                                                 : CutAway::kCut;
     CHECK(view.cut == expected);
     CHECK((view.alpha < 1.0) == (part.kind == PartKind::kWindowGlass));
