@@ -851,6 +851,29 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
     j["reachability"] = s.reach_note.empty() ? Json(nullptr) : Json{{"note", s.reach_note}};
   }
   j["physics"] = villa.physics ? physics::SettleSummaryJson(*villa.physics, options.settle) : Json(nullptr);
+  // Issue 31's budget: what furnished.glb draws (each placed object's mesh counted once per placement).
+  {
+    size_t building = 0, furniture = 0;
+    for (const MeshPart& part : villa.building.parts) building += part.mesh.triangles.size();
+    std::map<std::string, size_t> of_asset;
+    for (const scene::SceneObject& o : villa.scene.objects) {
+      if (!o.pose) continue;
+      auto [it, added] = of_asset.emplace(o.asset, 0);
+      if (added)
+        if (auto mesh = villa.library->Mesh(o.asset); mesh.ok())
+          for (const AssetMeshPart& part : (*mesh)->parts) it->second += part.mesh.triangles.size();
+      furniture += it->second;
+    }
+    size_t heaviest = 0;
+    std::string heaviest_asset;
+    for (const auto& [asset, n] : of_asset)
+      if (n > heaviest) heaviest = n, heaviest_asset = asset;
+    j["triangles"] = {{"total", building + furniture},
+                      {"building", building},
+                      {"furniture", furniture},
+                      {"assets", of_asset.size()},
+                      {"heaviest_asset", heaviest_asset.empty() ? Json(nullptr) : Json{{"id", heaviest_asset}, {"triangles", heaviest}}}};
+  }
   if (!options.report_timings) {
     StripTimings(j);
     j.erase("jobs");  // how many rooms ran at once: the villa is the same whatever it was

@@ -139,6 +139,19 @@ TEST_CASE("villa furnish furnishes a small house: files, a valid scene, the same
   // The report: totals and a record per room with its metrics, energy trace and outcome.
   auto report = nlohmann::json::parse(Read(one.path / "report.json"));
   CHECK(report["totals"]["rooms"] == 6);
+  // The triangle budget (issue 31): what an importer of furnished.glb draws, every instance counted.
+  {
+    auto glb = ReadSceneInfo(one.path / "furnished.glb");
+    REQUIRE(glb.ok());
+    size_t drawn = 0;
+    for (const SceneNodeInfo& n : glb->nodes)
+      for (int m : n.meshes) drawn += glb->meshes[m].triangles;
+    const auto& t = report["triangles"];
+    CHECK(t["total"].get<size_t>() == drawn);
+    CHECK(t["total"].get<size_t>() == t["building"].get<size_t>() + t["furniture"].get<size_t>());
+    CHECK(t["furniture"].get<size_t>() > t["building"].get<size_t>());
+    CHECK(t["heaviest_asset"]["triangles"].get<size_t>() > 0);
+  }
   CHECK(report["totals"]["CR"] == 0.0);
   CHECK(report["totals"]["objects"] == static_cast<int>(s->objects.size()));
   REQUIRE(report["rooms"].size() == 6);
