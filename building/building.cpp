@@ -708,6 +708,7 @@ std::string_view PartKindName(PartKind kind) {
     case PartKind::kWindowGlass: return "glass";
     case PartKind::kStair: return "stair";
     case PartKind::kRailing: return "railing";
+    case PartKind::kWindowFrame: return "window-frame";
   }
   return "part";
 }
@@ -1022,6 +1023,22 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         part.kind = PartKind::kWindowGlass;
         double g = options.glass_thickness / 2.0;
         part.mesh = BoxInFrame(f, p.cut.s0 + gap, p.cut.s1 - gap, -g, g, p.cut.z0 + gap, p.cut.z1 - gap);
+        // Its frame (issue 31): jambs, head and bottom rail round the pane, 6 cm wide and 7 cm deep (within
+        // the wall's thickness: nothing stands out into the room), a separate solid each.
+        const double fw = 0.06, fd = std::min(0.07, f.thickness - 0.02) / 2.0;
+        const double s0 = p.cut.s0 + gap, s1 = p.cut.s1 - gap, z0 = p.cut.z0 + gap, z1 = p.cut.z1 - gap;
+        if (s1 - s0 > 3 * fw && z1 - z0 > 3 * fw) {
+          MeshPart frame;
+          frame.name = "frame_" + p.name;
+          frame.kind = PartKind::kWindowFrame;
+          frame.level = level;
+          frame.element = p.element->name;
+          frame.mesh = BoxInFrame(f, s0, s0 + fw, -fd, fd, z0, z1);
+          frame.mesh.Append(BoxInFrame(f, s1 - fw, s1, -fd, fd, z0, z1));
+          frame.mesh.Append(BoxInFrame(f, s0 + fw + gap, s1 - fw - gap, -fd, fd, z1 - fw, z1));
+          frame.mesh.Append(BoxInFrame(f, s0 + fw + gap, s1 - fw - gap, -fd, fd, z0, z0 + fw));
+          building.parts.push_back(std::move(frame));
+        }
       } else {
         part.kind = PartKind::kDoorLeaf;
         double lt = options.door_leaf_thickness;

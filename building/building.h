@@ -49,6 +49,7 @@ enum class PartKind {
   kWindowGlass,
   kStair,
   kRailing,       // issue 31: round stair holes and along terraces' open edges (posts and two rails, 1 m)
+  kWindowFrame,   // issue 31: a window's frame round its pane, within the wall's opening
 };
 std::string_view PartKindName(PartKind kind);  // "floor", "terrace", "roof", "exterior-wall", ...
 

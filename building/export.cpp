@@ -140,7 +140,8 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
         case PartKind::kExteriorWall:
         case PartKind::kInteriorWall: groups["walls" + suffix].push_back(node); break;
         case PartKind::kDoorLeaf: groups["doors" + suffix].push_back(node); break;
-        case PartKind::kWindowGlass: groups["windows" + suffix].push_back(node); break;
+        case PartKind::kWindowGlass:
+        case PartKind::kWindowFrame: groups["windows" + suffix].push_back(node); break;
         case PartKind::kStair: groups["stairs" + suffix].push_back(node); break;
         case PartKind::kRailing: groups["railings" + suffix].push_back(node); break;
       }
@@ -331,7 +332,8 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
         case PartKind::kExteriorWall:
         case PartKind::kInteriorWall: groups["walls" + suffix].push_back(index); break;
         case PartKind::kDoorLeaf: groups["doors" + suffix].push_back(index); break;
-        case PartKind::kWindowGlass: groups["windows" + suffix].push_back(index); break;
+        case PartKind::kWindowGlass:
+        case PartKind::kWindowFrame: groups["windows" + suffix].push_back(index); break;
         case PartKind::kStair: groups["stairs" + suffix].push_back(index); break;
         case PartKind::kRailing: groups["railings" + suffix].push_back(index); break;
       }

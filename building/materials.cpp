@@ -77,6 +77,7 @@ PartMaterial MaterialOf(const MeshPart& part, std::string_view style) {
     case PartKind::kWindowGlass: return {"glass", {0.62, 0.80, 0.92}, 0.35, 0.05};
     case PartKind::kStair: return {"stair", {0.62, 0.60, 0.58}, 1.0, 0.85};
     case PartKind::kRailing: return {"railing-steel", {0.30, 0.31, 0.33}, 1.0, 0.4, 1.0};
+    case PartKind::kWindowFrame: return {"window-frame", {0.95, 0.95, 0.94}, 1.0, 0.5};
   }
   return {"default", {0.8, 0.8, 0.8}, 1.0, 0.9};
 }

@@ -14,6 +14,7 @@ CutAway CutAwayOf(PartKind kind) {
     case PartKind::kInteriorWall:
     case PartKind::kDoorLeaf:
     case PartKind::kWindowGlass:
+    case PartKind::kWindowFrame:
     case PartKind::kStair: return CutAway::kCut;
     case PartKind::kRoof: return CutAway::kRemove;
     case PartKind::kFloor:

@@ -186,7 +186,7 @@ Result<SceneRoomProblem> RoomProblemOf(const scene::RoomContext& context, const 
   for (const MeshPart& part : building.parts) {
     const bool solid = part.kind == PartKind::kExteriorWall || part.kind == PartKind::kInteriorWall ||
                        part.kind == PartKind::kDoorLeaf || part.kind == PartKind::kWindowGlass || part.kind == PartKind::kStair ||
-                       part.kind == PartKind::kRailing;
+                       part.kind == PartKind::kRailing || part.kind == PartKind::kWindowFrame;
     if (!solid || part.mesh.triangles.empty()) continue;
     if (part.level != context.level && !(part.kind == PartKind::kStair && part.level + 1 == context.level)) continue;
     const Box3 b = part.mesh.Bounds();

@@ -319,3 +319,30 @@ TEST_CASE("issue 31: railings guard every stair hole but where the flight arrive
   CHECK(terraces >= 1);
   CHECK(b.CountParts(PartKind::kRailing) == static_cast<int>(b.stairs.size()) + terraces);
 }
+
+TEST_CASE("issue 31: every window has a frame round its pane, within the wall's thickness") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  const Layout& layout = ThreeFloorLayout();
+  CHECK(b.CountParts(PartKind::kWindowFrame) == static_cast<int>(layout.windows.size()));
+  for (const MeshPart& pane : b.parts) {
+    if (pane.kind != PartKind::kWindowGlass) continue;
+    INFO(pane.name);
+    const MeshPart* frame = nullptr;
+    for (const MeshPart& p : b.parts)
+      if (p.kind == PartKind::kWindowFrame && p.name == "frame_" + pane.name) frame = &p;
+    REQUIRE(frame);
+    CHECK(frame->level == pane.level);
+    CHECK(frame->element == pane.element);
+    // Its outline is the pane's: the same extent up and along the wall; no thicker than the wall.
+    const Box3 g = pane.mesh.Bounds(), f = frame->mesh.Bounds();
+    CHECK(f.min.z == Approx(g.min.z).margin(1e-9));
+    CHECK(f.max.z == Approx(g.max.z).margin(1e-9));
+    CHECK(std::max(f.max.x - f.min.x, f.max.y - f.min.y) == Approx(std::max(g.max.x - g.min.x, g.max.y - g.min.y)).margin(0.08));
+    if (std::min(g.max.x - g.min.x, g.max.y - g.min.y) < 0.05)  // a wall along x or y (not an angled one)
+      CHECK(std::min(f.max.x - f.min.x, f.max.y - f.min.y) <= 0.07 + 1e-9);
+    // Four closed bars leave the pane's middle clear.
+    CHECK(frame->mesh.triangles.size() == 4 * 12);
+    const Vec3 mid{(g.min.x + g.max.x) / 2, (g.min.y + g.max.y) / 2, (g.min.z + g.max.z) / 2};
+    for (const Vec3& v : frame->mesh.vertices) CHECK(std::abs(v.z - mid.z) + std::hypot(v.x - mid.x, v.y - mid.y) > 0.1);
+  }
+}
