@@ -1365,6 +1365,7 @@ struct RoomSolver::Impl {
   // when anything moved or went.
   bool ClearSightlines() {
     constexpr double kStrip = 0.4, kLow = 0.6;  // m: half the strip's width; what is lower leaves the view free
+    constexpr double kKnees = 0.45;             // m before the sofa kept for the legs of who sits on it
     bool changed = false;
     for (size_t t = 0; t < state.objects.size(); ++t) {
       const Membership m = GroupMembership(state, static_cast<int>(t));
@@ -1381,9 +1382,17 @@ struct RoomSolver::Impl {
         box.hy = kStrip;
         return box;
       };
+      // Issue 27: the sofa's knee room too, 0.45 m before it along its whole width (a floor lamp that its
+      // next_to edge put before the sofa's end, in `make run`'s living room).
+      auto knees = [&] {
+        OrientedBox box = state.WorldBox(state.Find(sofa_id));
+        box.c = geo::Add(box.c, geo::Scale(box.Front(), box.hy + 0.5 * kKnees));
+        box.hy = 0.5 * kKnees;
+        return box;
+      };
       auto blockers = [&] {
         std::vector<std::string> out;
-        const OrientedBox view = strip();
+        const OrientedBox view = strip(), knee = knees();
         for (size_t k = 0; k < state.objects.size(); ++k) {
           const int kk = static_cast<int>(k);
           if (state.parent[k] >= 0 || state.Hung(kk) || state.IsFloorCovering(kk) || state.objects[k].id == sofa_id ||
@@ -1391,7 +1400,7 @@ struct RoomSolver::Impl {
             continue;
           const OrientedBox box = state.WorldBox(kk);
           if (box.z1 - box.z0 < kLow || GroupMembership(state, kk).role == GroupRole::kCoffeeTable) continue;
-          if (PlanDepth(box, view) > 0.02) out.push_back(state.objects[k].id);
+          if (PlanDepth(box, view) > 0.02 || PlanDepth(box, knee) > 0.02) out.push_back(state.objects[k].id);
         }
         return out;
       };
@@ -1407,7 +1416,20 @@ struct RoomSolver::Impl {
         view.z_max = problem.floor_z + 3.0;
         view.name = "the view from the sofa to its TV";
         problem.keep_outs.push_back(view);
+        // And the whole floor between the sofa's front and the stand's, as wide as each: moved out of the
+        // knee room, a floor lamp is not to stand beside the coffee table in mid-room instead.
+        KeepOut between = view;
+        {
+          const OrientedBox so = state.WorldBox(state.Find(sofa_id)), st = state.WorldBox(state.Find(stand_id));
+          const Point sf = geo::Add(so.c, geo::Scale(so.Front(), so.hy)), tf = geo::Add(st.c, geo::Scale(st.Front(), st.hy));
+          between.polygon = {geo::Add(sf, geo::Scale(so.U(), so.hx)), geo::Add(sf, geo::Scale(so.U(), -so.hx)),
+                             geo::Add(tf, geo::Scale(st.U(), st.hx)), geo::Add(tf, geo::Scale(st.U(), -st.hx))};
+          if (SignedArea(between.polygon) < 0) std::reverse(between.polygon.begin(), between.polygon.end());
+        }
+        between.name = "the floor between the sofa and its TV";
+        problem.keep_outs.push_back(between);
         const std::optional<Slot> slot = FindSlot(k);
+        problem.keep_outs.pop_back();
         problem.keep_outs.pop_back();
         if (slot) {
           state.placements[k].wall = slot->wall;
@@ -1415,14 +1437,14 @@ struct RoomSolver::Impl {
           const std::vector<std::string> still = blockers();
           if (std::find(still.begin(), still.end(), id) == still.end() && CostAt(k).hard <= kHairline && GroupTrouble() <= trouble &&
               ExactlyClean()) {
-            LogMove(id, slot->pose, "stands between the sofa and its TV: to its best free place out of the view");
+            LogMove(id, slot->pose, "stands between the sofa and its TV or before the sofa: to its best free place out of the view");
             changed = true;
             continue;
           }
           state = saved;
         }
         if (IsProtected(state.objects[k].priority)) continue;
-        TakeRemoval(id, "stands between the sofa and its TV and no free place out of the view holds it: left out");
+        TakeRemoval(id, "stands between the sofa and its TV or before the sofa and no free place out of the view holds it: left out");
         changed = true;
       }
     }
