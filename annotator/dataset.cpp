@@ -64,7 +64,7 @@ Result<Dataset> LoadDataset(const std::filesystem::path& dir) {
     }
     if (auto shape = record.find("shape"); shape != record.end()) {
       if (!shape->is_string() || !IsShapeClass(shape->get<std::string>())) {
-        error = where + ": \"shape\": " + shape->dump() + " is not a footprint class (rectangle, L, U, T, H, irregular)";
+        error = where + ": \"shape\": " + shape->dump() + " is not a footprint class (rectangle, L, U, T, H, irregular, hexagon, octagon, trapezoid, cross, bay, angled-wing)";
         return false;
       }
       out.shape = shape->get<std::string>();

@@ -116,6 +116,11 @@ std::string FloorsNoun(int floors, const Voice& v, Rng& rng) {
 std::string ShapeAdjective(const std::string& shape, Rng& rng) {
   if (shape == "rectangle") return "rectangular";
   if (shape == "irregular") return rng.Chance(50) ? "irregularly shaped" : "irregular";
+  if (shape == "hexagon") return "hexagonal";
+  if (shape == "octagon") return "octagonal";
+  if (shape == "trapezoid") return "trapezoidal";
+  if (shape == "bay") return "bay-fronted";
+  if (shape == "angled-wing") return "angled-wing";
   return shape + "-shaped";
 }
 

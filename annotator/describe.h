@@ -57,7 +57,7 @@ struct Drafts {
   std::vector<Fact> fine_facts;
 };
 
-// `shape` is the footprint class of the dataset record ("rectangle", "L", "U", "T", "H", "irregular").
+// `shape` is the footprint class of the dataset record (ShapeClassName: "rectangle", "L", ..., "angled-wing").
 // Deterministic in (layout, shape, seed); different seeds give different wordings and styles.
 Drafts DraftDescriptions(const Layout& layout, const std::string& shape, std::uint64_t seed);
 

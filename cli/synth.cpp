@@ -28,6 +28,7 @@ struct SynthCommand {
   std::string out;
   uint64_t seed = 0;
   std::string floors = "2:4:4";
+  std::string shapes;  // empty: the default mix
   double grid = 0.5;
   int threads = 0;
   std::string shard = "0/1";
@@ -68,6 +69,9 @@ void Run(const SynthCommand& command) {
   options.seed = command.seed;
   ParseFloors(command.floors, options.floor_weights);
   options.floors_text = command.floors;
+  if (!command.shapes.empty())
+    if (Status parsed = ParseShapeWeights(command.shapes, options.partition.shape_weights); !parsed)
+      throw UsageError("synth: " + parsed.error());
   Result<Shard> shard = ParseShard(command.shard);
   if (!shard) throw UsageError("synth: " + shard.error());
   options.shard_index = shard->index;
@@ -125,6 +129,9 @@ Registration registration{30, [](CLI::App& app) {
   sub->add_option("--seed", command->seed, "dataset seed (default 0)")->transform(Seed());
   sub->add_option("--floors", command->floors,
                   "ratio of single:two:three story buildings, exact by index (default 2:4:4)");
+  sub->add_option("--shapes", command->shapes,
+                  "footprint mix as class=weight,... (rectangle, L, U, T, H, irregular, hexagon, octagon, trapezoid, "
+                  "cross, bay, angled-wing; unnamed classes 0; default: about half with a slanted outside edge)");
   sub->add_option("--grid", command->grid, "coordinate grid in metres (default 0.5)")->check(NumberIn(0.01, 1.0));
   sub->add_option("--threads", command->threads, "worker threads (default 0 = all cores)")->transform(WholeIn(0, 1024));
   sub->add_option("--shard", command->shard,

@@ -13,6 +13,12 @@ std::string_view ShapeClassName(ShapeClass shape) {
     case ShapeClass::kT: return "T";
     case ShapeClass::kH: return "H";
     case ShapeClass::kIrregular: return "irregular";
+    case ShapeClass::kHexagon: return "hexagon";
+    case ShapeClass::kOctagon: return "octagon";
+    case ShapeClass::kTrapezoid: return "trapezoid";
+    case ShapeClass::kCross: return "cross";
+    case ShapeClass::kBay: return "bay";
+    case ShapeClass::kAngledWing: return "angled-wing";
   }
   return "rectangle";
 }
@@ -27,9 +33,23 @@ std::optional<ShapeClass> ParseShapeClass(std::string_view name) {
 }
 
 const std::vector<ShapeClass>& AllShapeClasses() {
-  static const std::vector<ShapeClass> all{ShapeClass::kRectangle, ShapeClass::kL, ShapeClass::kU,
-                                           ShapeClass::kT,         ShapeClass::kH, ShapeClass::kIrregular};
+  static const std::vector<ShapeClass> all{
+      ShapeClass::kRectangle, ShapeClass::kL,       ShapeClass::kU,         ShapeClass::kT,
+      ShapeClass::kH,         ShapeClass::kIrregular, ShapeClass::kHexagon, ShapeClass::kOctagon,
+      ShapeClass::kTrapezoid, ShapeClass::kCross,   ShapeClass::kBay,       ShapeClass::kAngledWing};
   return all;
+}
+
+bool ShapeClassIsAngled(ShapeClass shape) {
+  switch (shape) {
+    case ShapeClass::kIrregular:
+    case ShapeClass::kHexagon:
+    case ShapeClass::kOctagon:
+    case ShapeClass::kTrapezoid:
+    case ShapeClass::kBay:
+    case ShapeClass::kAngledWing: return true;
+    default: return false;
+  }
 }
 
 std::vector<PolygonWithHoles> FootprintOf(const std::vector<Ring>& rings, double tolerance,
@@ -67,30 +87,113 @@ std::vector<PolygonWithHoles> LevelFootprint(const Layout& layout, int level, do
   return FootprintOf(rings, tolerance);
 }
 
-std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level) {
-  std::vector<int> rooms = layout.RoomsOnLevel(level);
-  if (rooms.empty()) return std::nullopt;
-  // A slanted edge on the outside (not shared with another room of the level) makes it irregular.
-  for (int r : rooms) {
-    const Ring& ring = layout.rooms[r].polygon;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      Point a = ring[i], b = ring[(i + 1) % ring.size()];
-      if (std::abs(a.x - b.x) <= kTolerance || std::abs(a.y - b.y) <= kTolerance) continue;
-      Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
-      bool shared = false;
-      for (int o : rooms)
-        if (o != r && PointOnBoundary(mid, layout.rooms[o].polygon, kTolerance)) shared = true;
-      if (!shared) return ShapeClass::kIrregular;
+namespace {
+
+bool Slanted(Point a, Point b) { return std::abs(a.x - b.x) > kTolerance && std::abs(a.y - b.y) > kTolerance; }
+bool Horizontal(Point a, Point b) { return std::abs(a.y - b.y) <= kTolerance; }
+bool Vertical(Point a, Point b) { return std::abs(a.x - b.x) <= kTolerance; }
+// > 0 for a left turn a -> b -> c (a convex corner of a counter-clockwise ring).
+double Turn(Point a, Point b, Point c) { return (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x); }
+// The inside angle at b of a counter-clockwise ring, degrees in (0, 360).
+double InsideAngle(Point a, Point b, Point c) {
+  const double ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
+  double deg = std::atan2(vx * uy - vy * ux, vx * ux + vy * uy) * 180.0 / M_PI;
+  return deg <= 0.0 ? deg + 360.0 : deg;
+}
+bool Parallel(Point a, Point b, Point c, Point d) {
+  const double cross = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+  return std::abs(cross) <= kTolerance * (Distance(a, b) + Distance(c, d));
+}
+bool Square(Point a, Point b, Point c, Point d) {
+  const double dot = (b.x - a.x) * (d.x - c.x) + (b.y - a.y) * (d.y - c.y);
+  return std::abs(dot) <= kTolerance * (Distance(a, b) + Distance(c, d));
+}
+int SlantedEdges(const Ring& ring) {
+  int n = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) n += Slanted(ring[i], ring[(i + 1) % ring.size()]);
+  return n;
+}
+bool ConvexWithAngles(const Ring& ring, double lo, double hi) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = InsideAngle(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]);
+    if (a < lo || a > hi) return false;
+  }
+  return true;
+}
+
+// Edge i of the ring is a 45-degree chamfer of a convex corner between a horizontal and a vertical side.
+bool IsChamfer(const Ring& r, std::size_t i) {
+  const std::size_t n = r.size();
+  const Point p0 = r[(i + n - 1) % n], p1 = r[i], p2 = r[(i + 1) % n], p3 = r[(i + 2) % n];
+  if (!Slanted(p1, p2) || std::abs(std::abs(p2.x - p1.x) - std::abs(p2.y - p1.y)) > kTolerance) return false;
+  const bool hv = Horizontal(p0, p1) && Vertical(p2, p3), vh = Vertical(p0, p1) && Horizontal(p2, p3);
+  return (hv || vh) && Turn(p0, p1, p2) > 0 && Turn(p1, p2, p3) > 0;
+}
+
+// The ring with every 45-degree corner chamfer replaced by the corner it cuts.
+Ring WithoutChamfers(Ring r) {
+  for (bool changed = true; changed && r.size() > 4;) {
+    changed = false;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (!IsChamfer(r, i)) continue;
+      const std::size_t n = r.size(), j = (i + 1) % n;
+      const Point p0 = r[(i + n - 1) % n], p1 = r[i], p2 = r[j];
+      const Point corner = Horizontal(p0, p1) ? Point{p2.x, p1.y} : Point{p1.x, p2.y};
+      r[i] = corner;
+      r.erase(r.begin() + static_cast<long>(j));
+      changed = true;
+      break;
     }
   }
-  // Orthogonal: which cells of the compressed grid are empty, and where do the empty parts touch the
-  // bounding box?
-  std::vector<double> xs, ys;
-  for (int r : rooms)
-    for (const Point& p : layout.rooms[r].polygon) {
-      xs.push_back(p.x);
-      ys.push_back(p.y);
+  return WithoutCollinearCorners(r, kTolerance);
+}
+
+// The ring with one bay (an axis side, three sides out of it with the outer two slanted, the same line
+// on) taken off; nullopt without one.
+std::optional<Ring> WithoutBay(const Ring& r) {
+  const std::size_t n = r.size();
+  if (n < 7) return std::nullopt;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p0 = r[i], p1 = r[(i + 1) % n], p2 = r[(i + 2) % n], p3 = r[(i + 3) % n], p4 = r[(i + 4) % n],
+                p5 = r[(i + 5) % n];
+    if (Slanted(p0, p1) || !Slanted(p1, p2) || Slanted(p2, p3) || !Slanted(p3, p4) || Slanted(p4, p5)) continue;
+    if (!Parallel(p0, p1, p2, p3) || std::abs(Turn(p0, p1, p4)) > kTolerance * Distance(p0, p1) * 4 ||
+        std::abs(Turn(p0, p1, p5)) > kTolerance * Distance(p0, p1) * 4)
+      continue;  // the bay's outer side parallel to its base, and the base line going on past it
+    if (Turn(p0, p1, p2) >= 0 || Turn(p1, p2, p3) <= 0 || Turn(p2, p3, p4) <= 0 || Turn(p3, p4, p5) >= 0) continue;
+    Ring out;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t off = (k + n - i) % n;  // 1..4 are the bay's corners p1..p4
+      if (off >= 1 && off <= 4) continue;
+      out.push_back(r[k]);
     }
+    return WithoutCollinearCorners(out, kTolerance);
+  }
+  return std::nullopt;
+}
+
+// Three consecutive slanted edges, the first and last parallel and the middle square to them, every other
+// edge axis-parallel: a wing turned off a rectangular body.
+bool IsAngledWing(const Ring& r) {
+  const std::size_t n = r.size();
+  if (SlantedEdges(r) != 3 || n < 6) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p0 = r[i], p1 = r[(i + 1) % n], p2 = r[(i + 2) % n], p3 = r[(i + 3) % n];
+    if (Slanted(p0, p1) && Slanted(p1, p2) && Slanted(p2, p3) && Parallel(p0, p1, p2, p3) && Square(p0, p1, p1, p2))
+      return true;
+  }
+  return false;
+}
+
+// The orthogonal classes, from which cells of the compressed grid of `outline` are empty and where the
+// empty parts touch the bounding box.
+ShapeClass ClassifyOrthogonal(const Ring& outline) {
+  std::vector<double> xs, ys;
+  for (const Point& p : outline) {
+    xs.push_back(p.x);
+    ys.push_back(p.y);
+  }
   auto unique_sorted = [&](std::vector<double>& v) {
     std::sort(v.begin(), v.end());
     std::vector<double> out;
@@ -104,14 +207,8 @@ std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level) {
   if (nx <= 0 || ny <= 0) return ShapeClass::kIrregular;
   std::vector<int> cell(nx * ny, 0);  // 1 = inside the footprint
   for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j) {
-      Point c{(xs[i] + xs[i + 1]) / 2, (ys[j] + ys[j + 1]) / 2};
-      for (int r : rooms)
-        if (PointInRing(c, layout.rooms[r].polygon, 0)) {
-          cell[i * ny + j] = 1;
-          break;
-        }
-    }
+    for (int j = 0; j < ny; ++j)
+      cell[i * ny + j] = PointInRing({(xs[i] + xs[i + 1]) / 2, (ys[j] + ys[j + 1]) / 2}, outline, 0) ? 1 : 0;
   struct Part {
     bool left = false, right = false, bottom = false, top = false;
     int sides() const { return left + right + bottom + top; }
@@ -161,7 +258,53 @@ std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level) {
     if (notch(a) && notch(b) && ((a.left && b.right) || (a.right && b.left) || (a.top && b.bottom) || (a.bottom && b.top)))
       return ShapeClass::kH;
   }
+  if (parts.size() == 4) {
+    int corners = 0, mask = 0;
+    for (const Part& p : parts) {
+      if (!corner(p)) break;
+      ++corners;
+      mask |= 1 << ((p.right ? 1 : 0) + (p.top ? 2 : 0));
+    }
+    if (corners == 4 && mask == 15) return ShapeClass::kCross;
+  }
   return ShapeClass::kIrregular;
+}
+
+// The single outline of `level` without holes; nullopt for none, several, or a courtyard.
+std::optional<Ring> SingleOutline(const Layout& layout, int level) {
+  const std::vector<PolygonWithHoles> outline = LevelFootprint(layout, level);
+  if (outline.size() != 1 || !outline[0].holes.empty()) return std::nullopt;
+  return outline[0].outer;
+}
+
+}  // namespace
+
+std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level) {
+  if (layout.RoomsOnLevel(level).empty()) return std::nullopt;
+  const std::optional<Ring> outline = SingleOutline(layout, level);
+  if (!outline) return ShapeClass::kIrregular;
+  const Ring& r = *outline;
+  if (SlantedEdges(r) == 0) return ClassifyOrthogonal(r);
+  if (r.size() == 6 && ConvexWithAngles(r, 105.0, 145.0)) return ShapeClass::kHexagon;
+  if (r.size() == 8 && ConvexWithAngles(r, 120.0, 150.0)) return ShapeClass::kOctagon;
+  if (r.size() == 4 && (Parallel(r[0], r[1], r[3], r[2]) || Parallel(r[1], r[2], r[0], r[3])))
+    return ShapeClass::kTrapezoid;
+  if (IsAngledWing(r)) return ShapeClass::kAngledWing;
+  if (std::optional<Ring> rest = WithoutBay(r)) {
+    const Ring plain = WithoutChamfers(*rest);
+    if (SlantedEdges(plain) == 0) return ShapeClass::kBay;
+  }
+  const Ring plain = WithoutChamfers(r);
+  if (SlantedEdges(plain) == 0) return ClassifyOrthogonal(plain);
+  return ShapeClass::kIrregular;
+}
+
+bool FootprintChamfered(const Layout& layout, int level) {
+  const std::optional<Ring> outline = SingleOutline(layout, level);
+  if (!outline) return false;
+  for (std::size_t i = 0; i < outline->size(); ++i)
+    if (IsChamfer(*outline, i)) return true;
+  return false;
 }
 
 }  // namespace villa

@@ -12,7 +12,8 @@
 namespace villa {
 
 // The footprint classes. Their names (ShapeClassName) go into dataset records ("shape") and the
-// annotator's descriptions: exactly "rectangle", "L", "U", "T", "H", "irregular".
+// annotator's descriptions: exactly "rectangle", "L", "U", "T", "H", "irregular", "hexagon", "octagon",
+// "trapezoid", "cross", "bay", "angled-wing".
 //   rectangle: the sampled rectangle itself.
 //   L: one rectangular notch at one corner.
 //   U: one rectangular notch in the middle of one side.
@@ -20,14 +21,27 @@ namespace villa {
 //   H: rectangular notches in the middle of two opposite sides.
 //   irregular: cuts at arbitrary angles (chamfers, slanted edges, triangular bites; slopes such as 1:1,
 //              1:2, 2:3 with grid end points), possibly combined with a rectangular notch.
-enum class ShapeClass { kRectangle, kL, kU, kT, kH, kIrregular };
-inline constexpr int kShapeClassCount = 6;
+//   hexagon: six sides, all corners 105-145 degrees (regular, about 120, or stretched along one axis).
+//   octagon: eight sides, all corners 120-150 degrees (a rectangle with four 45-degree corners).
+//   trapezoid: four sides, two of them parallel, one or both of the others slanted.
+//   cross: four wings round a central hall (a rectangular notch at each of the four corners); the
+//          planner's "star-shaped" and "cross-shaped".
+//   bay: a rectangle with a bay projection: three sides, the outer two at 45 degrees, on one side.
+//   angled-wing: a rectangular body with a wing turned 45 degrees from one of its sides.
+// Any orthogonal class may also have 45-degree chamfered corners (FootprintChamfered).
+enum class ShapeClass {
+  kRectangle, kL, kU, kT, kH, kIrregular, kHexagon, kOctagon, kTrapezoid, kCross, kBay, kAngledWing
+};
+inline constexpr int kShapeClassCount = 12;
 
 std::string_view ShapeClassName(ShapeClass shape);
 // Accepts exactly the names above (and lower-case "l", "u", "t", "h").
 std::optional<ShapeClass> ParseShapeClass(std::string_view name);
-// The six classes in the order of the enum.
+// The classes in the order of the enum.
 const std::vector<ShapeClass>& AllShapeClasses();
+// True for the classes whose outline always has a slanted edge (irregular, hexagon, octagon, trapezoid,
+// bay, angled-wing).
+bool ShapeClassIsAngled(ShapeClass shape);
 
 // The footprint of the rooms `rings` (one level), by cancelling the edge parts two rings share
 // (geometry.h's ExteriorBoundaryOf, the validator's rule-1 boundary): each outline counter-clockwise with
@@ -43,11 +57,18 @@ std::vector<PolygonWithHoles> FootprintOf(const std::vector<Ring>& rings, double
 // FootprintOf the rooms of `level`.
 std::vector<PolygonWithHoles> LevelFootprint(const Layout& layout, int level, double tolerance = kTolerance);
 
-// The class of `level`'s outline (ShapeClass names), by its geometry: an exterior edge that is not
-// axis-parallel makes it irregular; otherwise the parts of the bounding box the rooms leave empty decide
-// (none: rectangle; one at a corner: L; one notch in a side: U; two at the corners of one side: T;
-// notches in two opposite sides: H; anything else, a courtyard included: irregular). Empty for a level
-// without rooms.
+// The class of `level`'s outline (ShapeClass names), by its geometry. With slanted outside edges: a convex
+// hexagon, octagon or trapezoid as defined above; a bay (three sides out of a straight side, the outer
+// two slanted); an angled wing (three consecutive slanted edges, the first and last parallel, the middle
+// square to them, the rest axis-parallel); else, once 45-degree chamfers at convex corners are read as
+// the corners they cut, the orthogonal class of what is left; else irregular. Orthogonal outlines: the
+// parts of the bounding box the rooms leave empty decide (none: rectangle; one at a corner: L; one notch
+// in a side: U; two at the corners of one side: T; notches in two opposite sides: H; one at each of the
+// four corners: cross; anything else, a courtyard included: irregular). Empty for a level without rooms.
 std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level = 0);
+
+// True when `level`'s outline has a 45-degree chamfer at a convex corner between a horizontal and a
+// vertical side (an octagon's corners count; a hexagon's or an irregular cut's slopes do not).
+bool FootprintChamfered(const Layout& layout, int level = 0);
 
 }  // namespace villa

@@ -40,6 +40,48 @@ std::string DatasetRecordLine(uint64_t index, uint64_t seed, const PartitionSumm
   return DatasetRecord(index, seed, summary).dump();
 }
 
+Status ParseShapeWeights(const std::string& text, double* weights) {
+  std::string names;
+  for (ShapeClass c : AllShapeClasses()) names += (names.empty() ? "" : ", ") + std::string(ShapeClassName(c));
+  for (int i = 0; i < kShapeClassCount; ++i) weights[i] = 0.0;
+  double total = 0.0;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::size_t eq = part.find('=');
+    const std::string name = part.substr(0, eq);
+    const std::optional<ShapeClass> shape = ParseShapeClass(name);
+    if (!shape) return Error{"--shapes \"" + text + "\": \"" + name + "\" is not a footprint class (" + names + ")"};
+    double w = -1.0;
+    std::size_t used = 0;
+    const std::string value = eq == std::string::npos ? "" : part.substr(eq + 1);
+    try {
+      w = std::stod(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != value.size() || !(w >= 0.0) || !std::isfinite(w))
+      return Error{"--shapes \"" + text + "\": \"" + part + "\": expected NAME=WEIGHT with a non-negative weight"};
+    weights[static_cast<int>(*shape)] = w;
+    total += w;
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (!(total > 0.0)) return Error{"--shapes \"" + text + "\": at least one weight must be positive"};
+  return {};
+}
+
+bool HasAngledInteriorWall(const Layout& layout) {
+  auto slanted = [](const Segment& s) {
+    return std::abs(s.a.x - s.b.x) > kTolerance && std::abs(s.a.y - s.b.y) > kTolerance;
+  };
+  for (const auto* list : {&layout.interiors, &layout.doors, &layout.opens})
+    for (const Element& e : *list)
+      if (slanted(e.shape)) return true;
+  return false;
+}
+
 bool SynthOptions::IsValid(std::string* message) const {
   auto fail = [&](std::string text) {
     if (message) *message = std::move(text);
@@ -71,6 +113,8 @@ Json SynthStats::ToJson() const {
   j["retries"] = retries;
   j["retries_per_layout"] = layouts ? static_cast<double>(retries) / static_cast<double>(layouts) : 0.0;
   j["angled_layouts"] = angled;
+  j["angled_interior_layouts"] = angled_interior;
+  j["chamfered_layouts"] = chamfered;
   Json fl = Json::object();
   for (const auto& [f, n] : floors) fl[std::to_string(f)] = n;
   j["floors"] = fl;
@@ -101,6 +145,8 @@ SynthStats SynthStats::FromJson(const Json& j) {
   s.validated = j.value("validated", uint64_t{0});
   s.retries = j.value("retries", uint64_t{0});
   s.angled = j.value("angled_layouts", uint64_t{0});
+  s.angled_interior = j.value("angled_interior_layouts", uint64_t{0});
+  s.chamfered = j.value("chamfered_layouts", uint64_t{0});
   // (value() returns a copy: held here, since items() of a temporary would dangle in the loop)
   const Json floors = j.value("floors", Json::object()), shapes = j.value("shapes", Json::object()),
              per_floor = j.value("rooms_per_floor", Json::object()), categories = j.value("categories", Json::object());
@@ -118,6 +164,8 @@ SynthStats& SynthStats::operator+=(const SynthStats& o) {
   retries += o.retries;
   validated += o.validated;
   angled += o.angled;
+  angled_interior += o.angled_interior;
+  chamfered += o.chamfered;
   for (const auto& [k, v] : o.floors) floors[k] += v;
   for (const auto& [k, v] : o.shapes) shapes[k] += v;
   for (const auto& [k, v] : o.rooms_per_floor) rooms_per_floor[k] += v;
@@ -143,6 +191,9 @@ std::string SynthStats::Report() const {
     TextTable t({"shape", "layouts", "share"});
     for (const auto& [s, c] : shapes) t.AddRow({s, std::to_string(c), FormatPercent(double(c), n)});
     out << t.Render();
+    out << "angled outside edge: " << angled << " (" << FormatPercent(double(angled), n)
+        << "), angled interior wall: " << angled_interior << " (" << FormatPercent(double(angled_interior), n)
+        << "), chamfered corners: " << chamfered << " (" << FormatPercent(double(chamfered), n) << ")\n";
   }
   {
     TextTable t({"rooms/floor", "floors", "share"});
@@ -197,6 +248,8 @@ Outcome MakeOne(const SynthOptions& o, const std::vector<int>& floor_plan, uint6
     st.layouts = 1;
     st.validated = 1;
     st.angled = s.angled_edges ? 1 : 0;
+    st.angled_interior = HasAngledInteriorWall(s.layout) ? 1 : 0;
+    st.chamfered = FootprintChamfered(s.layout, 0) ? 1 : 0;
     st.floors[s.floors] = 1;
     st.shapes[std::string(ShapeClassName(s.shape))] = 1;
     for (int l = 0; l < s.floors; ++l) ++st.rooms_per_floor[static_cast<int>(s.layout.RoomsOnLevel(l).size())];
@@ -262,6 +315,10 @@ Json SynthRecipe(const SynthOptions& options) {
   recipe["seed"] = options.seed;
   recipe["floors"] = {options.floor_weights[0], options.floor_weights[1], options.floor_weights[2]};
   recipe["grid"] = options.partition.grid;
+  Json shapes = Json::object();
+  for (ShapeClass c : AllShapeClasses())
+    shapes[std::string(ShapeClassName(c))] = options.partition.shape_weights[static_cast<int>(c)];
+  recipe["shapes"] = shapes;
   recipe["shard"] = shard.Text();
   recipe["index_range"] = {shard.First(options.count), shard.Last(options.count)};
   recipe["layout_seed"] = "DatasetLayoutSeed(seed, index); floors by index from DatasetFloorPlan(count, floors)";
@@ -279,9 +336,27 @@ Json SynthManifest(const Json& recipe, const std::string& floors_text, uint64_t 
   manifest["recipe"] = recipe;
   std::ostringstream grid_text;
   grid_text << recipe.at("grid").get<double>();
+  // --shapes when the recipe's mix is not the default one (old manifests have none).
+  std::string shapes_arg;
+  if (const auto it = recipe.find("shapes"); it != recipe.end() && it->is_object()) {
+    const PartitionOptions defaults;
+    bool is_default = true;
+    std::string list;
+    for (ShapeClass c : AllShapeClasses()) {
+      const std::string name(ShapeClassName(c));
+      const double w = it->value(name, 0.0);
+      is_default = is_default && w == defaults.shape_weights[static_cast<int>(c)];
+      if (w > 0.0) {
+        std::ostringstream weight;
+        weight << w;
+        list += (list.empty() ? "" : ",") + name + "=" + weight.str();
+      }
+    }
+    if (!is_default) shapes_arg = " --shapes " + list;
+  }
   manifest["regenerate"] = "villa synth --count " + std::to_string(recipe.at("count").get<uint64_t>()) + " --seed " +
                            std::to_string(recipe.at("seed").get<uint64_t>()) + " --floors " + floors_text + " --grid " +
-                           grid_text.str() + " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
+                           grid_text.str() + shapes_arg + " --shard " + recipe["shard"].get<std::string>() + " --out DIR";
   manifest["record"] = "{\"id\", \"seed\", \"shape\", \"floors\", \"layout\"} one a line (layout: FORMAT.md JSON)";
   manifest["files"] = {{"layouts.jsonl", {{"records", records}, {"fnv1a64", hex}}},
                        {"stats.json", Json::object()},

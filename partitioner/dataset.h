@@ -39,6 +39,14 @@ struct SynthOptions {
   bool IsValid(std::string* message) const;
 };
 
+// Parses --shapes "hexagon=2,octagon=1,L=3" (class names as ShapeClassName writes them, any
+// non-negative weights; classes not named get 0) into `weights` (kShapeClassCount, ShapeClass order).
+// An error names the bad part ("--shapes \"star=1\": \"star\" is not a footprint class (...)").
+Status ParseShapeWeights(const std::string& text, double* weights);
+
+// True when some wall between two rooms of the layout (an interior wall, a door or an open) is slanted.
+bool HasAngledInteriorWall(const Layout& layout);
+
 // What the dataset holds (stats.json and the printed summary).
 struct SynthStats {
   uint64_t layouts = 0;
@@ -47,6 +55,8 @@ struct SynthStats {
   uint64_t retries = 0;        // discarded attempts over all layouts
   uint64_t validated = 0;      // layouts that passed ValidateLayout
   uint64_t angled = 0;         // layouts whose footprint has an angled edge
+  uint64_t angled_interior = 0;  // layouts with a slanted wall between two rooms (an interior wall, door or open)
+  uint64_t chamfered = 0;      // layouts whose ground footprint has a 45-degree chamfered corner
   std::map<int, uint64_t> floors;                // floors -> layouts
   std::map<std::string, uint64_t> shapes;        // shape class -> layouts
   std::map<int, uint64_t> rooms_per_floor;       // rooms on a floor -> floors

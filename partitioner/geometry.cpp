@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "layout/geometry.h"
 
@@ -254,6 +256,19 @@ bool HasAngledEdge(const IRing& ring) {
   return false;
 }
 
+bool HasSharpCorner(const IRing& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+    if (Cross(a, b, c) <= 0) continue;  // straight or reflex: at least 180 degrees inside
+    const int64_t ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
+    const int64_t dot = ux * vx + uy * vy;
+    // angle < 45 degrees <=> cos > 1 / sqrt(2) <=> dot > 0 and 2 dot^2 > |u|^2 |v|^2
+    if (dot > 0 && 2 * dot * dot > (ux * ux + uy * uy) * (vx * vx + vy * vy)) return true;
+  }
+  return false;
+}
+
 int PointInRing(const IRing& ring, IPoint point) {
   bool inside = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -277,6 +292,61 @@ bool SplitIsOnGrid(const IRing& ring, Axis axis, int64_t k) {
     const int64_t line = axis == Axis::kY ? -k : k;
     if ((p.x - line) * (r.x - line) < 0 && ((line - p.x) * (r.y - p.y)) % (r.x - p.x) != 0) return false;
   }
+  return true;
+}
+
+ILine AxisLine(Axis axis, int64_t k) { return axis == Axis::kX ? ILine{1, 0, k} : ILine{0, 1, k}; }
+
+ILine LineThrough(IPoint p, IPoint q) {
+  const int64_t g = Gcd(q.x - p.x, q.y - p.y);
+  ILine line{-(q.y - p.y) / g, (q.x - p.x) / g, 0};
+  line.k = LineValue(line, p);
+  return line;
+}
+
+bool IsAxisLine(const ILine& line) { return line.a == 0 || line.b == 0; }
+
+namespace {
+// A unimodular map M = [[a, b], [c, d]] (a*d - b*c = 1) taking the line a*x + b*y = k to x = k, and back.
+struct Unimodular {
+  int64_t a, b, c, d;
+  IPoint Forward(IPoint p) const { return {a * p.x + b * p.y, c * p.x + d * p.y}; }
+  IPoint Back(IPoint p) const { return {d * p.x - b * p.y, -c * p.x + a * p.y}; }
+};
+Unimodular MapToVertical(const ILine& line) {
+  // Extended Euclid: s*a + t*b = 1; then (c, d) = (-t, s) gives a*d - b*c = 1.
+  int64_t r0 = line.a, r1 = line.b, s0 = 1, s1 = 0, t0 = 0, t1 = 1;
+  while (r1 != 0) {
+    const int64_t q = r0 / r1;
+    std::tie(r0, r1) = std::make_pair(r1, r0 - q * r1);
+    std::tie(s0, s1) = std::make_pair(s1, s0 - q * s1);
+    std::tie(t0, t1) = std::make_pair(t1, t0 - q * t1);
+  }
+  if (r0 < 0) s0 = -s0, t0 = -t0;  // gcd came out as -1
+  return {line.a, line.b, -t0, s0};
+}
+IRing MapRing(const IRing& ring, const Unimodular& m, bool forward) {
+  IRing out;
+  out.reserve(ring.size());
+  for (const IPoint& p : ring) out.push_back(forward ? m.Forward(p) : m.Back(p));
+  return out;
+}
+}  // namespace
+
+bool SplitIsOnGrid(const IRing& ring, const ILine& line) {
+  if (line.a == 1 && line.b == 0) return SplitIsOnGrid(ring, Axis::kX, line.k);
+  if (line.a == 0 && line.b == 1) return SplitIsOnGrid(ring, Axis::kY, line.k);
+  return SplitIsOnGrid(MapRing(ring, MapToVertical(line), true), Axis::kX, line.k);
+}
+
+bool SplitRing(const IRing& ring, const ILine& line, std::vector<IRing>* low, std::vector<IRing>* high) {
+  if (line.a == 1 && line.b == 0) return SplitRing(ring, Axis::kX, line.k, low, high);
+  if (line.a == 0 && line.b == 1) return SplitRing(ring, Axis::kY, line.k, low, high);
+  const Unimodular m = MapToVertical(line);
+  std::vector<IRing> l, h;
+  if (!SplitVertical(MapRing(ring, m, true), line.k, &l, &h)) return false;
+  for (auto& r : l) low->push_back(Normalize(MapRing(r, m, false)));
+  for (auto& r : h) high->push_back(Normalize(MapRing(r, m, false)));
   return true;
 }
 

@@ -41,15 +41,35 @@ IRing Normalize(const IRing& ring);
 bool IsSimple(const IRing& ring);
 // True when some edge is neither horizontal nor vertical.
 bool HasAngledEdge(const IRing& ring);
+// True when some corner's inside angle is under 45 degrees (exact: integer dot and cross products).
+bool HasSharpCorner(const IRing& ring);
 // 1 inside, 0 on the boundary, -1 outside, exactly (integer grid units, no tolerance: the partitioner's
 // tiling must be exact). Plans in metres use layout/geometry.h's PointInRing.
 int PointInRing(const IRing& ring, IPoint point);
 
+// The line a*x + b*y = k, (a, b) primitive (gcd 1): an axis line, a 45-degree diagonal, or a line parallel
+// to any slanted edge with grid end points. Its low side is a*x + b*y <= k.
+struct ILine {
+  int64_t a = 1, b = 0, k = 0;
+};
+ILine AxisLine(Axis axis, int64_t k);
+// The line through p and q (p != q). Its normal (a, b) points left of p -> q, so the inside of a
+// counter-clockwise ring's edge p -> q is on the line's high side.
+ILine LineThrough(IPoint p, IPoint q);
+// a*x + b*y of a point (which side of the line it is on).
+inline int64_t LineValue(const ILine& line, IPoint p) { return line.a * p.x + line.b * p.y; }
+bool IsAxisLine(const ILine& line);
+
 // True when the line (axis, k) crosses every edge it cuts at a grid point (so a split is exact).
 bool SplitIsOnGrid(const IRing& ring, Axis axis, int64_t k);
+bool SplitIsOnGrid(const IRing& ring, const ILine& line);
 // Splits `ring` by the line (axis, k): `low` gets the connected parts with coordinate <= k, `high` those
 // >= k (each part a normalized simple ring). False (outputs untouched) when a crossing is off the grid.
 bool SplitRing(const IRing& ring, Axis axis, int64_t k, std::vector<IRing>* low, std::vector<IRing>* high);
+// The same for any line: a unimodular map (integer, determinant 1, so grid points stay grid points and
+// orientation is kept) turns it into a vertical line, the ring is split there and the parts mapped back.
+// `low` gets the parts with a*x + b*y <= k.
+bool SplitRing(const IRing& ring, const ILine& line, std::vector<IRing>* low, std::vector<IRing>* high);
 // The union of tiles that meet only along edges (T-junctions allowed): boundary loops after cancelling
 // shared edges. One counter-clockwise ring for a simply connected union; a hole gives a clockwise ring.
 std::vector<IRing> UnionTiles(const std::vector<IRing>& tiles);

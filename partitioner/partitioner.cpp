@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "layout/footprint.h"
 #include "layout/validate.h"
 #include "partitioner/steps.h"
 
@@ -16,6 +17,7 @@ namespace villa {
 using partition::Axis;
 using partition::BspLimits;
 using partition::IBox;
+using partition::ILine;
 using partition::IPoint;
 using partition::IRing;
 using partition::ISegment;
@@ -109,6 +111,12 @@ bool IsPublic(Category c) {
          c == Category::kUtilityRoom;
 }
 // Rooms nobody walks through to reach another.
+// Rooms people live and work in (the polygons issue's "habitable": no part narrower than 1.8 m).
+constexpr double kHabitableWidth = 1.8;
+bool IsHabitable(Category c) {
+  return c == Category::kLivingRoom || c == Category::kBedroom || c == Category::kChildrenRoom ||
+         c == Category::kDiningRoom || c == Category::kOffice || c == Category::kMeetingRoom || c == Category::kKitchen;
+}
 bool IsLeaf(Category c) { return c == Category::kBathroom || c == Category::kBalcony; }
 bool NeedsWindow(Category c) {
   return c == Category::kKitchen || c == Category::kBathroom || c == Category::kBalcony;
@@ -173,6 +181,7 @@ struct Floor {
   std::vector<std::vector<Run>> exterior;
   std::vector<double> area_m2;
   std::vector<double> exterior_m;
+  std::vector<char> narrow;  // some part of the room is under kHabitableWidth wide
   std::vector<std::vector<char>> door_ok, open_ok;
   std::vector<char> window_ok, entrance_ok;
   int entrance_room = -1;
@@ -201,8 +210,12 @@ Sizes MakeSizes(double grid) {
   return s;
 }
 
-int64_t AxisLen(const ISegment& s) { return std::llabs(s.b.x - s.a.x) + std::llabs(s.b.y - s.a.y); }
-bool AxisSeg(const ISegment& s) { return s.a.x == s.b.x || s.a.y == s.b.y; }
+// A segment as a run of grid steps (its direction over the gcd of its extents).
+Run RunOf(const ISegment& seg) {
+  const int64_t g = partition::Gcd(seg.b.x - seg.a.x, seg.b.y - seg.a.y);
+  const IPoint step{(seg.b.x - seg.a.x) / g, (seg.b.y - seg.a.y) / g};
+  return {seg.a, step, g, std::sqrt(static_cast<double>(step.x * step.x + step.y * step.y))};
+}
 
 // Steps a run offers for an element of at least `min_m` metres after clearances; 0 if none fits.
 int64_t MinSteps(const Run& run, double min_m, const Sizes& s) {
@@ -225,11 +238,13 @@ void AnalyseFloor(Floor& f, const Sizes& s) {
   f.entrance_ok.assign(n, 0);
   f.area_m2.assign(n, 0.0);
   f.exterior_m.assign(n, 0.0);
+  f.narrow.assign(n, 0);
   const double g2 = s.scale.grid * s.scale.grid;
   std::vector<IBox> boxes(n);
   for (std::size_t i = 0; i < n; ++i) boxes[i] = partition::BoundingBox(f.rooms[i]);
   for (std::size_t i = 0; i < n; ++i) {
     f.area_m2[i] = static_cast<double>(partition::TwiceArea(f.rooms[i])) * g2 / 2.0;
+    f.narrow[i] = partition::NarrowerThan(f.rooms[i], kHabitableWidth / s.scale.grid - 1e-9) ? 1 : 0;
     for (std::size_t j = i + 1; j < n; ++j) {
       const IBox& a = boxes[i];
       const IBox& b = boxes[j];
@@ -237,10 +252,9 @@ void AnalyseFloor(Floor& f, const Sizes& s) {
       f.shared[i][j] = partition::SharedSegments(f.rooms[i], f.rooms[j]);
       for (const ISegment& seg : f.shared[i][j]) {
         f.shared[j][i].push_back({seg.b, seg.a});
-        if (!AxisSeg(seg)) continue;
-        const int64_t len = AxisLen(seg);
-        if (len >= s.door + 2 * s.clear) f.door_ok[i][j] = f.door_ok[j][i] = 1;
-        if (len >= s.open_min + 2 * s.clear) f.open_ok[i][j] = f.open_ok[j][i] = 1;
+        const Run run = RunOf(seg);
+        if (RunFits(run, s.scale.Metres(s.door), s)) f.door_ok[i][j] = f.door_ok[j][i] = 1;
+        if (RunFits(run, s.scale.Metres(s.open_min), s)) f.open_ok[i][j] = f.open_ok[j][i] = 1;
       }
     }
   }
@@ -546,6 +560,9 @@ bool LabelFloor(Floor& f, const std::vector<Category>& plan, const std::vector<C
         score -= 2.0 * std::max(0.0, std::log(f.area_m2[r] / (1.7 * PreferredArea(c))));
       }
       if (c == Category::kBalcony) score += 3.0 * ExteriorShare(f, r, s.scale.grid);
+      // A room with a part under 1.8 m wide (an arm of an L, a strip beside a slanted wall) serves a
+      // bathroom, a balcony or a utility room, not a room people live in.
+      if (IsHabitable(c) && f.narrow[r]) score -= 8.0;
       if (c == Category::kLivingRoom && f.level == 0 && f.entrance_ok[r]) score += 0.5;
       row[r] = score;
     }
@@ -579,16 +596,25 @@ bool Linked(const std::vector<Link>& links, int a, int b) {
   return false;
 }
 
-// A door or open between rooms a and b on one of their shared walls.
+// A door or open between rooms a and b on one of their shared walls (axis-parallel or slanted: a slanted
+// wall's grid steps are longer, so its doors are whole steps of at least the door width).
 std::optional<Link> MakeLink(const Floor& f, int a, int b, bool open, const Sizes& s, Rng& rng) {
-  std::vector<ISegment> walls;
-  for (const ISegment& seg : f.shared[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)])
-    if (AxisSeg(seg) && AxisLen(seg) >= (open ? s.open_min : s.door) + 2 * s.clear) walls.push_back(seg);
+  const double min_m = s.scale.Metres(open ? s.open_min : s.door);
+  std::vector<Run> walls;
+  for (const ISegment& seg : f.shared[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)]) {
+    const Run run = RunOf(seg);
+    if (RunFits(run, min_m, s)) walls.push_back(run);
+  }
   if (walls.empty()) return std::nullopt;
-  const ISegment& wall = walls[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(walls.size()) - 1))];
-  int64_t width = s.door;
-  if (open) width = rng.Int(s.open_min, std::min(s.open_max, AxisLen(wall) - 2 * s.clear));
-  auto door = partition::PlaceDoor(wall, width, s.clear, rng);
+  const Run& wall = walls[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(walls.size()) - 1))];
+  const int64_t clear = ClearSteps(wall, s);
+  int64_t width = MinSteps(wall, min_m, s);
+  if (open) {
+    const int64_t widest = static_cast<int64_t>(std::floor(s.scale.Metres(s.open_max) / (wall.step_len * s.scale.grid) + 1e-9));
+    width = rng.Int(width, std::max(width, std::min(widest, wall.steps - 2 * clear)));
+  }
+  const ISegment seg{wall.a, {wall.a.x + wall.step.x * wall.steps, wall.a.y + wall.step.y * wall.steps}};
+  auto door = partition::PlaceDoor(seg, width, clear, rng);
   if (!door) return std::nullopt;
   return Link{a, b, open, *door};
 }
@@ -1030,7 +1056,7 @@ struct AttemptResult {
 // BSP draws a floor gets, and the worst ShapePenalty of its rooms that ends the draws (every room within
 // about 2.7:1) and that is still accepted (about 3.2:1).
 constexpr int kBspDraws = 3;
-constexpr double kShapeGood = 2.0;
+constexpr double kShapeGood = 1.5;
 constexpr double kShapeAcceptable = 6.0;
 // The footprint: the largest floor's usual room sizes times kNeedLo..kNeedLo + kNeedSpan (before the
 // minimum sides); a floor gets extra rooms while its area exceeds kSpacious times its rooms' usual sizes;
@@ -1060,7 +1086,7 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
   // Footprint: the usual sizes of the planned rooms (PreferredArea, plus the staircase) of the floor that
   // needs most (an upper floor's need counts 15 % more: its cuts take some of the ground floor), times
   // kNeedLo.., in a rectangle of aspect 1-1.6 whose cuts (notches, angled bites) take roughly `kept` of it.
-  static const double kKept[kShapeClassCount] = {1.0, 0.78, 0.8, 0.72, 0.7, 0.85};
+  static const double kKept[kShapeClassCount] = {1.0, 0.78, 0.8, 0.72, 0.7, 0.85, 0.78, 0.86, 0.8, 0.68, 0.95, 0.72};
   const double kept = kKept[static_cast<int>(plan.shape)];
   double need = 0.0;
   for (int l = 0; l < F; ++l) {
@@ -1073,7 +1099,8 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
   const double area = need * (kNeedLo + rng.Unit() * kNeedSpan) / kept;
   const double aspect = 1.0 + rng.Unit() * 0.6;
   double long_side = std::sqrt(area * aspect), short_side = std::sqrt(area / aspect);
-  const bool winged = plan.shape == ShapeClass::kU || plan.shape == ShapeClass::kT || plan.shape == ShapeClass::kH;
+  const bool winged = plan.shape == ShapeClass::kU || plan.shape == ShapeClass::kT || plan.shape == ShapeClass::kH ||
+                      plan.shape == ShapeClass::kCross || plan.shape == ShapeClass::kAngledWing;
   const double floor_side = std::max(o.min_side, winged ? 11.0 : 0.0);
   long_side = std::clamp(long_side, floor_side, std::max(floor_side, o.max_side));
   short_side = std::clamp(short_side, floor_side, std::max(floor_side, o.max_side));
@@ -1084,6 +1111,8 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     result.reason = "footprint cuts did not fit";
     return result;
   }
+  // Three in ten orthogonal footprints get 45-degree corners.
+  if (!ShapeClassIsAngled(plan.shape) && rng.Chance(0.3)) ground = partition::ChamferCorners(std::move(ground), scale, rng);
   std::optional<IBox> stair;
   const int64_t stair_units = scale.Units(kStairRoomSize);
   if (F > 1) {
@@ -1181,9 +1210,18 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     // Rooms over kOversized m2 are split once more while the floor has room for another (not when the
     // building is limited to the required rooms).
     BspLimits floor_limits = limits;
+    // Splits that leave a part under 1.8 m wide (a room with a 1.2 m arm is a corridor, not a bedroom)
+    // score worse; the labels then give such a room to a bathroom or a balcony.
+    floor_limits.comfortable_width = kHabitableWidth / scale.grid;
     if (!o.only_required_rooms) {
       floor_limits.max_area2 = static_cast<int64_t>(2.0 * kOversized / g2);
       floor_limits.max_pieces = o.max_rooms_per_floor - (stair ? 1 : 0);
+    }
+    // Interior walls may follow the outline's slanted sides.
+    std::vector<ILine> follow;
+    for (std::size_t v = 0; v < f.footprint.size(); ++v) {
+      const IPoint a = f.footprint[v], b = f.footprint[(v + 1) % f.footprint.size()];
+      if (a.x != b.x && a.y != b.y) follow.push_back(partition::LineThrough(a, b));
     }
     // A few BSP draws of the floor; the one whose worst room is best proportioned wins, and the first
     // whose rooms all stay within about 2.7:1 and fill their bounding box is taken at once. A floor
@@ -1195,10 +1233,10 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
     std::vector<IRing> rooms;
     double worst_best = 1e18;
     for (int draw = 0; draw < kBspDraws && worst_best > kShapeGood; ++draw) {
-      std::vector<IRing> candidate = partition::SplitRoomBsp(pieces, spec.size(), floor_limits, rng, wanted);
+      std::vector<IRing> candidate = partition::SplitRoomBsp(pieces, spec.size(), floor_limits, rng, wanted, follow);
       if (!enough(candidate)) continue;
       double worst = 0.0;
-      for (const IRing& r : candidate) worst = std::max(worst, partition::ShapePenalty(r));
+      for (const IRing& r : candidate) worst = std::max(worst, partition::PartsPenalty({r}, floor_limits));
       if (worst < worst_best) worst_best = worst, rooms = std::move(candidate);
     }
     if (rooms.empty()) {
@@ -1381,6 +1419,12 @@ PartitionSummary GenerateLayout(const PartitionOptions& options, uint64_t seed) 
       continue;
     }
     Layout layout = BuildLayout(a.building, options.grid);
+    // The class is what the one classifier reads from the outline (an irregular cut that happens to be a
+    // 45-degree chamfer reads as the corner it cuts): the record never names a class its geometry is not.
+    if (ClassifyFootprint(layout, 0) != plan.shape) {
+      ++reasons["footprint reads as another class"];
+      continue;
+    }
     if (options.validate) {
       const ValidationReport report = ValidateLayout(layout);
       if (!report.valid()) {

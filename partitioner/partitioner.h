@@ -70,7 +70,9 @@ struct PartitionOptions {
 
   // Footprint class; unset: sampled from the seed with `shape_weights` (in ShapeClass order).
   std::optional<ShapeClass> shape;
-  double shape_weights[kShapeClassCount] = {0.15, 0.20, 0.15, 0.15, 0.10, 0.25};
+  // The default mix: about half the footprints have a slanted outside edge (irregular, hexagon, octagon,
+  // trapezoid, bay, angled wing; a fifth of the others get 45-degree corners too).
+  double shape_weights[kShapeClassCount] = {0.07, 0.10, 0.07, 0.07, 0.05, 0.14, 0.08, 0.10, 0.06, 0.06, 0.10, 0.10};
 
   // Limits of the ground floor's bounding rectangle, m. Within them the size follows the ground floor's
   // room count (about 20-32 m2 a room, aspect 1-1.6; U, T and H footprints at least 13 m a side).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace villa::partition {
 namespace {
@@ -105,12 +106,45 @@ IRing AngledCut(const IRing& ring, const Scale& scale, Rng& rng) {
   return Normalize(out);
 }
 
+// `ring`, drawn in a w x h frame, mirrored and/or with its axes swapped (counter-clockwise kept).
+IRing Oriented(const IRing& ring, int64_t w, int64_t h, bool mirror_x, bool mirror_y, bool swap) {
+  IRing out;
+  out.reserve(ring.size());
+  for (IPoint p : ring) {
+    if (mirror_x) p.x = w - p.x;
+    if (mirror_y) p.y = h - p.y;
+    if (swap) std::swap(p.x, p.y);
+    out.push_back(p);
+  }
+  if (mirror_x != mirror_y ? !swap : swap) std::reverse(out.begin(), out.end());
+  return Normalize(out);
+}
+
 }  // namespace
 
 uint64_t MixSeed(uint64_t a, uint64_t b) {
   Rng rng(a ^ (b * 0xD1B54A32D192ED03ull + 0x8CB92BA72F3D8DD7ull));
   rng.Next();
   return rng.Next();
+}
+
+IRing ChamferCorners(IRing ring, const Scale& scale, Rng& rng) {
+  const int64_t one = scale.UnitsUp(1.0);
+  const int wanted = rng.Chance(0.6) ? 1 : 2;
+  int made = 0;
+  for (int attempt = 0; attempt < 8 && made < wanted; ++attempt) {
+    const std::size_t n = ring.size();
+    const std::size_t i = static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(n) - 1));
+    const IPoint prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
+    if (Cross(prev, v, next) <= 0 || !IsAxisAligned(prev, v) || !IsAxisAligned(v, next)) continue;
+    const int64_t leg = rng.Int(one + one / 2, 2 * one);  // 1.5-2 m
+    if (leg > AxisLength(prev, v) - 2 * one || leg > AxisLength(v, next) - 2 * one) continue;
+    IRing cut = Chamfer(ring, i, leg, leg);
+    if (!AcceptCut(ring, cut)) continue;
+    ring = std::move(cut);
+    ++made;
+  }
+  return ring;
 }
 
 int64_t Scale::Units(double metres) const { return static_cast<int64_t>(std::llround(metres / grid)); }
@@ -172,6 +206,79 @@ IRing FootprintShape(ShapeClass shape, int64_t W, int64_t H, const Scale& scale,
       if (across - depth_total < arm) return {};
       return Subtract(rect, boxes);
     }
+    case ShapeClass::kHexagon: {
+      // Pointed ends on the long axis, slopes of 2:1 (corners of 127 degrees at the points, 117 at the
+      // others; a regular hexagon's 120 all round is 1.73:1, whose grid steps of 4 m hold no door, where 2:1
+      // steps are 1.12 m).
+      const bool swap = H > W;
+      int64_t w = swap ? H : W;
+      const int64_t q = (swap ? W : H) / 4, h = 2 * q;
+      if (q < 1) return {};
+      // The flat sides at least 8 m (a staircase 2 m from both ends): a frame too short for that grows.
+      w = std::max(w, 2 * q + 2 * arm);
+      const IRing hex{{q, 0}, {w - q, 0}, {w, h}, {w - q, 2 * h}, {q, 2 * h}, {0, h}};
+      return Oriented(hex, w, 2 * h, false, false, swap);
+    }
+    case ShapeClass::kOctagon: {
+      // A rectangle with four 45-degree corners of 22-32 % of the short side (29 % is regular).
+      const int64_t c = Frac(std::min(W, H), 0.22 + 0.10 * rng.Unit());
+      if (c < 2 || std::min(W, H) - 2 * c < arm) return {};
+      return IRing{{c, 0}, {W - c, 0}, {W, c}, {W, H - c}, {W - c, H}, {c, H}, {0, H - c}, {0, c}};
+    }
+    case ShapeClass::kTrapezoid: {
+      // The full base on one side, the opposite side shorter at one or both ends, the slanted sides rising
+      // 2 or 3 to 1 (63 or 72 degrees; grid steps of 1.12 or 1.58 m, so doors fit on walls along them).
+      const bool swap = rng.Chance(0.5);
+      const int64_t w = swap ? H : W;
+      const int64_t k = rng.Chance(0.5) ? 2 : 3;
+      const int64_t h = (swap ? W : H) / k * k;
+      // Both ends cut where the top keeps 40 % of the base, else one (a right trapezoid).
+      int64_t a = h / k, b = rng.Chance(0.6) && 10 * 2 * a <= 6 * w ? h / k : 0;
+      if (rng.Chance(0.5)) std::swap(a, b);
+      if (a + b < 2 || w - a - b < arm || 10 * (a + b) > 6 * w) return {};
+      const IRing trap = Normalize({{0, 0}, {w, 0}, {w - b, h}, {a, h}});
+      return Oriented(trap, w, h, false, rng.Chance(0.5), swap);
+    }
+    case ShapeClass::kCross: {
+      // Four wings round a central hall: a notch at each corner, 20-30 % of each side; wings at least 4 m.
+      std::vector<IBox> boxes;
+      for (int corner = 0; corner < 4; ++corner) {
+        const int64_t nw = Frac(W, 0.2 + 0.1 * rng.Unit()), nh = Frac(H, 0.2 + 0.1 * rng.Unit());
+        if (nw < 2 || nh < 2) return {};
+        const int64_t x0 = corner & 1 ? W - nw : 0, y0 = corner & 2 ? H - nh : 0;
+        boxes.push_back({x0, y0, x0 + nw, y0 + nh});
+      }
+      if (W - (boxes[0].width() + boxes[1].width()) < arm || H - (boxes[0].height() + boxes[2].height()) < arm ||
+          W - (boxes[2].width() + boxes[3].width()) < arm || H - (boxes[1].height() + boxes[3].height()) < arm)
+        return {};
+      return Subtract(rect, boxes);
+    }
+    case ShapeClass::kBay: {
+      // A bay 0.75-1.5 m deep out of one side, its base 35-50 % of the side, its two outer sides at 45
+      // degrees, its front at least 1.5 m.
+      const bool swap = rng.Chance(0.5);
+      const int64_t w = swap ? H : W, h = swap ? W : H;
+      const int64_t base = Frac(w, 0.35 + 0.15 * rng.Unit());
+      const int64_t d = std::min(scale.UnitsUp(1.0 + 0.5 * rng.Unit()), (base - scale.UnitsUp(1.5)) / 2);
+      const int64_t margin = scale.UnitsUp(2.0);
+      if (d < scale.UnitsUp(0.75) || w - base < 2 * margin || h - d < arm) return {};
+      const int64_t o = rng.Int(margin, w - base - margin);
+      const IRing bay{{0, d}, {o, d}, {o + d, 0}, {o + base - d, 0}, {o + base, d}, {w, d}, {w, h}, {0, h}};
+      return Oriented(bay, w, h, rng.Chance(0.5), rng.Chance(0.5), swap);
+    }
+    case ShapeClass::kAngledWing: {
+      // A body with a wing turned 45 degrees off its side: the wing s * 1.41 wide (at least 4.2 m), its outer
+      // side t * 1.41 long (its inner side at least 2.1 m).
+      const bool swap = H > W;
+      const int64_t w = swap ? H : W, h = swap ? W : H;
+      const int64_t s_units = std::max(scale.UnitsUp(3.0), Frac(h, 0.3 + 0.1 * rng.Unit()));
+      const int64_t t = std::min(s_units + scale.UnitsUp(2.0 + 2.0 * rng.Unit()), h - s_units);
+      const int64_t body = w - t;
+      if (body < arm || t < s_units + scale.UnitsUp(1.5)) return {};
+      const IRing wing{{0, 0}, {body, 0}, {body + t, t}, {body + t - s_units, t + s_units}, {body, 2 * s_units},
+                       {body, h}, {0, h}};
+      return Oriented(wing, w, h, rng.Chance(0.5), rng.Chance(0.5), swap);
+    }
     case ShapeClass::kIrregular: {
       IRing ring = rect;
       if (rng.Chance(0.4)) {
@@ -194,7 +301,7 @@ IRing FootprintShape(ShapeClass shape, int64_t W, int64_t H, const Scale& scale,
 }
 
 bool PieceUsable(const IRing& piece, const BspLimits& limits) {
-  if (piece.size() < 3 || TwiceArea(piece) < limits.min_area2) return false;
+  if (piece.size() < 4 || TwiceArea(piece) < limits.min_area2 || HasSharpCorner(piece)) return false;
   const IBox box = BoundingBox(piece);
   if (box.width() < limits.min_side || box.height() < limits.min_side) return false;
   return !NarrowerThan(piece, limits.min_width);
@@ -204,7 +311,7 @@ std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const S
   const std::size_t n = footprint.size();
   const int64_t margin = scale.UnitsUp(2.0);
   // What is left may narrow to a 1.5 m passage beside the staircase (a hall arm), no less.
-  const double min_width = 1.5 / scale.grid - 1e-9;
+  const double min_width = 2.0 / scale.grid - 1e-9;
   double fx, fy;
   Centroid(footprint, &fx, &fy);
   const int64_t expected = TwiceArea(footprint) - 2 * size * size;
@@ -236,7 +343,7 @@ std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const S
     std::vector<IRing> rest;
     if (!SubtractInside(footprint, BoxRing(box), &rest) || rest.size() != 1 || TwiceArea(rest[0]) != expected)
       continue;
-    if (NarrowerThan(rest[0], min_width)) continue;
+    if (NarrowerThan(rest[0], min_width) || HasSharpCorner(rest[0])) continue;
     return box;
   }
   return std::nullopt;
@@ -289,7 +396,7 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
       std::vector<IRing> rest;
       if (!SubtractInside(out[0], BoxRing(*stair), &rest)) continue;
       bool wide = true;
-      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, 1.5 / scale.grid - 1e-9);
+      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, 2.0 / scale.grid - 1e-9);
       if (!wide) continue;
     }
     ring = std::move(out[0]);
@@ -298,9 +405,18 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
   return ring;
 }
 
-double ShapePenalty(const IRing& piece) {
-  const IBox box = BoundingBox(piece);
-  const double w = static_cast<double>(box.width()), h = static_cast<double>(box.height());
+namespace {
+// ShapePenalty in the frame of direction (dx, dy): the piece's extents along it and across it.
+double PenaltyInFrame(const IRing& piece, double dx, double dy) {
+  const double len = std::sqrt(dx * dx + dy * dy);
+  dx /= len, dy /= len;
+  double u0 = 1e18, u1 = -1e18, v0 = 1e18, v1 = -1e18;
+  for (const IPoint& p : piece) {
+    const double u = static_cast<double>(p.x) * dx + static_cast<double>(p.y) * dy;
+    const double v = -static_cast<double>(p.x) * dy + static_cast<double>(p.y) * dx;
+    u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+  }
+  const double w = u1 - u0, h = v1 - v0;
   if (w <= 0.0 || h <= 0.0) return 1e9;
   const double aspect = std::max(w, h) / std::min(w, h);
   const double fill = static_cast<double>(TwiceArea(piece)) / (2.0 * w * h);
@@ -309,9 +425,31 @@ double ShapePenalty(const IRing& piece) {
   if (fill < 0.75) penalty += 16.0 * (0.75 - fill);                    // a thin L round a corner
   return penalty;
 }
+}  // namespace
+
+double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits) {
+  double sum = 0.0;
+  for (const IRing& part : parts) {
+    sum += ShapePenalty(part);
+    if (limits.comfortable_width > 0.0 && NarrowerThan(part, limits.comfortable_width)) sum += kNarrowPenalty;
+  }
+  return sum;
+}
+
+double ShapePenalty(const IRing& piece) {
+  // The axis frame, or the frame of one of its slanted edges where the piece is better proportioned in it
+  // (a room in an angled wing is a rectangle in the wing's frame).
+  double best = PenaltyInFrame(piece, 1.0, 0.0);
+  for (std::size_t i = 0; i < piece.size() && best > 0.0; ++i) {
+    const IPoint a = piece[i], b = piece[(i + 1) % piece.size()];
+    if (a.x != b.x && a.y != b.y)
+      best = std::min(best, PenaltyInFrame(piece, static_cast<double>(b.x - a.x), static_cast<double>(b.y - a.y)));
+  }
+  return best;
+}
 
 std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const BspLimits& limits, Rng& rng,
-                                std::vector<int64_t> wanted_area2) {
+                                std::vector<int64_t> wanted_area2, const std::vector<ILine>& follow) {
   std::sort(wanted_area2.begin(), wanted_area2.end());
   int failures = 0;
   auto oversized = [&] {
@@ -321,6 +459,8 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
     return false;
   };
   constexpr int kCandidates = 4;
+  constexpr double kAngledBonus = 1.0;
+  constexpr double kAngledWorst = 1.6;  // fill >= 65 % of the bounding box in the part's own frame, aspect <= 2.6
   while ((static_cast<int>(pieces.size()) < target || oversized()) && failures < 40) {
     const bool extra = static_cast<int>(pieces.size()) >= target;
     // A piece big enough to halve, chosen with weight area^3 (big rooms get split first, not always),
@@ -354,7 +494,71 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
     std::vector<IRing> best_parts;
     double best_score = 1e18;
     int64_t best_aimed = -1;
-    for (int c = 0; c < kCandidates && best_score > 0.0; ++c) {
+    // Directions of walls that follow the building: the slanted edges of the piece and of the floor's
+    // outline (`follow`), as line normals (a, b) with a > 0 or a == 0 < b, each once.
+    std::vector<std::pair<int64_t, int64_t>> normals;
+    auto add_normal = [&](int64_t a, int64_t b) {
+      if (a < 0 || (a == 0 && b < 0)) a = -a, b = -b;
+      if (std::find(normals.begin(), normals.end(), std::make_pair(a, b)) == normals.end()) normals.push_back({a, b});
+    };
+    for (std::size_t v = 0; v < piece.size(); ++v) {
+      const IPoint a = piece[v], b = piece[(v + 1) % piece.size()];
+      if (a.x != b.x && a.y != b.y) {
+        const ILine l = LineThrough(a, b);
+        add_normal(l.a, l.b);
+      }
+    }
+    for (const ILine& l : follow) add_normal(l.a, l.b);
+    // Only slopes whose grid steps hold a door (1:1, 1:2, 2:1: steps of 0.71-1.12 m on the 0.5 m grid).
+    normals.erase(std::remove_if(normals.begin(), normals.end(),
+                                 [](const auto& n) { return std::llabs(n.first) + std::llabs(n.second) > 3; }),
+                  normals.end());
+    const int angled_candidates = normals.empty() ? 0 : 2;
+    for (int c = 0; c < kCandidates + angled_candidates && best_score > (angled_candidates ? -kAngledBonus : 0.0); ++c) {
+      if (!normals.empty() && rng.Chance(0.75)) {
+        const auto [na, nb] = normals[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(normals.size()) - 1))];
+        int64_t lo = std::numeric_limits<int64_t>::max(), hi = std::numeric_limits<int64_t>::min();
+        for (const IPoint& p : piece) {
+          lo = std::min(lo, na * p.x + nb * p.y);
+          hi = std::max(hi, na * p.x + nb * p.y);
+        }
+        const double norm = std::sqrt(static_cast<double>(na * na + nb * nb));
+        const int64_t margin = static_cast<int64_t>(std::ceil(static_cast<double>(limits.min_side) * norm - 1e-9));
+        if (hi - lo < 2 * margin) continue;
+        // Through a vertex of the piece in range (no jog beside the wall), else near the middle; the first
+        // of a few whose line crosses every edge at a grid point.
+        std::vector<int64_t> ks;
+        for (const IPoint& p : piece) {
+          const int64_t k = na * p.x + nb * p.y;
+          if (k >= lo + margin && k <= hi - margin && rng.Chance(0.6)) ks.push_back(k);
+        }
+        for (int draw = 0; draw < 3; ++draw)
+          ks.push_back((rng.Int(lo + margin, hi - margin) + rng.Int(lo + margin, hi - margin)) / 2);
+        std::optional<ILine> line;
+        for (int64_t k : ks)
+          if (SplitIsOnGrid(piece, ILine{na, nb, k})) {
+            line = ILine{na, nb, k};
+            break;
+          }
+        if (!line) continue;
+        std::vector<IRing> low, high;
+        if (!SplitRing(piece, *line, &low, &high)) continue;
+        for (auto& r : high) low.push_back(std::move(r));
+        bool ok = low.size() >= 2 && static_cast<int>(pieces.size() - 1 + low.size()) <= cap;
+        // Only where every part stays well proportioned (no wedge or sliver of a room for the angle's sake).
+        for (const IRing& part : low) ok = ok && PieceUsable(part, limits) && ShapePenalty(part) <= kAngledWorst;
+        if (!ok) continue;
+        // A wall that follows the building is worth a little proportion (kAngledBonus): rooms along a slanted
+        // side keep its angle instead of a jagged axis-parallel wall beside it.
+        double score = (wanted_area2.empty() ? 0.0 : 0.75) - kAngledBonus;
+        score += PartsPenalty(low, limits);
+        if (score < best_score) {
+          best_score = score;
+          best_parts = std::move(low);
+          best_aimed = -1;
+        }
+        continue;
+      }
       const Axis axis = rng.Chance(p_vertical) ? Axis::kX : Axis::kY;
       const int64_t min_end = axis == Axis::kX ? box.min_x : box.min_y;
       const int64_t max_end = axis == Axis::kX ? box.max_x : box.max_y;
@@ -385,7 +589,7 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       for (const IRing& part : low) ok = ok && PieceUsable(part, limits);
       if (!ok) continue;
       double score = 0.0;
-      for (const IRing& part : low) score += ShapePenalty(part);
+      score += PartsPenalty(low, limits);
       bool matched = false;
       if (aimed >= 0) {
         // The wanted size is served when some part came within -40 % / +30 % of it.
@@ -428,7 +632,7 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
               TwiceArea(parts[0]) + TwiceArea(parts[1]) == TwiceArea(piece)) {
             const int64_t a = TwiceArea(parts[1]);
             const bool matched = a * 10 >= want * 6 && a * 10 <= want * 13;
-            const double score = ShapePenalty(parts[0]) + ShapePenalty(parts[1]) + (matched ? 0.0 : 1.5);
+            const double score = PartsPenalty(parts, limits) + (matched ? 0.0 : 1.5);
             if (score < best_score) {
               best_score = score;
               best_parts = std::move(parts);
@@ -450,9 +654,8 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
 }
 
 std::optional<ISegment> PlaceDoor(const ISegment& wall, int64_t width, int64_t clearance, Rng& rng) {
-  if (!IsAxisAligned(wall.a, wall.b)) return std::nullopt;
-  const int64_t len = AxisLength(wall.a, wall.b);
-  if (len < width + 2 * clearance) return std::nullopt;
+  const int64_t len = Gcd(wall.b.x - wall.a.x, wall.b.y - wall.a.y);  // grid steps along the wall
+  if (len == 0 || len < width + 2 * clearance) return std::nullopt;
   const IPoint d{(wall.b.x - wall.a.x) / len, (wall.b.y - wall.a.y) / len};
   const int64_t off = rng.Int(clearance, len - width - clearance);
   const IPoint a{wall.a.x + d.x * off, wall.a.y + d.y * off};

@@ -256,7 +256,7 @@ const std::unordered_set<std::string>& FillerWords() {
       // the building itself and generic nouns
       "villa", "home", "building", "residence", "mansion", "cottage", "dwelling", "property", "family",
       "detached", "semi", "terraced", "townhouse", "farmhouse", "colonial", "craftsman", "victorian",
-      "georgian", "cabin", "chalet",
+      "georgian", "cabin", "chalet", "pavilion", "lodge",
       "footprint", "structure", "floorplan", "project", "place", "space", "area", "room", "rooms",
       "design", "style", "version", "option", "setup", "arrangement", "configuration", "program",
       "programme", "brief", "request", "requirement", "requirements", "spec", "specification",
@@ -869,19 +869,38 @@ int Parser::TryShape(std::size_t i, Item& item) {
       return 0;
     item.shape = ShapeClass::kRectangle;
     len = 1;
+  } else if (In(t, {"hexagonal", "hexagon", "octagonal", "octagon", "trapezoidal", "trapezoid", "trapezium",
+                    "wedge", "star", "cross", "cruciform", "plus"})) {
+    if (In(t, {"star", "cross", "plus"}) && !shape_word(i + 1)) return 0;  // "a star" is not a footprint
+    item.shape = In(t, {"hexagonal", "hexagon"})   ? ShapeClass::kHexagon
+                 : In(t, {"octagonal", "octagon"}) ? ShapeClass::kOctagon
+                 : In(t, {"star", "cross", "cruciform", "plus"}) ? ShapeClass::kCross
+                                                                 : ShapeClass::kTrapezoid;
+    len = 1;
+  } else if (In(t, {"six", "eight", "6", "8"}) && i + 1 < tokens_.size() && In(tokens_[i + 1], {"sided", "sides", "cornered"})) {
+    item.shape = In(t, {"six", "6"}) ? ShapeClass::kHexagon : ShapeClass::kOctagon;
+    len = 2;
+  } else if (t.word == "bay" && i + 1 < tokens_.size() && In(tokens_[i + 1], {"window", "windows", "front", "fronted", "projection"})) {
+    item.shape = ShapeClass::kBay;
+    len = 2;
+    if (FurnitureStartsWithin(i + len, 2)) return 0;
+    return len;  // "a bay window in the living room" still asks for the bay
+  } else if (In(t, {"angled", "splayed", "skewed", "turned", "rotated"}) && i + 1 < tokens_.size() &&
+             In(tokens_[i + 1], {"wing", "wings"})) {
+    item.shape = ShapeClass::kAngledWing;
+    len = 2;
   } else if (In(t, {"irregular", "irregularly", "slanted", "slanting", "angled", "angular", "chamfered",
-                    "diagonal", "trapezoidal", "polygonal", "asymmetric", "asymmetrical", "sloped", "skewed",
-                    "oblique", "bevelled", "beveled", "nonrectangular", "trapezoid", "wedge"})) {
+                    "diagonal", "polygonal", "asymmetric", "asymmetrical", "sloped", "skewed",
+                    "oblique", "bevelled", "beveled", "nonrectangular"})) {
     item.shape = ShapeClass::kIrregular;
     len = 1;
   } else if (In(t, {"odd", "oddly", "unusual", "unusually", "free", "non"}) && i + 1 < tokens_.size() &&
              (shape_word(i + 1) || In(tokens_[i + 1], {"rectangular", "form"}))) {
     item.shape = ShapeClass::kIrregular;
     len = 2;
-  } else if (In(t, {"round", "circular", "curved", "oval", "elliptical", "star", "hexagonal", "hexagon",
-                    "octagonal", "octagon", "pentagonal", "pentagon", "triangular", "triangle", "cylindrical",
-                    "dome", "domed", "spiral", "crescent", "cross", "heart", "semicircular", "zigzag", "circle",
-                    "ring", "curvy", "rounded"})) {
+  } else if (In(t, {"round", "circular", "curved", "oval", "elliptical", "pentagonal", "pentagon", "triangular",
+                    "triangle", "cylindrical", "dome", "domed", "spiral", "crescent", "heart", "semicircular",
+                    "zigzag", "circle", "ring", "curvy", "rounded"})) {
     item.shape.reset();
     len = 1;
   } else {

@@ -6,8 +6,10 @@
 //
 // Parsing is a hand-written tokeniser and phrase patterns (no regular expressions). It understands:
 //   floors        "three-story", "3-storey", "2 floors", "two levels", "single-storey", "bungalow"
-//   footprint     rectangular / square, L-, U-, T-, H-shaped, irregular / slanted / angled; shapes the
-//                 partitioner cannot make (round, star-shaped, hexagonal, ...) are kept as unsupported_shape
+//   footprint     rectangular / square, L-, U-, T-, H-shaped, hexagonal / six-sided, octagonal, trapezoidal,
+//                 star- / cross-shaped, bay window / bay-fronted, angled wing, irregular / slanted / angled;
+//                 shapes the partitioner cannot make (round, pentagonal, triangular, ...) are kept as
+//                 unsupported_shape
 //   rooms         category and count, per floor when the text says so; synonyms (master bedroom, kids'
 //                 room, study, lounge, WC, open-plan kitchen, terrace, staircase room, ...); numbers in
 //                 words and digits; "no balcony" / "without an office" as a count of zero

@@ -99,7 +99,7 @@ BriefCheck CheckBrief(const Brief& brief, const Layout& layout) {
   }
   if (brief.unsupported_shape) {
     push("footprint \"" + brief.unsupported_shape->text + "\"", false,
-         "the partitioner makes rectangle, L, U, T, H and irregular (polygonal) footprints only",
+         "the partitioner makes rectangle, L, U, T, H, cross, hexagon, octagon, trapezoid, bay, angled-wing and irregular (polygonal) footprints only",
          brief.unsupported_shape->text);
   }
   for (const auto& r : brief.rooms) {

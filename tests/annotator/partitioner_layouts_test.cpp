@@ -46,6 +46,11 @@ TEST_CASE("relabelling partitioner layouts and fixing them keeps them valid wher
     // kitchen when one has no window: the fixes must leave no rule-9 violation of the relabelled rooms.
     for (int r = 0; r < static_cast<int>(l.rooms.size()); ++r) {
       if (l.rooms[r].category != Category::kBedroom) continue;
+      bool has_window = false;  // an inner bedroom has no exterior wall a window fix could use
+      for (const Element& w : l.windows)
+        has_window |= w.OnLevel(l.rooms[r].level) &&
+                      PointOnBoundary({(w.shape.a.x + w.shape.b.x) / 2, (w.shape.a.y + w.shape.b.y) / 2}, l.rooms[r].polygon, 1e-6);
+      if (!has_window) continue;
       RelabelRoom(l, r, Category::kBathroom);
       break;
     }

@@ -85,7 +85,8 @@ TEST_CASE("Footprints are classed as the paper names them", "[layout][footprint]
   CHECK(shape(Rooms({Box(0, 0, 2, 6), Box(2, 0, 4, 4), Box(4, 0, 6, 6), Box(6, 0, 8, 4), Box(8, 0, 10, 6)})) == "irregular");
   // Two opposite corners cut: a step, not a T.
   CHECK(shape(Rooms({Box(0, 0, 4, 2), Box(0, 2, 6, 4), Box(2, 4, 6, 6)})) == "irregular");
-  CHECK(shape(Rooms({Ring{{0, 0}, {6, 0}, {6, 4}, {2, 4}}})) == "irregular");  // a slanted outside edge
+  // Slanted outside edges that make no named class (a gable of slope 1:3): irregular.
+  CHECK(shape(Rooms({Ring{{0, 0}, {6, 0}, {6, 4}, {3, 5}, {0, 4}}})) == "irregular");
   // A slanted wall between two rooms of a rectangle is not a slanted footprint.
   CHECK(shape(Rooms({Ring{{0, 0}, {6, 0}, {4, 10}, {0, 10}}, Ring{{6, 0}, {10, 0}, {10, 10}, {4, 10}}})) == "rectangle");
   // A courtyard: irregular.
@@ -97,5 +98,34 @@ TEST_CASE("Footprints are classed as the paper names them", "[layout][footprint]
 TEST_CASE("Shape class names parse back", "[layout][footprint]") {
   for (ShapeClass s : AllShapeClasses()) CHECK(ParseShapeClass(ShapeClassName(s)) == s);
   CHECK(ParseShapeClass("l") == ShapeClass::kL);
-  CHECK_FALSE(ParseShapeClass("octagon").has_value());
+  CHECK(ParseShapeClass("octagon") == ShapeClass::kOctagon);
+  CHECK(ParseShapeClass("angled-wing") == ShapeClass::kAngledWing);
+  CHECK_FALSE(ParseShapeClass("star").has_value());
+  CHECK_FALSE(ParseShapeClass("Hexagon").has_value());
+}
+
+TEST_CASE("Polygonal footprints are classed by their sides and corners", "[layout][footprint]") {
+  auto shape = [](const Layout& l) { return std::string(ShapeClassName(ClassifyFootprint(l).value())); };
+  // A near-regular hexagon (slopes 7:4, corners 120 and 121 degrees), split into three rooms.
+  const Ring left{{4, 0}, {8, 0}, {8, 14}, {4, 14}, {0, 7}}, mid = Box(8, 0, 12, 14), right{{12, 0}, {16, 0}, {20, 7}, {16, 14}, {12, 14}};
+  CHECK(shape(Rooms({left, mid, right})) == "hexagon");
+  // A rectangle with two chamfered corners is six-sided too, but has right angles: a chamfered rectangle.
+  const Layout two_chamfers = Rooms({Ring{{2, 0}, {10, 0}, {10, 6}, {2, 6}, {0, 4}, {0, 2}}});
+  CHECK(shape(two_chamfers) == "rectangle");
+  CHECK(FootprintChamfered(two_chamfers));
+  CHECK_FALSE(FootprintChamfered(Rooms({left, mid, right})));  // slopes of 7:4 are not 45-degree chamfers
+  // An octagon (all four corners cut at 45 degrees), in two rooms split along a diagonal.
+  CHECK(shape(Rooms({Ring{{3, 0}, {7, 0}, {10, 3}, {10, 7}, {7, 10}, {3, 7}}, Ring{{3, 7}, {7, 10}, {3, 10}, {0, 7}, {0, 3}, {3, 0}}})) ==
+        "octagon");
+  // Trapezoids: one slanted side or two.
+  CHECK(shape(Rooms({Ring{{0, 0}, {10, 0}, {10, 6}, {4, 6}}})) == "trapezoid");
+  CHECK(shape(Rooms({Ring{{0, 0}, {12, 0}, {9, 6}, {3, 6}}})) == "trapezoid");
+  // A cross: a notch at each of the four corners.
+  CHECK(shape(Rooms({Box(3, 0, 7, 3), Box(0, 3, 10, 7), Box(3, 7, 7, 10)})) == "cross");
+  // A bay: three sides out of the bottom side, the outer two at 45 degrees.
+  CHECK(shape(Rooms({Ring{{0, 1}, {3, 1}, {4, 0}, {6, 0}, {7, 1}, {10, 1}, {10, 8}, {0, 8}}})) == "bay");
+  // A wing turned 45 degrees off the body's right side.
+  CHECK(shape(Rooms({Ring{{0, 0}, {10, 0}, {16, 6}, {12, 10}, {10, 8}, {10, 12}, {0, 12}}})) == "angled-wing");
+  // An L with one chamfered corner is still an L.
+  CHECK(shape(Rooms({Ring{{0, 0}, {8, 0}, {10, 2}, {10, 5}, {5, 5}, {5, 10}, {0, 10}}})) == "L");
 }

@@ -70,6 +70,53 @@ TEST_CASE("SplitRing refuses a line crossing a slanted edge off the grid", "[par
   CHECK(std::find(low[0].begin(), low[0].end(), IPoint{2, 1}) != low[0].end());
 }
 
+TEST_CASE("SplitRing along a diagonal cuts a corner off an octagon", "[partitioner][geometry]") {
+  // A 10 x 10 octagon with 3-unit 45-degree corners; the line x + y = 7 runs from (7, 0) to (0, 7).
+  const IRing oct{{3, 0}, {7, 0}, {10, 3}, {10, 7}, {7, 10}, {3, 10}, {0, 7}, {0, 3}};
+  const ILine diag{1, 1, 7};
+  REQUIRE(SplitIsOnGrid(oct, diag));
+  CHECK_FALSE(SplitIsOnGrid(oct, ILine{1, 1, 10}));  // would cross the chamfers at (1.5, 8.5) and (8.5, 1.5)
+  std::vector<IRing> low, high;
+  REQUIRE(SplitRing(oct, diag, &low, &high));
+  REQUIRE(low.size() == 1);
+  REQUIRE(high.size() == 1);
+  CHECK(TwiceArea(low[0]) == 2 * 20);   // the corner triangle of 24.5 less the chamfer's 4.5
+  CHECK(TwiceArea(high[0]) == 2 * 62);
+  for (const IPoint& p : low[0]) CHECK(p.x + p.y <= 7);
+  for (const IPoint& p : high[0]) CHECK(p.x + p.y >= 7);
+  CHECK(IsSimple(low[0]));
+  CHECK(IsSimple(high[0]));
+  CHECK(low[0].size() == 4);
+  // The shared edge is the cut, from (7, 0) to (0, 7).
+  const auto shared = SharedSegments(low[0], high[0]);
+  REQUIRE(shared.size() == 1);
+  CHECK(std::abs(shared[0].a.x - shared[0].b.x) == 7);
+}
+
+TEST_CASE("SplitRing along a line of any slope refuses off-grid crossings", "[partitioner][geometry]") {
+  const IRing rect = BoxRing({0, 0, 10, 6});
+  // 2x - y = 4 crosses y = 0 at x = 2 and y = 6 at x = 5: on the grid.
+  const ILine steep{2, -1, 4};
+  REQUIRE(SplitIsOnGrid(rect, steep));
+  std::vector<IRing> low, high;
+  REQUIRE(SplitRing(rect, steep, &low, &high));
+  REQUIRE(low.size() == 1);
+  REQUIRE(high.size() == 1);
+  CHECK(TwiceArea(low[0]) == 2 * 21);  // the trapezoid (0,0)-(2,0)-(5,6)-(0,6): (2 + 5) / 2 * 6
+  CHECK(TotalTwiceArea(low) + TotalTwiceArea(high) == TwiceArea(rect));
+  // 2x - y = 5 crosses y = 0 at x = 2.5: refused, outputs untouched.
+  const ILine off{2, -1, 5};
+  CHECK_FALSE(SplitIsOnGrid(rect, off));
+  std::vector<IRing> l2, h2;
+  CHECK_FALSE(SplitRing(rect, off, &l2, &h2));
+  CHECK(l2.empty());
+  // LineThrough gives the same line, its inside on the high side of a counter-clockwise edge.
+  const ILine through = LineThrough({2, 0}, {5, 6});
+  CHECK((through.a == -2 && through.b == 1 && through.k == -4));
+  CHECK(LineValue(through, {9, 1}) < through.k);  // right of (2,0) -> (5,6): the low side
+  CHECK(LineValue(through, {0, 5}) > through.k);
+}
+
 TEST_CASE("UnionTiles merges tiles with T-junctions into one outline", "[partitioner][geometry]") {
   // A 4 x 4 square beside two 4 x 2 tiles (T-junction at (4, 2)).
   const std::vector<IRing> tiles{BoxRing({0, 0, 4, 4}), BoxRing({4, 0, 8, 2}), BoxRing({4, 2, 8, 4})};

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -49,8 +50,21 @@ Realism Measure(uint64_t count) {
     r.layouts_living_ground += living_ground;
     r.all_rooms += static_cast<int>(s.layout.rooms.size());
     for (const Room& room : s.layout.rooms) {
-      const Box2 box = BoundingBox(room.polygon);
-      const double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
+      // The room's bounding rectangle in its own frame: the smallest over the directions of its edges (the
+      // axes for an axis-parallel room; a room in a wing turned 45 degrees is measured along the wing).
+      double w = 0.0, h = 0.0;
+      const Ring& ring = room.polygon;
+      for (std::size_t e = 0; e < ring.size(); ++e) {
+        const Point a = ring[e], b = ring[(e + 1) % ring.size()];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
+        const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
+        double u0 = 1e18, u1 = -1e18, v0 = 1e18, v1 = -1e18;
+        for (const Point& p : ring) {
+          const double u = p.x * ux + p.y * uy, v = -p.x * uy + p.y * ux;
+          u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+        }
+        if (e == 0 || (u1 - u0) * (v1 - v0) < w * h - 1e-9) w = u1 - u0, h = v1 - v0;
+      }
       const double aspect = std::max(w, h) / std::min(w, h);
       const double area = Area(room.polygon);
       const bool staircase = room.category == Category::kUtilityRoom && s.floors > 1;

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "partitioner/steps.h"
@@ -112,6 +113,136 @@ TEST_CASE("Footprint classes look like their names", "[partitioner][footprint]")
   }
 }
 
+namespace {
+// Inside angles of a counter-clockwise ring, degrees.
+std::vector<double> InsideAngles(const IRing& ring) {
+  std::vector<double> out;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+    const double ux = double(a.x - b.x), uy = double(a.y - b.y), vx = double(c.x - b.x), vy = double(c.y - b.y);
+    double deg = std::atan2(vx * uy - vy * ux, vx * ux + vy * uy) * 180.0 / M_PI;
+    out.push_back(deg <= 0.0 ? deg + 360.0 : deg);
+  }
+  return out;
+}
+int SlantedEdges(const IRing& ring) {
+  int n = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
+    n += a.x != b.x && a.y != b.y;
+  }
+  return n;
+}
+}  // namespace
+
+TEST_CASE("Polygonal footprint classes have the sides and corners of their names", "[partitioner][footprint]") {
+  for (uint64_t seed = 0; seed < 40; ++seed) {
+    INFO("seed " << seed);
+    for (auto [W, H] : {std::pair<int64_t, int64_t>{36, 30}, {30, 40}}) {
+      const IRing hex = Footprint(ShapeClass::kHexagon, seed, W, H);
+      REQUIRE(hex.size() == 6);
+      CHECK(SlantedEdges(hex) == 4);
+      for (double a : InsideAngles(hex)) CHECK((a >= 105.0 && a <= 145.0));
+      const IRing oct = Footprint(ShapeClass::kOctagon, seed, W, H);
+      REQUIRE(oct.size() == 8);
+      CHECK(SlantedEdges(oct) == 4);
+      for (double a : InsideAngles(oct)) CHECK(a == Approx(135.0));
+      const IRing trap = Footprint(ShapeClass::kTrapezoid, seed, W, H);
+      REQUIRE(trap.size() == 4);
+      CHECK(SlantedEdges(trap) >= 1);
+      for (double a : InsideAngles(trap)) CHECK((a >= 45.0 - 1e-9 && a <= 135.0 + 1e-9));
+      const IRing cross = Footprint(ShapeClass::kCross, seed, W, H);
+      REQUIRE(cross.size() == 12);
+      CHECK(ReflexCorners(cross) == 4);
+      CHECK(CornersKept(cross, W, H) == 0);  // every corner notched away
+      const IRing bay = Footprint(ShapeClass::kBay, seed, W, H);
+      REQUIRE(bay.size() == 8);
+      CHECK(SlantedEdges(bay) == 2);
+      CHECK(ReflexCorners(bay) == 2);
+      const IRing wing = Footprint(ShapeClass::kAngledWing, seed, W, H);
+      REQUIRE(wing.size() == 7);
+      CHECK(SlantedEdges(wing) == 3);
+      // The hexagon's flat sides are at least 8 m (a staircase 2 m from both ends; its frame grows for that).
+      for (std::size_t i = 0; i < hex.size(); ++i) {
+        const IPoint a = hex[i], b = hex[(i + 1) % hex.size()];
+        if (a.x == b.x || a.y == b.y) CHECK(std::llabs(b.x - a.x) + std::llabs(b.y - a.y) >= 16);
+      }
+      for (const IRing* ring : {&hex, &oct, &trap, &cross, &bay, &wing}) {
+        CHECK(IsSimple(*ring));
+        CHECK(TwiceArea(*ring) > 0);
+        const IBox box = BoundingBox(*ring);
+        CHECK((box.min_x >= 0 && box.min_y >= 0));
+        if (ring != &hex) CHECK((box.max_x <= W && box.max_y <= H));
+      }
+    }
+  }
+}
+
+TEST_CASE("Chamfered corners are 45 degrees and keep the class's other corners", "[partitioner][footprint]") {
+  int chamfered = 0;
+  for (uint64_t seed = 0; seed < 40; ++seed) {
+    Rng rng(MixSeed(seed, 7));
+    const IRing l = Footprint(ShapeClass::kL, seed);
+    const IRing cut = ChamferCorners(l, kScale, rng);
+    REQUIRE(IsSimple(cut));
+    CHECK(TwiceArea(cut) <= TwiceArea(l));
+    const int added = static_cast<int>(cut.size()) - static_cast<int>(l.size());
+    CHECK((added >= 0 && added <= 2));
+    chamfered += added > 0;
+    CHECK(ReflexCorners(cut) == 1);
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+      const IPoint a = cut[i], b = cut[(i + 1) % cut.size()];
+      if (a.x != b.x && a.y != b.y) {
+        CHECK(std::llabs(b.x - a.x) == std::llabs(b.y - a.y));  // 45 degrees
+        CHECK(std::llabs(b.x - a.x) >= 3);                      // legs of at least 1.5 m
+      }
+    }
+  }
+  CHECK(chamfered >= 30);
+}
+
+TEST_CASE("BSP in slanted pieces makes walls parallel to the slanted sides, no corner under 45 degrees",
+          "[partitioner][bsp]") {
+  // Octagons and angled wings split into 3-5 rooms: every room without a corner under 45 degrees, the rooms
+  // tiling the outline, and some floors with a slanted wall between two rooms.
+  int floors = 0, with_angled_wall = 0;
+  for (ShapeClass shape : {ShapeClass::kOctagon, ShapeClass::kAngledWing})
+    for (uint64_t seed = 0; seed < 40; ++seed) {
+      INFO(ShapeClassName(shape) << " seed " << seed);
+      const IRing outline = Footprint(shape, seed, 26, 22);  // 13 x 11 m
+      Rng rng(MixSeed(seed, 3));
+      BspLimits limits;
+      limits.min_area2 = 2 * 24;
+      limits.min_side = 5;
+      limits.min_width = 2.4;
+      std::vector<ILine> follow;  // as the partitioner passes them: the outline's slanted sides
+      for (std::size_t i = 0; i < outline.size(); ++i) {
+        const IPoint a = outline[i], b = outline[(i + 1) % outline.size()];
+        if (a.x != b.x && a.y != b.y) follow.push_back(LineThrough(a, b));
+      }
+      const std::vector<IRing> rooms = SplitRoomBsp({outline}, 4 + static_cast<int>(seed % 2), limits, rng, {}, follow);
+      int64_t total = 0;
+      for (const IRing& r : rooms) {
+        total += TwiceArea(r);
+        CHECK(IsSimple(r));
+        CHECK_FALSE(HasSharpCorner(r));
+      }
+      CHECK(total == TwiceArea(outline));
+      IRing doubled;
+      for (const IPoint& p : outline) doubled.push_back({2 * p.x, 2 * p.y});
+      bool angled = false;
+      for (const IRing& r : rooms)
+        for (std::size_t i = 0; i < r.size(); ++i) {
+          const IPoint a = r[i], b = r[(i + 1) % r.size()];
+          if (a.x != b.x && a.y != b.y && PointInRing(doubled, {a.x + b.x, a.y + b.y}) == 1) angled = true;
+        }
+      ++floors;
+      with_angled_wall += angled;
+    }
+  CHECK(with_angled_wall * 6 >= floors);  // 18 of 80 when written; whole layouts reach 30 % (layout_properties_test)
+}
+
 TEST_CASE("Irregular footprints cut at many angles, not only 45 degrees", "[partitioner][footprint]") {
   std::set<std::pair<int64_t, int64_t>> slopes;
   for (uint64_t seed = 0; seed < 200; ++seed) {
@@ -194,7 +325,8 @@ TEST_CASE("BSP splits tile the floor with connected, usable rooms", "[partitione
       }
       CHECK(area == TwiceArea(ring));  // no gap, no overlap (all inside, areas add up)
       CHECK(UnionTiles(rooms).size() == 1);
-      // New edges (those not on the footprint) are axis-aligned split lines.
+      // New edges (those not on the footprint) are axis-aligned split lines or parallel to a slanted side
+      // of the footprint.
       for (const IRing& room : rooms)
         for (std::size_t i = 0; i < room.size(); ++i) {
           const IPoint a = room[i], b = room[(i + 1) % room.size()];
@@ -202,7 +334,13 @@ TEST_CASE("BSP splits tile the floor with connected, usable rooms", "[partitione
             const IPoint mid2{a.x + b.x, a.y + b.y};
             IRing doubled;
             for (const IPoint& p : ring) doubled.push_back({2 * p.x, 2 * p.y});
-            CHECK(PointInRing(doubled, mid2) == 0);  // a slanted edge is part of the footprint's
+            if (PointInRing(doubled, mid2) == 0) continue;  // part of the footprint's slanted edge
+            bool parallel = false;
+            for (std::size_t j = 0; j < ring.size(); ++j) {
+              const IPoint c = ring[j], d = ring[(j + 1) % ring.size()];
+              parallel |= (b.x - a.x) * (d.y - c.y) == (b.y - a.y) * (d.x - c.x);
+            }
+            CHECK(parallel);
           }
         }
     }

@@ -300,7 +300,7 @@ TEST_CASE("negations, ranges and counts after the noun") {
 }
 
 TEST_CASE("footprints the partitioner cannot make are reported") {
-  for (const char* text : {"a round villa with a kitchen", "a star-shaped house", "a hexagonal home with two floors"}) {
+  for (const char* text : {"a round villa with a kitchen", "a pentagonal house", "a triangular home with two floors"}) {
     Brief brief = ParseBrief(text);
     INFO(text);
     CHECK(brief.unsupported_shape.has_value());
@@ -311,6 +311,17 @@ TEST_CASE("footprints the partitioner cannot make are reported") {
   CHECK(ParseBrief("a T-shaped villa").shape == ShapeClass::kT);
   CHECK(ParseBrief("a square house").shape == ShapeClass::kRectangle);
   CHECK(ParseBrief("a villa with slanted walls").shape == ShapeClass::kIrregular);
+  // The polygonal classes.
+  CHECK(ParseBrief("a hexagonal home with two floors").shape == ShapeClass::kHexagon);
+  CHECK(ParseBrief("a six-sided pavilion").shape == ShapeClass::kHexagon);
+  CHECK(ParseBrief("an octagonal single-storey house").shape == ShapeClass::kOctagon);
+  CHECK(ParseBrief("a star-shaped house").shape == ShapeClass::kCross);
+  CHECK(ParseBrief("a cross-shaped villa round a central hall").shape == ShapeClass::kCross);
+  CHECK(ParseBrief("a trapezoidal plot-hugging house").shape == ShapeClass::kTrapezoid);
+  CHECK(ParseBrief("a house with a bay window in the living room").shape == ShapeClass::kBay);
+  CHECK(ParseBrief("a villa with an angled wing for the bedrooms").shape == ShapeClass::kAngledWing);
+  // A star or cross that is not the outline is no footprint.
+  CHECK(!ParseBrief("a villa with a star on the door").shape);
   // A round table is furniture, not the footprint; 200 square metres is not a shape.
   Brief table = ParseBrief("a house with a round table in the dining room, 200 square metres");
   CHECK(!table.unsupported_shape);

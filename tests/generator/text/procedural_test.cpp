@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include "generator/text/backends.h"
+#include "layout/footprint.h"
 #include "generator/text/plan.h"
 #include "layout/layout_io.h"
 
@@ -106,17 +107,40 @@ TEST_CASE("the procedural backend is deterministic for a seed") {
   CHECK(LayoutToString(*a.layout) != LayoutToString(*c.layout));
 }
 
+TEST_CASE("polygonal footprints asked in words are made and meet the rest of the brief") {
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  const std::pair<const char*, ShapeClass> cases[] = {
+      {"A hexagonal two-storey villa with a kitchen, a living room and three bedrooms.", ShapeClass::kHexagon},
+      {"An octagonal single-storey house with two bedrooms, a kitchen and a bathroom.", ShapeClass::kOctagon},
+      {"A star-shaped pavilion with a living room, a dining room and a kitchen.", ShapeClass::kCross},
+      {"A trapezoidal two-storey home with an office and two bedrooms.", ShapeClass::kTrapezoid},
+      {"A villa with an angled wing: three bedrooms, a kitchen and a living room.", ShapeClass::kAngledWing},
+      {"A cottage with a bay window, a kitchen, a bathroom and two bedrooms.", ShapeClass::kBay},
+  };
+  for (const auto& [text, shape] : cases) {
+    INFO(text);
+    PlanSummary plan = PlanLayout(text, options);
+    REQUIRE(plan.valid());
+    std::string unmet;
+    for (const auto& u : plan.unmet) unmet += u.requirement + "; ";
+    INFO("unmet: " << unmet);
+    CHECK(ClassifyFootprint(*plan.layout, 0) == shape);
+    CHECK(plan.outcome == PlanOutcome::kMet);
+  }
+}
+
 TEST_CASE("requirements the partitioner cannot meet are reported, and the layout is still valid") {
   PlanOptions options;
   options.time_budget_s = 0.5;
-  SECTION("a star-shaped footprint") {
-    PlanSummary plan = PlanLayout("A star-shaped two-story villa with a kitchen and three bedrooms.", options);
+  SECTION("a round footprint") {
+    PlanSummary plan = PlanLayout("A round two-story villa with a kitchen and three bedrooms.", options);
     REQUIRE(plan.valid());
     CHECK(plan.outcome == PlanOutcome::kPartial);
     REQUIRE(plan.brief.unsupported_shape.has_value());
-    CHECK(plan.brief.unsupported_shape->text == "star-shaped");
+    CHECK(plan.brief.unsupported_shape->text == "round");
     bool reported = false;
-    for (const auto& u : plan.unmet) reported |= u.requirement.find("star-shaped") != std::string::npos;
+    for (const auto& u : plan.unmet) reported |= u.requirement.find("round") != std::string::npos;
     CHECK(reported);
   }
   SECTION("more floors than the format allows") {
