@@ -148,6 +148,34 @@ TEST_CASE("villa synth refuses a non-empty directory without --force", "[partiti
   }
 }
 
+TEST_CASE("villa synth --shapes makes only the classes named, in their shares, and the manifest says how",
+          "[partitioner][synth]") {
+  TempDir tmp;
+  const fs::path out = tmp.path / "ds";
+  const Run run = Villa("synth --count 40 --seed 5 --shapes hexagon=1,angled-wing=3 --out '" + out.string() + "'");
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  std::map<std::string, int> shapes;
+  std::ifstream in(out / "layouts.jsonl");
+  for (std::string line; std::getline(in, line);) {
+    const villa::Json record = villa::Json::parse(line);
+    ++shapes[record.at("shape").get<std::string>()];
+    // The record's class is the geometry's.
+    const auto layout = villa::LayoutFromRecord(record, "layouts.jsonl");
+    REQUIRE(layout.ok());
+    CHECK(std::string(villa::ShapeClassName(villa::ClassifyFootprint(*layout, 0).value())) == record.at("shape"));
+  }
+  CHECK(shapes.size() == 2);
+  CHECK(shapes["hexagon"] + shapes["angled-wing"] == 40);
+  CHECK(shapes["angled-wing"] > shapes["hexagon"]);
+  const villa::Json manifest = villa::Json::parse(Slurp(out / "manifest.json"));
+  CHECK(manifest.at("regenerate").get<std::string>().find("--shapes hexagon=1,angled-wing=3") != std::string::npos);
+  CHECK(manifest.at("recipe").at("shapes").at("octagon").get<double>() == 0.0);
+  const villa::Json stats = villa::Json::parse(Slurp(out / "stats.json"));
+  CHECK(stats.at("angled_layouts").get<int>() == 40);  // both classes always have a slanted outside edge
+  CHECK(stats.at("angled_interior_layouts").get<int>() >= 20);
+}
+
 TEST_CASE("villa synth rejects bad arguments with exit 2 and a clear message", "[partitioner][synth]") {
   TempDir tmp;
   const std::string out = " --out '" + (tmp.path / "x").string() + "'";
@@ -163,6 +191,10 @@ TEST_CASE("villa synth rejects bad arguments with exit 2 and a clear message", "
       {"synth --count 5 --shard x" + out, "--shard"},
       {"synth --count 5 --grid 0.3" + out, "grid 0.3"},
       {"synth --count 5 --threads -1" + out, "--threads"},
+      {"synth --count 5 --shapes hexagon=1,star=2" + out, "\"star\" is not a footprint class"},
+      {"synth --count 5 --shapes hexagon" + out, "expected NAME=WEIGHT"},
+      {"synth --count 5 --shapes octagon=-1" + out, "\"octagon=-1\""},
+      {"synth --count 5 --shapes L=0" + out, "at least one weight must be positive"},
       {"synth --out x", "--count"},
   };
   for (const Case& c : cases) {
