@@ -97,6 +97,9 @@ std::string DataCard(const ExportSummary& s, const TrainerConfigInput& config) {
      << FloorsSentence(s.layouts_by_floors) << "\n\n"
      << "| footprint (ground floor) | layouts | share |\n| --- | ---: | ---: |\n";
   for (const auto& [shape, count] : s.layouts_by_shape) md << "| " << shape << " | " << count << " | " << Percent(count, s.layouts) << " |\n";
+  md << "\nA slanted outside edge (neither horizontal nor vertical) in " << s.slanted_outside << " layouts ("
+     << Percent(s.slanted_outside, s.layouts) << "), a slanted wall, door or open between two rooms in " << s.slanted_inside
+     << " (" << Percent(s.slanted_inside, s.layouts) << ").\n";
   md << "\nDescriptions: " << s.coarse_samples << " coarse (" << Percent(s.coarse_samples, s.samples) << ") and "
      << s.fine_samples << " fine (" << Percent(s.fine_samples, s.samples) << "). ";
   if (o.descriptions == DescriptionChoice::kOne) {

@@ -56,6 +56,7 @@ struct Candidate {
   std::string id;
   std::string status;
   std::string shape;
+  bool slanted_outside = false, slanted_inside = false;  // a slanted outside edge / wall between rooms
   int floors = 0;
   std::string geometry;
   std::uint64_t order = 0;  // position key within the shuffled list
@@ -296,6 +297,8 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
       c.shape = shape ? std::string(ShapeClassName(*shape)) : "none";
     }
     c.floors = layout->LevelCount();
+    c.slanted_outside = HasSlantedOutsideEdge(*layout, 0);
+    c.slanted_inside = HasSlantedWallBetweenRooms(*layout);
     c.order = SplitMix64Hash(StableHash(geometry) ^ SplitMix64Hash(options.seed));
     c.geometry = std::move(geometry);
     c.answer = std::move(answer);
@@ -342,6 +345,8 @@ Result<ExportSummary> ExportDataset(const fs::path& annotated, const fs::path& o
       ++summary.layouts;
       ++summary.layouts_by_floors[c.floors];
       ++summary.layouts_by_shape[c.shape];
+      summary.slanted_outside += c.slanted_outside;
+      summary.slanted_inside += c.slanted_inside;
       ++summary.layouts_by_status[c.status];
       const std::size_t answer_tok = ApproxTokens(c.answer);
       for (const Description& d : c.samples) {

@@ -95,6 +95,8 @@ struct ExportSummary {
   std::size_t samples = 0;
   std::map<int, std::size_t> layouts_by_floors;          // floors -> layouts
   std::map<std::string, std::size_t> layouts_by_shape;   // footprint class -> layouts
+  std::size_t slanted_outside = 0;  // layouts whose ground outline has a slanted edge
+  std::size_t slanted_inside = 0;   // layouts with a slanted wall, door or open between two rooms
   std::map<std::string, std::size_t> layouts_by_status;  // verified / auto -> layouts
   std::size_t coarse_samples = 0;
   std::size_t fine_samples = 0;

@@ -299,6 +299,19 @@ std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level) {
   return ShapeClass::kIrregular;
 }
 
+bool HasSlantedWallBetweenRooms(const Layout& layout) {
+  for (const auto* list : {&layout.interiors, &layout.doors, &layout.opens})
+    for (const Element& e : *list)
+      if (Slanted(e.shape.a, e.shape.b)) return true;
+  return false;
+}
+
+bool HasSlantedOutsideEdge(const Layout& layout, int level) {
+  for (const PolygonWithHoles& p : LevelFootprint(layout, level))
+    if (SlantedEdges(p.outer) > 0) return true;
+  return false;
+}
+
 bool FootprintChamfered(const Layout& layout, int level) {
   const std::optional<Ring> outline = SingleOutline(layout, level);
   if (!outline) return false;

@@ -67,6 +67,12 @@ std::vector<PolygonWithHoles> LevelFootprint(const Layout& layout, int level, do
 // four corners: cross; anything else, a courtyard included: irregular). Empty for a level without rooms.
 std::optional<ShapeClass> ClassifyFootprint(const Layout& layout, int level = 0);
 
+// True when some wall between two rooms (an interior wall, a door or an open) is neither horizontal nor
+// vertical (the stats of `villa synth` and the data card of `villa finetune export` count these layouts).
+bool HasSlantedWallBetweenRooms(const Layout& layout);
+// True when `level`'s outline has an edge that is neither horizontal nor vertical.
+bool HasSlantedOutsideEdge(const Layout& layout, int level = 0);
+
 // True when `level`'s outline has a 45-degree chamfer at a convex corner between a horizontal and a
 // vertical side (an octagon's corners count; a hexagon's or an irregular cut's slopes do not).
 bool FootprintChamfered(const Layout& layout, int level = 0);

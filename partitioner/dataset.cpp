@@ -72,16 +72,6 @@ Status ParseShapeWeights(const std::string& text, double* weights) {
   return {};
 }
 
-bool HasAngledInteriorWall(const Layout& layout) {
-  auto slanted = [](const Segment& s) {
-    return std::abs(s.a.x - s.b.x) > kTolerance && std::abs(s.a.y - s.b.y) > kTolerance;
-  };
-  for (const auto* list : {&layout.interiors, &layout.doors, &layout.opens})
-    for (const Element& e : *list)
-      if (slanted(e.shape)) return true;
-  return false;
-}
-
 bool SynthOptions::IsValid(std::string* message) const {
   auto fail = [&](std::string text) {
     if (message) *message = std::move(text);
@@ -248,7 +238,7 @@ Outcome MakeOne(const SynthOptions& o, const std::vector<int>& floor_plan, uint6
     st.layouts = 1;
     st.validated = 1;
     st.angled = s.angled_edges ? 1 : 0;
-    st.angled_interior = HasAngledInteriorWall(s.layout) ? 1 : 0;
+    st.angled_interior = HasSlantedWallBetweenRooms(s.layout) ? 1 : 0;
     st.chamfered = FootprintChamfered(s.layout, 0) ? 1 : 0;
     st.floors[s.floors] = 1;
     st.shapes[std::string(ShapeClassName(s.shape))] = 1;

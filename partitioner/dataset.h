@@ -44,9 +44,6 @@ struct SynthOptions {
 // An error names the bad part ("--shapes \"star=1\": \"star\" is not a footprint class (...)").
 Status ParseShapeWeights(const std::string& text, double* weights);
 
-// True when some wall between two rooms of the layout (an interior wall, a door or an open) is slanted.
-bool HasAngledInteriorWall(const Layout& layout);
-
 // What the dataset holds (stats.json and the printed summary).
 struct SynthStats {
   uint64_t layouts = 0;

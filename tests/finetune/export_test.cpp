@@ -203,6 +203,9 @@ TEST_CASE("The trainer configs carry the keys their trainers read", "[finetune][
   CHECK(card.find("No person verified this dataset") != std::string::npos);
   CHECK(card.find("| train | `train.jsonl` | " + std::to_string(s.layouts_per_split[0]) + " | ") != std::string::npos);
   CHECK(card.find("Floors (1 : 2 storeys): 20 : 20, ratio 5 : 5.") != std::string::npos);
+  // The fixtures are an L and a rectangle: no slanted edge outside or between rooms.
+  CHECK(card.find("A slanted outside edge (neither horizontal nor vertical) in 0 layouts (0.0%), a slanted wall, door or "
+                  "open between two rooms in 0 (0.0%).") != std::string::npos);
   for (const char* needle : {"llamafactory-cli train llamafactory_lora_sft.yaml", "axolotl train axolotl.yaml", "SFTTrainer",
                              "--enable-lora --lora-modules villa-layout=", "\"model\": \"villa-layout\"", "--backend llm",
                              "coarse", "fine", "~tokens"}) {

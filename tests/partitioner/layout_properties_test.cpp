@@ -65,7 +65,7 @@ TEST_CASE("Thousands of seeded layouts are valid and cover every footprint class
     ++shapes[std::string(ShapeClassName(s.shape))];
     ++floors[s.floors];
     angled += s.angled_edges;
-    angled_interior += HasAngledInteriorWall(layout);
+    angled_interior += HasSlantedWallBetweenRooms(layout);
     retries += s.retries;
     // The record's class is the one the classifier reads from the geometry.
     REQUIRE(ClassifyFootprint(layout, 0) == s.shape);
