@@ -34,6 +34,16 @@ bool SegmentsTouch(IPoint a, IPoint b, IPoint c, IPoint d) {
 IPoint RotateCcw(IPoint p) { return {-p.y, p.x}; }
 IPoint RotateCw(IPoint p) { return {p.y, -p.x}; }
 
+// The turn angle of (dot, cross), in (-pi, pi] as atan2(cross, dot) gives it, compared exactly: true when a's
+// angle is greater than b's (a turns further counter-clockwise).
+int TurnHalf(IPoint t) { return t.y < 0 ? 0 : (t.y == 0 && t.x > 0 ? 1 : (t.y > 0 ? 2 : 3)); }
+bool TurnsMoreLeft(IPoint a, IPoint b) {
+  const int ha = TurnHalf(a), hb = TurnHalf(b);
+  if (ha != hb) return ha > hb;
+  if (ha == 1 || ha == 3) return false;  // the same direction
+  return b.x * a.y - b.y * a.x > 0;     // a counter-clockwise of b within the same open half-plane
+}
+
 struct DirectedEdge {
   IPoint a, b;
   bool used = false;
@@ -69,15 +79,15 @@ std::vector<IRing> AssembleLoops(std::vector<DirectedEdge>& edges) {
       if (++guard > edges.size() + 2) break;  // malformed input: give up on this loop
       auto [lo, hi] = range(cur);
       long best = -1;
-      double best_angle = -10.0;
-      const double dx = double(cur.x - prev.x), dy = double(cur.y - prev.y);
+      IPoint best_turn{0, 0};  // (dot, cross) of the incoming direction with the best outgoing edge
+      const IPoint in{cur.x - prev.x, cur.y - prev.y};
       for (long i = lo; i < hi; ++i) {
         const bool is_start = static_cast<std::size_t>(i) == s;
         if (edges[i].used && !is_start) continue;
-        const double ox = double(edges[i].b.x - cur.x), oy = double(edges[i].b.y - cur.y);
-        const double angle = std::atan2(dx * oy - dy * ox, dx * ox + dy * oy);
-        if (angle > best_angle) {
-          best_angle = angle;
+        const IPoint out{edges[i].b.x - cur.x, edges[i].b.y - cur.y};
+        const IPoint turn{in.x * out.x + in.y * out.y, in.x * out.y - in.y * out.x};
+        if (best < 0 || TurnsMoreLeft(turn, best_turn)) {
+          best_turn = turn;
           best = i;
         }
       }

@@ -1419,9 +1419,10 @@ PartitionSummary GenerateLayout(const PartitionOptions& options, uint64_t seed) 
       continue;
     }
     Layout layout = BuildLayout(a.building, options.grid);
-    // The class is what the one classifier reads from the outline (an irregular cut that happens to be a
-    // 45-degree chamfer reads as the corner it cuts): the record never names a class its geometry is not.
-    if (ClassifyFootprint(layout, 0) != plan.shape) {
+    // The class is what the one classifier reads from the outline: an irregular cut that happens to be a
+    // 45-degree chamfer reads as the corner it cuts, so an irregular outline is read back (the other classes
+    // are theirs by construction, chamfers included; the layout test reads every class back).
+    if (plan.shape == ShapeClass::kIrregular && ClassifyFootprint(layout, 0) != plan.shape) {
       ++reasons["footprint reads as another class"];
       continue;
     }

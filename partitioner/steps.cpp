@@ -273,11 +273,12 @@ IRing FootprintShape(ShapeClass shape, int64_t W, int64_t H, const Scale& scale,
       const int64_t w = swap ? H : W, h = swap ? W : H;
       const int64_t s_units = std::max(scale.UnitsUp(3.0), Frac(h, 0.3 + 0.1 * rng.Unit()));
       const int64_t t = std::min(s_units + scale.UnitsUp(2.0 + 2.0 * rng.Unit()), h - s_units);
-      const int64_t body = w - t;
-      if (body < arm || t < s_units + scale.UnitsUp(1.5)) return {};
+      // The body at least as long as the wing reaches out (the frame grows for that), and 4 m.
+      const int64_t body = std::max({w - t, t, arm});
+      if (t < s_units + scale.UnitsUp(1.5)) return {};
       const IRing wing{{0, 0}, {body, 0}, {body + t, t}, {body + t - s_units, t + s_units}, {body, 2 * s_units},
                        {body, h}, {0, h}};
-      return Oriented(wing, w, h, rng.Chance(0.5), rng.Chance(0.5), swap);
+      return Oriented(wing, body + t, h, rng.Chance(0.5), rng.Chance(0.5), swap);
     }
     case ShapeClass::kIrregular: {
       IRing ring = rect;

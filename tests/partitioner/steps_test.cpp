@@ -173,7 +173,7 @@ TEST_CASE("Polygonal footprint classes have the sides and corners of their names
         CHECK(TwiceArea(*ring) > 0);
         const IBox box = BoundingBox(*ring);
         CHECK((box.min_x >= 0 && box.min_y >= 0));
-        if (ring != &hex) CHECK((box.max_x <= W && box.max_y <= H));
+        if (ring != &hex && ring != &wing) CHECK((box.max_x <= W && box.max_y <= H));  // those two frames may grow
       }
     }
   }
