@@ -877,6 +877,10 @@ int Parser::TryShape(std::size_t i, Item& item) {
                  : In(t, {"star", "cross", "cruciform", "plus"}) ? ShapeClass::kCross
                                                                  : ShapeClass::kTrapezoid;
     len = 1;
+  } else if (In(t, {"no", "without"}) && i + 2 < tokens_.size() && tokens_[i + 1].word == "right" &&
+             In(tokens_[i + 2], {"angle", "angles", "angled", "corners"})) {
+    item.shape = ShapeClass::kOctagon;  // "no right angles": every corner of an octagon is 135 degrees
+    return 3;
   } else if (In(t, {"six", "eight", "6", "8"}) && i + 1 < tokens_.size() && In(tokens_[i + 1], {"sided", "sides", "cornered"})) {
     item.shape = In(t, {"six", "6"}) ? ShapeClass::kHexagon : ShapeClass::kOctagon;
     len = 2;

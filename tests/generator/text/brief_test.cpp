@@ -320,6 +320,7 @@ TEST_CASE("footprints the partitioner cannot make are reported") {
   CHECK(ParseBrief("a trapezoidal plot-hugging house").shape == ShapeClass::kTrapezoid);
   CHECK(ParseBrief("a house with a bay window in the living room").shape == ShapeClass::kBay);
   CHECK(ParseBrief("a villa with an angled wing for the bedrooms").shape == ShapeClass::kAngledWing);
+  CHECK(ParseBrief("a pavilion with no right angles, two bedrooms and a kitchen").shape == ShapeClass::kOctagon);
   // A star or cross that is not the outline is no footprint.
   CHECK(!ParseBrief("a villa with a star on the door").shape);
   // A round table is furniture, not the footprint; 200 square metres is not a shape.
