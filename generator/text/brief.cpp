@@ -380,7 +380,7 @@ const std::vector<RoomWord>& RoomLexicon() {
     add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
                        "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
                        "water closet", "toilet room", "bathroom suite", "shower", "cloakroom", "cloakroom wc",
-                       "cloakroom toilet", "bathrm", "ba", "hall bath", "guest bath", "guest bathroom",
+                       "cloakroom toilet", "cloakroom loo", "downstairs loo", "guest loo", "bathrm", "ba", "hall bath", "guest bath", "guest bathroom",
                        "jack and jill bathroom", "jack and jill bath"});
     add(C::kBathroom, {"en suite bathroom", "ensuite bathroom", "en suite", "ensuite", "en suite shower room",
                        "ensuite shower room", "en suite wc", "ensuite wc", "attached bathroom",
@@ -575,6 +575,9 @@ class Parser {
   int TrySide(std::size_t i, Item& item);
   bool RoomStartsWithin(std::size_t i, int span) const;
   bool IsBedroomCount(std::size_t i) const;
+  // A floor phrase that opens its clause ("...: ground floor lounge, kitchen and study; first floor ...")
+  // and is followed by a list heads that list (a scope), rather than binding to its first room.
+  bool HeadsList(int ref_item, int mention_last) const;
   bool FurnitureStartsWithin(std::size_t i, int span) const;
   int ObjectWordsAt(std::size_t i) const;
 
@@ -917,6 +920,20 @@ int Parser::TryShape(std::size_t i, Item& item) {
   return len;
 }
 
+bool Parser::HeadsList(int ref_item, int mention_last) const {
+  const Item& ref = items_[ref_item];
+  const int sentence = tokens_[ref.first].sentence;
+  const int before = ref.first - 1;
+  const bool opens = before < 0 || tokens_[before].sentence != sentence || tokens_[before].punct == ':' ||
+                     tokens_[before].punct == '-';
+  if (!opens) return false;
+  for (int k = mention_last + 1; k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence; ++k) {
+    if (tokens_[k].item >= 0 && items_[tokens_[k].item].kind == ItemKind::kFloorRef) return false;
+    if (tokens_[k].punct == ',') return true;
+  }
+  return false;
+}
+
 // "4 bed 3 bath", "a 3-bed house": a count of bedrooms, not beds (a bed is furniture in "a double bed",
 // "two beds in the children's room").
 bool Parser::IsBedroomCount(std::size_t i) const {
@@ -1199,7 +1216,7 @@ void Parser::Quantify(Mention& m) {
   // Adjectives, a bound floor ("second-floor"), en-suite / open-plan words.
   while (const Token* t = k >= 0 ? at(k) : nullptr) {
     if (t->item >= 0 && items_[t->item].kind == ItemKind::kFloorRef && m.bound_ref < 0 &&
-        items_[t->item].ref != RefType::kSame) {
+        items_[t->item].ref != RefType::kSame && !HeadsList(t->item, item.last)) {
       m.bound_ref = t->item;
       k = items_[t->item].first - 1;
       continue;
@@ -1336,6 +1353,16 @@ void Parser::Quantify(Mention& m) {
       m.counting = true;
       m.min = 1;
       m.max = -1;
+      m.first = k;
+      determined = true;
+    } else if (item.category == Category::kBathroom && items_[m.item].ensuite && !m.plural &&
+               In(*t, {"its", "his", "her", "my", "our"}) && at(k - 1) && at(k - 1)->word == "with" &&
+               !mentions_.empty() && tokens_[mentions_.back().first].sentence == sentence && !mentions_.back().definite) {
+      // "a master bedroom with its own bath" in a list of rooms: one more bathroom, the bedroom's (the link
+      // is kept too). "The bedroom ... with its own bathroom" (a definite room, a relation sentence after
+      // the list) still refers to a bathroom counted in the list.
+      m.counting = true;
+      m.min = m.max = 1;
       m.first = k;
       determined = true;
     } else if (In(*t, {"the", "this", "that", "these", "those", "its", "their", "our", "my", "his", "her",

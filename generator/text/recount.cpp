@@ -45,7 +45,7 @@ const std::vector<Noun>& Nouns() {
       add({w, "room"}, C::kBathroom);
       add({w, "rooms"}, C::kBathroom);
     }
-    for (std::string_view w : {"wc", "toilet"}) add({"cloakroom", w}, C::kBathroom);
+    for (std::string_view w : {"wc", "toilet", "loo"}) add({"cloakroom", w}, C::kBathroom);
     add({"half", "bath"}, C::kBathroom);
     add({"half", "baths"}, C::kBathroom);
     for (std::string_view w : {"bedroom", "bedrooms"}) add({w}, C::kBedroom);
@@ -97,7 +97,7 @@ std::optional<int> NumberOf(std::string_view w) {
   static const std::map<std::string_view, int> words = {
       {"a", 1},     {"an", 1},     {"one", 1},     {"single", 1}, {"two", 2},   {"three", 3}, {"four", 4},
       {"five", 5},  {"six", 6},    {"seven", 7},   {"eight", 8},  {"nine", 9},  {"ten", 10},  {"eleven", 11},
-      {"twelve", 12}, {"couple", 2}, {"pair", 2},  {"twin", 2},   {"double", 2}};
+      {"twelve", 12}, {"couple", 2}, {"pair", 2}};  // not "double" or "twin": a double bedroom is one
   if (auto it = words.find(w); it != words.end()) return it->second;
   if (!w.empty() && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
     return std::stoi(std::string(w));

@@ -26,7 +26,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-012", "'1st - ... 2nd -' without 'floor' does not pin floors"},
       {"voices-037", "a correction ('scrap what I said') is not read as replacing the earlier floors"},
       {"voices-038", "'the first floor is for living:' (a heading) not read as a scope"},
-      {"voices-039", "'its own bathroom ... and a shower room': the own bathroom is not counted"},
       {"voices-040", "'a bedroom with an en-suite, so that's three bedrooms and three en-suites' counted twice"},
       {"voices-045", "a floor phrase after a list pins only its last pair"},
       {"voices-083", "'2BR/1BA' shorthand"},
