@@ -468,7 +468,7 @@ const std::vector<CueWord>& CueLexicon() {
          "linked to", "linked with", "link to", "link with", "lead to", "lead into", "lead onto", "leading to",
          "leading into", "leading onto", "access to", "access into", "access onto", "access", "accessing",
          "accessible from", "accessible via", "accessible through", "reach", "reaching", "reached from",
-         "reached via", "adjacent to", "next to", "adjoin", "adjoining", "adjoins", "communicate with",
+         "reached via", "adjacent to", "next to", "off", "adjoin", "adjoining", "adjoins", "communicate with",
          "give onto", "giving onto", "give access to", "giving access to", "connect", "connecting",
          "enter", "enter into", "entered from", "is off", "off of", "join", "joined to", "joined with",
          "lead out to", "step out to", "step out onto", "walk out to", "go out to", "open directly to",
@@ -1570,8 +1570,9 @@ void Parser::PlaceLevels() {
             const Mention& later = mentions_[pending[from]];
             bool joined = true;
             for (int k = earlier.last + 1; k < later.first; ++k)
-              if (tokens_[k].punct == ',' || !(In(tokens_[k], {"and", "or", "as", "well", "plus"}) || tokens_[k].punct == '/' ||
-                                               tokens_[k].punct == '&'))
+              if (tokens_[k].punct == ',' || !(In(tokens_[k], {"and", "or", "as", "well", "plus", "with", "a", "an", "shared", "its",
+                                                                 "their", "own", "private"}) ||
+                                               tokens_[k].punct == '/' || tokens_[k].punct == '&'))
                 joined = false;
             if (!joined) break;
             --from;

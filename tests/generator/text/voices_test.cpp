@@ -1,4 +1,4 @@
-// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 208 requests in eight
+// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 278 requests in eight
 // voices (terse lists, long emails, British and American floor naming, spec sheets, "each"/"per"
 // distributions, ordinals, negations), numbers in words and digits, each with what it asks: floors, the
 // footprint when named, the rooms of each kind (utility rooms aside) and, where pinned, per floor. One table:
@@ -44,6 +44,13 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-179", "'2 living rooms, the first downstairs, the second upstairs'"},
       {"voices-182", "'another one on the top floor' ('one' for a bathroom)"},
       {"voices-190", "'not a fan of balconies so please leave them out'"},
+      // 219-278: written by a helper that saw none of the corpus, as unseen requests for issue 32 (first
+      // reading 96.3 % of their requirements and 2 false "met"; after the fixes of that stop 97.9 %, 0).
+      {"voices-229", "'our three kids each want their own room' (children's rooms from kids + each + own room)"},
+      {"voices-230", "'Two bedrooms, one of them a guest bedroom' counts the guest bedroom again; 'a west-facing terrace'"},
+      {"voices-238", "spec 'storeys 2; NOTES: office on the ground floor, all bedrooms upstairs'"},
+      {"voices-255", "'a family room and a separate living room': the dining room lost; '2.5 baths (two full baths plus a powder room)' read as 4"},
+      {"voices-259", "'4 bedrooms in total (2 of them are kids' rooms)': kids' rooms added to the 4"},
   };
   return gaps;
 }
