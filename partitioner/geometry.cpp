@@ -346,7 +346,14 @@ IRing MapRing(const IRing& ring, const Unimodular& m, bool forward) {
 bool SplitIsOnGrid(const IRing& ring, const ILine& line) {
   if (line.a == 1 && line.b == 0) return SplitIsOnGrid(ring, Axis::kX, line.k);
   if (line.a == 0 && line.b == 1) return SplitIsOnGrid(ring, Axis::kY, line.k);
-  return SplitIsOnGrid(MapRing(ring, MapToVertical(line), true), Axis::kX, line.k);
+  // The vertical test in the mapped plane, point by point (no copy of the ring).
+  const Unimodular m = MapToVertical(line);
+  const int64_t k = line.k;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const IPoint p = m.Forward(ring[i]), r = m.Forward(ring[(i + 1) % ring.size()]);
+    if ((p.x - k) * (r.x - k) < 0 && ((k - p.x) * (r.y - p.y)) % (r.x - p.x) != 0) return false;
+  }
+  return true;
 }
 
 bool SplitRing(const IRing& ring, const ILine& line, std::vector<IRing>* low, std::vector<IRing>* high) {
