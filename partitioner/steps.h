@@ -70,8 +70,9 @@ double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits);
 // Step 4: splits `pieces` recursively by grid lines into at most `target` connected rooms, each usable:
 // axis-parallel lines, and lines parallel to a slanted edge of the piece or to one of `follow` (the slanted
 // edges of the floor's outline: a hexagon's ends, a chamfered corner, an angled wing, a bay), so interior
-// walls follow the building's angles; such a line wins over an axis-parallel one of up to 0.5 more
-// ShapePenalty. Splits crossing edges off the grid are skipped. `wanted_area2` (twice-area units)
+// walls follow the building's angles (slopes 1:1, 1:2 and 2:1 only, whose grid steps hold a door); such a
+// line wins over an axis-parallel one of up to 1 more ShapePenalty while each of its parts stays at 1.6 or
+// better. Splits crossing edges off the grid are skipped. `wanted_area2` (twice-area units)
 // lists room sizes the floor's plan asks for (a bathroom, a kitchen...): while some are missing, most
 // splits cut one of them off an end of the piece; the rest of the area goes to the big rooms. Returns
 // the rooms (fewer than `target` when no usable split was left). Each split tries a few candidate lines
