@@ -1401,6 +1401,42 @@ void Parser::Quantify(Mention& m) {
     m.last = count->second;
     determined = true;
   }
+  // "4 bedrooms (2 of them are kids' rooms)", "two bedrooms, one of them a guest bedroom": part of a count
+  // before it in the sentence, not more rooms. Kids' rooms out of bedrooms are taken from the bedrooms.
+  {
+    int j = m.first - 1;
+    auto word = [&](int x, std::initializer_list<std::string_view> ws) {
+      return x >= 0 && tokens_[x].sentence == sentence && In(tokens_[x], ws);
+    };
+    while (word(j, {"a", "an", "are", "is", "being", "will", "be"})) --j;
+    std::optional<int> part = j >= 2 && word(j, {"them"}) && word(j - 1, {"of"}) && tokens_[j - 2].sentence == sentence
+                                  ? Cardinal(tokens_[j - 2])
+                                  : std::nullopt;
+    // The count already taken into the phrase: "(2 of them are kids' rooms)" read as "2 ... rooms".
+    if (!part && m.first + 2 <= m.last && Cardinal(tokens_[m.first]) && word(m.first + 1, {"of"}) && word(m.first + 2, {"them"})) {
+      part = Cardinal(tokens_[m.first]);
+      j = m.first + 2;
+    }
+    if (part && *part > 0) {
+      for (auto it = mentions_.rbegin(); it != mentions_.rend() && tokens_[it->first].sentence == sentence; ++it) {
+        const bool same = it->category == item.category;
+        const bool kids = it->category == Category::kBedroom && item.category == Category::kChildrenRoom;
+        if (!it->counting || it->min < *part || it->max < *part || (!same && !kids)) continue;
+        if (same) {
+          m.counting = false;
+          m.definite = true;
+        } else {
+          it->min -= *part;
+          it->max -= *part;
+          m.counting = true;
+          m.min = m.max = *part;
+        }
+        Consume(j - 2, j);
+        determined = true;
+        break;
+      }
+    }
+  }
   // "two baths including a Jack and Jill bathroom": one of those counted before it in the sentence.
   if (m.counting && m.first > 0 && In(tokens_[m.first - 1], {"including", "incl", "includes", "include"}) &&
       std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {

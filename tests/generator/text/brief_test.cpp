@@ -299,6 +299,18 @@ TEST_CASE("negations, ranges and counts after the noun") {
   CHECK(Exact(brief, Category::kKitchen) == 1);
 }
 
+TEST_CASE("a part of a count named after it is not more rooms") {
+  // Kids' rooms out of the bedrooms are taken from them; a guest bedroom out of the bedrooms is one of them.
+  const Brief kids = ParseBrief("I need 4 bedrooms in total (2 of them are kids' rooms), three bathrooms and a kitchen.");
+  CHECK(Exact(kids, Category::kBedroom) == 2);
+  CHECK(Exact(kids, Category::kChildrenRoom) == 2);
+  CHECK(Exact(kids, Category::kBathroom) == 3);
+  const Brief guest = ParseBrief("Two bedrooms, one of them a guest bedroom, plus a bathroom and a kitchen.");
+  CHECK(Exact(guest, Category::kBedroom) == 2);
+  // Without "of them" a guest bedroom is one more.
+  CHECK(Exact(ParseBrief("Two bedrooms and a guest bedroom, plus a bathroom."), Category::kBedroom) == 3);
+}
+
 TEST_CASE("footprints the partitioner cannot make are reported") {
   for (const char* text : {"a round villa with a kitchen", "a pentagonal house", "a triangular home with two floors"}) {
     Brief brief = ParseBrief(text);

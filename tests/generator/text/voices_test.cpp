@@ -50,7 +50,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-230", "'Two bedrooms, one of them a guest bedroom' counts the guest bedroom again; 'a west-facing terrace'"},
       {"voices-238", "spec 'storeys 2; NOTES: office on the ground floor, all bedrooms upstairs'"},
       {"voices-255", "'a family room and a separate living room': the dining room lost; '2.5 baths (two full baths plus a powder room)' read as 4"},
-      {"voices-259", "'4 bedrooms in total (2 of them are kids' rooms)': kids' rooms added to the 4"},
   };
   return gaps;
 }
