@@ -61,6 +61,11 @@ std::string_view CategoryToken(Category category) { return EntryOf(category).tok
 std::string_view CategoryDisplayName(Category category) { return EntryOf(category).display; }
 std::string_view CategoryShortName(Category category) { return EntryOf(category).shorter; }
 
+bool IsHabitable(Category c) {
+  return c == Category::kLivingRoom || c == Category::kBedroom || c == Category::kChildrenRoom ||
+         c == Category::kDiningRoom || c == Category::kOffice || c == Category::kMeetingRoom || c == Category::kKitchen;
+}
+
 std::optional<Category> ParseCategory(std::string_view name) {
   for (const auto& entry : kCategories)
     if (entry.name == name) return entry.category;

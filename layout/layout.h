@@ -84,6 +84,10 @@ std::string_view CategoryShortName(Category category);
 std::optional<Category> ParseCategory(std::string_view name);
 // The ten labelled categories in a fixed order (without kRoom).
 const std::vector<Category>& LabelledCategories();
+// Rooms people live and work in: living, bedroom, children's, dining, office, meeting room and kitchen
+// (not bathrooms, balconies, utility rooms). None of them should narrow under kHabitableWidth anywhere.
+bool IsHabitable(Category category);
+inline constexpr double kHabitableWidth = 1.8;  // m
 
 // Room names are "category_L/i": category, level L (0 = ground), index i of that category on that level.
 struct RoomName {

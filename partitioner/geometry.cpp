@@ -314,7 +314,14 @@ ILine LineThrough(IPoint p, IPoint q) {
   return line;
 }
 
-bool IsAxisLine(const ILine& line) { return line.a == 0 || line.b == 0; }
+std::vector<ILine> SlantedLines(const IRing& ring) {
+  std::vector<ILine> out;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
+    if (a.x != b.x && a.y != b.y) out.push_back(LineThrough(a, b));
+  }
+  return out;
+}
 
 namespace {
 // A unimodular map M = [[a, b], [c, d]] (a*d - b*c = 1) taking the line a*x + b*y = k to x = k, and back.

@@ -58,7 +58,8 @@ ILine AxisLine(Axis axis, int64_t k);
 ILine LineThrough(IPoint p, IPoint q);
 // a*x + b*y of a point (which side of the line it is on).
 inline int64_t LineValue(const ILine& line, IPoint p) { return line.a * p.x + line.b * p.y; }
-bool IsAxisLine(const ILine& line);
+// The lines through the ring's slanted edges (neither horizontal nor vertical), one an edge, in ring order.
+std::vector<ILine> SlantedLines(const IRing& ring);
 
 // True when the line (axis, k) crosses every edge it cuts at a grid point (so a split is exact).
 bool SplitIsOnGrid(const IRing& ring, Axis axis, int64_t k);

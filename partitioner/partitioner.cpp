@@ -111,12 +111,6 @@ bool IsPublic(Category c) {
          c == Category::kUtilityRoom;
 }
 // Rooms nobody walks through to reach another.
-// Rooms people live and work in (the polygons issue's "habitable": no part narrower than 1.8 m).
-constexpr double kHabitableWidth = 1.8;
-bool IsHabitable(Category c) {
-  return c == Category::kLivingRoom || c == Category::kBedroom || c == Category::kChildrenRoom ||
-         c == Category::kDiningRoom || c == Category::kOffice || c == Category::kMeetingRoom || c == Category::kKitchen;
-}
 bool IsLeaf(Category c) { return c == Category::kBathroom || c == Category::kBalcony; }
 bool NeedsWindow(Category c) {
   return c == Category::kKitchen || c == Category::kBathroom || c == Category::kBalcony;
@@ -600,20 +594,18 @@ bool Linked(const std::vector<Link>& links, int a, int b) {
 // wall's grid steps are longer, so its doors are whole steps of at least the door width).
 std::optional<Link> MakeLink(const Floor& f, int a, int b, bool open, const Sizes& s, Rng& rng) {
   const double min_m = s.scale.Metres(open ? s.open_min : s.door);
-  std::vector<Run> walls;
-  for (const ISegment& seg : f.shared[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)]) {
-    const Run run = RunOf(seg);
-    if (RunFits(run, min_m, s)) walls.push_back(run);
-  }
+  std::vector<ISegment> walls;
+  for (const ISegment& seg : f.shared[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)])
+    if (RunFits(RunOf(seg), min_m, s)) walls.push_back(seg);
   if (walls.empty()) return std::nullopt;
-  const Run& wall = walls[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(walls.size()) - 1))];
+  const ISegment& seg = walls[static_cast<std::size_t>(rng.Int(0, static_cast<int64_t>(walls.size()) - 1))];
+  const Run wall = RunOf(seg);
   const int64_t clear = ClearSteps(wall, s);
   int64_t width = MinSteps(wall, min_m, s);
   if (open) {
     const int64_t widest = static_cast<int64_t>(std::floor(s.scale.Metres(s.open_max) / (wall.step_len * s.scale.grid) + 1e-9));
     width = rng.Int(width, std::max(width, std::min(widest, wall.steps - 2 * clear)));
   }
-  const ISegment seg{wall.a, {wall.a.x + wall.step.x * wall.steps, wall.a.y + wall.step.y * wall.steps}};
   auto door = partition::PlaceDoor(seg, width, clear, rng);
   if (!door) return std::nullopt;
   return Link{a, b, open, *door};
@@ -1053,8 +1045,9 @@ struct AttemptResult {
   bool relaxed_links = false;
 };
 
-// BSP draws a floor gets, and the worst ShapePenalty of its rooms that ends the draws (every room within
-// about 2.7:1) and that is still accepted (about 3.2:1).
+// BSP draws a floor gets, and the worst penalty of its rooms (ShapePenalty plus the narrow-part penalty) that
+// ends the draws (1.5: every room within about 2.6:1 and filling 66 % of its box in its own frame) and that
+// is still accepted (about 3.2:1).
 constexpr int kBspDraws = 3;
 constexpr double kShapeGood = 1.5;
 constexpr double kShapeAcceptable = 6.0;
@@ -1218,13 +1211,9 @@ AttemptResult Attempt(const PartitionOptions& o, const Plan& plan, const Sizes& 
       floor_limits.max_pieces = o.max_rooms_per_floor - (stair ? 1 : 0);
     }
     // Interior walls may follow the outline's slanted sides.
-    std::vector<ILine> follow;
-    for (std::size_t v = 0; v < f.footprint.size(); ++v) {
-      const IPoint a = f.footprint[v], b = f.footprint[(v + 1) % f.footprint.size()];
-      if (a.x != b.x && a.y != b.y) follow.push_back(partition::LineThrough(a, b));
-    }
+    const std::vector<ILine> follow = partition::SlantedLines(f.footprint);
     // A few BSP draws of the floor; the one whose worst room is best proportioned wins, and the first
-    // whose rooms all stay within about 2.7:1 and fill their bounding box is taken at once. A floor
+    // whose rooms are all within kShapeGood is taken at once. A floor
     // with a room still beyond about 3.2:1 is retried.
     auto enough = [&](const std::vector<IRing>& r) {
       return static_cast<int>(r.size()) >= static_cast<int>(spec.must.size()) &&

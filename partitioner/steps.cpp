@@ -9,6 +9,9 @@ namespace {
 
 enum Side { kBottom, kRight, kTop, kLeft };
 
+// The narrowest passage left beside the staircase, m (rooms beside it stay at least this wide).
+constexpr double kStairPassage = 2.0;
+
 // A notch box on `side` of the W x H rectangle: along that side from `offset` for `width`, `depth` deep.
 IBox NotchBox(Side side, int64_t W, int64_t H, int64_t offset, int64_t width, int64_t depth) {
   switch (side) {
@@ -311,8 +314,8 @@ bool PieceUsable(const IRing& piece, const BspLimits& limits) {
 std::optional<IBox> PlaceStaircase(const IRing& footprint, int64_t size, const Scale& scale, Rng& rng) {
   const std::size_t n = footprint.size();
   const int64_t margin = scale.UnitsUp(2.0);
-  // What is left may narrow to a 1.5 m passage beside the staircase (a hall arm), no less.
-  const double min_width = 2.0 / scale.grid - 1e-9;
+  // What is left may narrow to a passage beside the staircase (a hall arm), no less.
+  const double min_width = kStairPassage / scale.grid - 1e-9;
   double fx, fy;
   Centroid(footprint, &fx, &fy);
   const int64_t expected = TwiceArea(footprint) - 2 * size * size;
@@ -397,7 +400,7 @@ IRing UpperFootprint(const IRing& lower, const std::optional<IBox>& stair, int64
       std::vector<IRing> rest;
       if (!SubtractInside(out[0], BoxRing(*stair), &rest)) continue;
       bool wide = true;
-      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, 2.0 / scale.grid - 1e-9);
+      for (const IRing& r : rest) wide = wide && !NarrowerThan(r, kStairPassage / scale.grid - 1e-9);
       if (!wide) continue;
     }
     ring = std::move(out[0]);
@@ -428,10 +431,12 @@ double PenaltyInFrame(const IRing& piece, double dx, double dy) {
 }
 }  // namespace
 
-double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits) {
+double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits, double* worst) {
   double sum = 0.0;
   for (const IRing& part : parts) {
-    sum += ShapePenalty(part);
+    const double penalty = ShapePenalty(part);
+    if (worst) *worst = std::max(*worst, penalty);
+    sum += penalty;
     if (limits.comfortable_width > 0.0 && NarrowerThan(part, limits.comfortable_width)) sum += kNarrowPenalty;
   }
   return sum;
@@ -502,18 +507,28 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       if (a < 0 || (a == 0 && b < 0)) a = -a, b = -b;
       if (std::find(normals.begin(), normals.end(), std::make_pair(a, b)) == normals.end()) normals.push_back({a, b});
     };
-    for (std::size_t v = 0; v < piece.size(); ++v) {
-      const IPoint a = piece[v], b = piece[(v + 1) % piece.size()];
-      if (a.x != b.x && a.y != b.y) {
-        const ILine l = LineThrough(a, b);
-        add_normal(l.a, l.b);
-      }
-    }
+    for (const ILine& l : SlantedLines(piece)) add_normal(l.a, l.b);
     for (const ILine& l : follow) add_normal(l.a, l.b);
     // Only slopes whose grid steps hold a door (1:1, 1:2, 2:1: steps of 0.71-1.12 m on the 0.5 m grid).
     normals.erase(std::remove_if(normals.begin(), normals.end(),
                                  [](const auto& n) { return std::llabs(n.first) + std::llabs(n.second) > 3; }),
                   normals.end());
+    // The parts of `piece` cut by `line`, when the cut is on the grid and every part is a usable room.
+    auto split_by = [&](const ILine& line) -> std::optional<std::vector<IRing>> {
+      std::vector<IRing> low, high;
+      if (!SplitIsOnGrid(piece, line) || !SplitRing(piece, line, &low, &high)) return std::nullopt;
+      for (auto& r : high) low.push_back(std::move(r));
+      bool ok = low.size() >= 2 && static_cast<int>(pieces.size() - 1 + low.size()) <= cap;
+      for (const IRing& part : low) ok = ok && PieceUsable(part, limits);
+      if (!ok) return std::nullopt;
+      return low;
+    };
+    auto keep = [&](std::vector<IRing>& parts, double score, int64_t aimed) {
+      if (score >= best_score) return;
+      best_score = score;
+      best_parts = std::move(parts);
+      best_aimed = aimed;
+    };
     const int angled_candidates = normals.empty() ? 0 : 2;
     for (int c = 0; c < kCandidates + angled_candidates && best_score > (angled_candidates ? -kAngledBonus : 0.0); ++c) {
       if (!normals.empty() && rng.Chance(0.75)) {
@@ -535,29 +550,16 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
         }
         for (int draw = 0; draw < 3; ++draw)
           ks.push_back((rng.Int(lo + margin, hi - margin) + rng.Int(lo + margin, hi - margin)) / 2);
-        std::optional<ILine> line;
-        for (int64_t k : ks)
-          if (SplitIsOnGrid(piece, ILine{na, nb, k})) {
-            line = ILine{na, nb, k};
-            break;
-          }
-        if (!line) continue;
-        std::vector<IRing> low, high;
-        if (!SplitRing(piece, *line, &low, &high)) continue;
-        for (auto& r : high) low.push_back(std::move(r));
-        bool ok = low.size() >= 2 && static_cast<int>(pieces.size() - 1 + low.size()) <= cap;
+        const auto k = std::find_if(ks.begin(), ks.end(), [&](int64_t v) { return SplitIsOnGrid(piece, ILine{na, nb, v}); });
+        if (k == ks.end()) continue;
+        std::optional<std::vector<IRing>> parts = split_by(ILine{na, nb, *k});
+        if (!parts) continue;
         // Only where every part stays well proportioned (no wedge or sliver of a room for the angle's sake).
-        for (const IRing& part : low) ok = ok && PieceUsable(part, limits) && ShapePenalty(part) <= kAngledWorst;
-        if (!ok) continue;
         // A wall that follows the building is worth a little proportion (kAngledBonus): rooms along a slanted
         // side keep its angle instead of a jagged axis-parallel wall beside it.
-        double score = (wanted_area2.empty() ? 0.0 : 0.75) - kAngledBonus;
-        score += PartsPenalty(low, limits);
-        if (score < best_score) {
-          best_score = score;
-          best_parts = std::move(low);
-          best_aimed = -1;
-        }
+        double worst = 0.0;
+        const double score = (wanted_area2.empty() ? 0.0 : 0.75) - kAngledBonus + PartsPenalty(*parts, limits, &worst);
+        if (worst <= kAngledWorst) keep(*parts, score, -1);
         continue;
       }
       const Axis axis = rng.Chance(p_vertical) ? Axis::kX : Axis::kY;
@@ -582,19 +584,13 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
         k = std::clamp(k, lo, hi);
         aimed = want;
       }
-      if (!SplitIsOnGrid(piece, axis, k)) continue;
-      std::vector<IRing> low, high;
-      if (!SplitRing(piece, axis, k, &low, &high)) continue;
-      for (auto& r : high) low.push_back(std::move(r));
-      bool ok = low.size() >= 2 && static_cast<int>(pieces.size() - 1 + low.size()) <= cap;
-      for (const IRing& part : low) ok = ok && PieceUsable(part, limits);
-      if (!ok) continue;
-      double score = 0.0;
-      score += PartsPenalty(low, limits);
+      std::optional<std::vector<IRing>> parts = split_by(AxisLine(axis, k));
+      if (!parts) continue;
+      double score = PartsPenalty(*parts, limits);
       bool matched = false;
       if (aimed >= 0) {
         // The wanted size is served when some part came within -40 % / +30 % of it.
-        for (const IRing& part : low) {
+        for (const IRing& part : *parts) {
           const int64_t a = TwiceArea(part);
           matched |= a * 10 >= aimed * 6 && a * 10 <= aimed * 13;
         }
@@ -602,11 +598,7 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
       } else if (!wanted_area2.empty()) {
         score += 0.75;  // a middle cut while small rooms are still wanted
       }
-      if (score < best_score) {
-        best_score = score;
-        best_parts = std::move(low);
-        best_aimed = matched ? aimed : -1;
-      }
+      keep(*parts, score, matched ? aimed : -1);
     }
     // A small wanted room (a bathroom) carved out of one corner of the piece, the rest an L (a single line
     // would cut a strip as deep as the piece).
@@ -633,12 +625,7 @@ std::vector<IRing> SplitRoomBsp(std::vector<IRing> pieces, int target, const Bsp
               TwiceArea(parts[0]) + TwiceArea(parts[1]) == TwiceArea(piece)) {
             const int64_t a = TwiceArea(parts[1]);
             const bool matched = a * 10 >= want * 6 && a * 10 <= want * 13;
-            const double score = PartsPenalty(parts, limits) + (matched ? 0.0 : 1.5);
-            if (score < best_score) {
-              best_score = score;
-              best_parts = std::move(parts);
-              best_aimed = matched ? want : -1;
-            }
+            keep(parts, PartsPenalty(parts, limits) + (matched ? 0.0 : 1.5), matched ? want : -1);
           }
         }
       }

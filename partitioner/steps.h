@@ -64,8 +64,9 @@ bool PieceUsable(const IRing& piece, const BspLimits& limits);
 // the piece's slanted edges, whichever fits best (a room in a wing turned 45 degrees is a rectangle).
 double ShapePenalty(const IRing& piece);
 inline constexpr double kNarrowPenalty = 4.0;
-// The ShapePenalty of the parts of a split, plus kNarrowPenalty for each under limits.comfortable_width.
-double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits);
+// The ShapePenalty of the parts of a split, plus kNarrowPenalty for each under limits.comfortable_width;
+// `worst` (when given) is raised to the largest ShapePenalty of a part.
+double PartsPenalty(const std::vector<IRing>& parts, const BspLimits& limits, double* worst = nullptr);
 
 // Step 4: splits `pieces` recursively by grid lines into at most `target` connected rooms, each usable:
 // axis-parallel lines, and lines parallel to a slanted edge of the piece or to one of `follow` (the slanted

@@ -27,12 +27,6 @@ double LevelArea(const Layout& layout, int level) {
   return a;
 }
 
-// Rooms people live and work in, as the polygons issue counts them.
-bool Habitable(Category c) {
-  return c == Category::kLivingRoom || c == Category::kBedroom || c == Category::kChildrenRoom ||
-         c == Category::kDiningRoom || c == Category::kOffice || c == Category::kMeetingRoom || c == Category::kKitchen;
-}
-
 // The room's narrowest part in metres (the partitioner's MinWidth on the 0.5 m grid).
 double NarrowestPart(const Ring& ring) {
   partition::IRing units;
@@ -70,9 +64,9 @@ TEST_CASE("Thousands of seeded layouts are valid and cover every footprint class
     // The record's class is the one the classifier reads from the geometry.
     REQUIRE(ClassifyFootprint(layout, 0) == s.shape);
     for (const Room& r : layout.rooms) {
-      if (!Habitable(r.category)) continue;
+      if (!IsHabitable(r.category)) continue;
       ++habitable;
-      narrow += NarrowestPart(r.polygon) < 1.8 - 1e-9;
+      narrow += NarrowestPart(r.polygon) < kHabitableWidth - 1e-9;
     }
     REQUIRE(layout.LevelCount() == s.floors);
     floors_total += s.floors;

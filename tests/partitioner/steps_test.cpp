@@ -216,11 +216,7 @@ TEST_CASE("BSP in slanted pieces makes walls parallel to the slanted sides, no c
       limits.min_area2 = 2 * 24;
       limits.min_side = 5;
       limits.min_width = 2.4;
-      std::vector<ILine> follow;  // as the partitioner passes them: the outline's slanted sides
-      for (std::size_t i = 0; i < outline.size(); ++i) {
-        const IPoint a = outline[i], b = outline[(i + 1) % outline.size()];
-        if (a.x != b.x && a.y != b.y) follow.push_back(LineThrough(a, b));
-      }
+      const std::vector<ILine> follow = SlantedLines(outline);  // as the partitioner passes them
       const std::vector<IRing> rooms = SplitRoomBsp({outline}, 4 + static_cast<int>(seed % 2), limits, rng, {}, follow);
       int64_t total = 0;
       for (const IRing& r : rooms) {
