@@ -6,6 +6,7 @@
 #include "cli/flags.h"
 #include "finetune/check.h"
 #include "finetune/export.h"
+#include "util/number.h"
 
 namespace villa::cli {
 namespace {
@@ -17,13 +18,9 @@ std::array<double, kSplitCount> ParseSplit(const std::string& text) {
   int i = 0;
   while (std::getline(in, part, ':')) {
     if (i >= kSplitCount) throw UsageError("finetune export: --split: expected TRAIN:VAL:TEST, got \"" + text + "\"");
-    try {
-      std::size_t used = 0;
-      shares[i] = std::stod(part, &used);
-      if (used != part.size()) throw std::invalid_argument(part);
-    } catch (const std::exception&) {
-      throw UsageError("finetune export: --split: \"" + part + "\" is not a number (in \"" + text + "\")");
-    }
+    const std::optional<double> share = ParseNumber(part);
+    if (!share) throw UsageError("finetune export: --split: \"" + part + "\" is not a number (in \"" + text + "\")");
+    shares[i] = *share;
     ++i;
   }
   if (i != kSplitCount) throw UsageError("finetune export: --split: expected TRAIN:VAL:TEST, got \"" + text + "\"");

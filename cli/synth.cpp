@@ -14,6 +14,7 @@
 #include "cli/command.h"
 #include "cli/flags.h"
 #include "partitioner/dataset.h"
+#include "util/number.h"
 #include "util/progress.h"
 #include "util/shard.h"
 #ifdef VILLA_HAVE_RENDER
@@ -49,17 +50,11 @@ void ParseFloors(const std::string& text, double weights[3]) {
   if (parts.size() != 3)
     throw UsageError("synth: --floors \"" + text + "\": expected three weights A:B:C (single:two:three stories)");
   for (int i = 0; i < 3; ++i) {
-    std::size_t used = 0;
-    double w = -1.0;
-    try {
-      w = std::stod(parts[static_cast<std::size_t>(i)], &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != parts[static_cast<std::size_t>(i)].size() || !(w >= 0.0))
+    const std::optional<double> w = ParseNumber(parts[static_cast<std::size_t>(i)]);
+    if (!w || *w < 0.0)
       throw UsageError("synth: --floors \"" + text + "\": \"" + parts[static_cast<std::size_t>(i)] +
                        "\" is not a non-negative number");
-    weights[i] = w;
+    weights[i] = *w;
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include "util/atomic_file.h"
 #include "util/hash.h"
+#include "util/number.h"
 #include "util/shard.h"
 #include "util/text_table.h"
 #include "util/version.h"
@@ -53,18 +54,11 @@ Status ParseShapeWeights(const std::string& text, double* weights) {
     const std::string name = part.substr(0, eq);
     const std::optional<ShapeClass> shape = ParseShapeClass(name);
     if (!shape) return Error{"--shapes \"" + text + "\": \"" + name + "\" is not a footprint class (" + names + ")"};
-    double w = -1.0;
-    std::size_t used = 0;
-    const std::string value = eq == std::string::npos ? "" : part.substr(eq + 1);
-    try {
-      w = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != value.size() || !(w >= 0.0) || !std::isfinite(w))
+    const std::optional<double> w = ParseNumber(eq == std::string::npos ? "" : part.substr(eq + 1));
+    if (!w || *w < 0.0)
       return Error{"--shapes \"" + text + "\": \"" + part + "\": expected NAME=WEIGHT with a non-negative weight"};
-    weights[static_cast<int>(*shape)] = w;
-    total += w;
+    weights[static_cast<int>(*shape)] = *w;
+    total += *w;
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
