@@ -620,12 +620,11 @@ TriangleMesh RailingAlong(Point a, Point b, Point inward, double z) {
   const double length = Distance(a, b);
   if (length < 0.3) return out;
   const Point d = Scale(Sub(b, a), 1.0 / length);
+  const WallFrame f{a, d, {-d.y, d.x}, 0.0};
+  const double side = Dot(inward, f.normal) >= 0.0 ? 1.0 : -1.0;  // `inward` is +q or -q of the frame
   auto box = [&](double t0, double t1, double w, double z0, double z1) {
-    const Point c0 = Add(Add(a, Scale(d, t0)), Scale(inward, kRailInset - w / 2.0));
-    const Point c1 = Add(Add(a, Scale(d, t1)), Scale(inward, kRailInset - w / 2.0));
-    Ring r = {c0, c1, Add(c1, Scale(inward, w)), Add(c0, Scale(inward, w))};
-    if (SignedArea(r) < 0) std::reverse(r.begin(), r.end());
-    out.Append(ExtrudePlan(r, {}, z0, z1));
+    const double q0 = side * (kRailInset - w / 2.0), q1 = side * (kRailInset + w / 2.0);
+    out.Append(BoxInFrame(f, t0, t1, std::min(q0, q1), std::max(q0, q1), z0, z1));
   };
   const int spans = std::max(1, static_cast<int>(std::ceil((length - kRailPost) / 1.0)));
   for (int k = 0; k <= spans; ++k) {
@@ -888,6 +887,17 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
   }
   // Railings (issue 31): round each stair hole on the floor above, but where the upper flight arrives and
   // where a wall stands; along each terrace's edges but where the level's own walls rise from it.
+  auto add_railing = [&](const std::string& of, int level, std::optional<Category> category, TriangleMesh rail) {
+    if (rail.triangles.empty()) return;
+    MeshPart part;
+    part.name = "railing_" + of;
+    part.kind = PartKind::kRailing;
+    part.level = level;
+    if (category) part.category = *category;
+    part.element = of;
+    part.mesh = std::move(rail);
+    building.parts.push_back(std::move(part));
+  };
   for (const BuiltStair& st : building.stairs) {
     if (st.hole.size() < 3) continue;
     const int up = st.level + 1;
@@ -909,15 +919,7 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
         if (Distance(p, q) >= 0.3)
           for (const auto& [s0, s1] : Unwalled(p, q, walls, 0.25)) rail.Append(RailingAlong(s0, s1, out_of_hole, building.FloorZ(up)));
     }
-    if (rail.triangles.empty()) continue;
-    MeshPart part;
-    part.name = "railing_" + st.room;
-    part.kind = PartKind::kRailing;
-    part.level = up;
-    part.category = Category::kUtilityRoom;
-    part.element = st.room;
-    part.mesh = std::move(rail);
-    building.parts.push_back(std::move(part));
+    add_railing(st.room, up, Category::kUtilityRoom, std::move(rail));
   }
   for (const auto& [name, level, outer] : terrace_outlines) {
     const std::vector<const Ring*> walls = {&footprints[level]};
@@ -929,14 +931,7 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
       const Point in = ccw ? Point{-d.y, d.x} : Point{d.y, -d.x};  // into the terrace
       for (const auto& [s0, s1] : Unwalled(a, b, walls, 0.2)) rail.Append(RailingAlong(s0, s1, in, building.FloorZ(level)));
     }
-    if (rail.triangles.empty()) continue;
-    MeshPart part;
-    part.name = "railing_" + name;
-    part.kind = PartKind::kRailing;
-    part.level = level;
-    part.element = name;
-    part.mesh = std::move(rail);
-    building.parts.push_back(std::move(part));
+    add_railing(name, level, std::nullopt, std::move(rail));
   }
 
   // Walls, openings, leaves and glass, level by level.
