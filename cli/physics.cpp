@@ -46,13 +46,16 @@ void Run(const PhysicsCommand& command) {
     std::cerr << "wrote " << (std::filesystem::path(command.mjcf) / "villa.xml").string() << ": " << w.bodies << " bodies ("
               << w.free << " free), " << w.doors << " door leaves on hinges, " << w.geoms << " object geoms (" << w.merged
               << " boxes merged into their neighbours), " << w.static_geoms << " building geoms (" << w.prisms
-              << " pieces cut into convex prisms, " << w.hulls << " left whole), " << w.sheets << " sheets left out, " << w.boxes << " boxes and "
+              << " pieces cut into convex prisms, " << w.hulls << " left whole), " << w.sheets << " sheets left out, " << w.boxes << " boxes (as box meshes) and "
               << w.meshes << " meshes; buffers nconmax " << w.nconmax << ", njmax " << w.njmax << "\n"
               << "MuJoCo " << r.version << " loaded it and ran " << command.options.seconds << " s in "
               << FormatFixed(r.wall_seconds, 1) << " s: " << r.strict << " of " << r.free << " free objects within 1 cm and 0.1 rad ("
               << FormatPercent(r.strict, r.free) << "), " << r.loose << " within 20 cm and 8 degrees ("
               << FormatPercent(r.loose, r.free) << "); up to " << r.max_contacts << " contacts, " << r.max_rows << " rows"
               << (r.unstable ? "; MuJoCo called the simulation unstable" : "") << "\n";
+    if (r.deep_at_start > 0)
+      std::cerr << "  MuJoCo: " << r.deep_at_start << " contact(s) start more than 2 mm deep, the deepest "
+                << FormatFixed(1000.0 * r.deepest_at_start, 1) << " mm between " << r.deepest_pair << "\n";
     for (size_t i = 0; i < r.movers.size() && static_cast<int>(i) < command.movers; ++i)
       std::cerr << "  MuJoCo: moved " << FormatFixed(100.0 * r.movers[i].moved, 1) << " cm, turned "
                 << FormatFixed(r.movers[i].turned, 3) << " rad: " << r.movers[i].body << "\n";
@@ -93,6 +96,8 @@ void Run(const PhysicsCommand& command) {
                      {"nconmax", mjcf->written.nconmax},
                      {"njmax", mjcf->written.njmax},
                      {"unstable", r.unstable},
+                     {"deep_at_start", r.deep_at_start},
+                     {"deepest_at_start_m", r.deepest_at_start},
                      {"movers", movers}};
     }
     std::cout << out.dump(2) << "\n";

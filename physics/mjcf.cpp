@@ -33,8 +33,8 @@ std::vector<TriangleMesh> SolidPieces(const TriangleMesh& mesh) {
   return out;
 }
 
-// A piece that is a box (8 corners, three perpendicular edges): MuJoCo collides box geoms at several
-// points (two meshes touch at one, and rock), so box pieces (most of ours) are written as boxes.
+// A piece that is a box (8 corners, three perpendicular edges): most of ours are, and boxes whose union
+// fills their common box are merged into it (MergeBoxes).
 struct BoxFit {
   Vec3 centre, x, y;  // centre, the box's x and y axes (unit; z = x cross y)
   Vec3 half;          // half sizes along x, y, z
@@ -258,15 +258,36 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
     assets << "    <mesh name=\"" << name << "\" file=\"" << name << ".stl\"/>\n";
     return name;
   };
-  auto add_box = [&](std::ostringstream& out, const BoxFit& box, const Vec3& origin, const std::string& indent, const char* kind) {
+  // A box piece is written as an 8-corner mesh in its own frame (one asset per size), placed by the geom's
+  // pos and axes. Not a box geom: MuJoCo's box-box collider (2.2, and still in 3.x: its issue #3476) can
+  // return a phantom contact as deep as a box is wide for two boxes resting flush, face to face (a counter's
+  // 8 mm side panel on the floor slab came out 1.44 m deep and the counter was thrown with what stood on
+  // it); box-mesh and mesh-mesh pairs go through its general convex collider, multi-point with multiccd.
+  std::map<std::string, std::string> box_meshes;
+  auto add_box = [&](std::ostringstream& out, const BoxFit& box, const Vec3& origin, const std::string& indent,
+                     const char* kind) -> Status {
+    const std::string size = Num(box.half.x) + " " + Num(box.half.y) + " " + Num(box.half.z);
+    auto [it, fresh] = box_meshes.emplace(size, "");
+    if (fresh) {
+      TriangleMesh corners;
+      for (int k = 0; k < 8; ++k)
+        corners.vertices.push_back({(k & 1 ? 1 : -1) * box.half.x, (k & 2 ? 1 : -1) * box.half.y, (k & 4 ? 1 : -1) * box.half.z});
+      // Outward faces: -x, +x, -y, +y, -z, +z, two triangles each.
+      for (const auto& t : std::vector<std::array<int, 3>>{{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                                                           {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}})
+        corners.AddTriangle(t[0], t[1], t[2]);
+      auto name = add_mesh(corners, {0, 0, 0});
+      if (!name.ok()) return Error{name.error()};
+      it->second = *name;
+    }
     const Vec3 c = box.centre - origin;
-    out << indent << "<geom type=\"box\" size=\"" << Num(box.half.x) << " " << Num(box.half.y) << " " << Num(box.half.z)
-        << "\" pos=\"" << Num(c.x) << " " << Num(c.y) << " " << Num(c.z) << "\" xyaxes=\"" << Num(box.x.x) << " "
-        << Num(box.x.y) << " " << Num(box.x.z) << " " << Num(box.y.x) << " " << Num(box.y.y) << " " << Num(box.y.z)
-        << "\" class=\"" << kind << "\"/>\n";
+    out << indent << "<geom type=\"mesh\" mesh=\"" << it->second << "\" pos=\"" << Num(c.x) << " " << Num(c.y) << " "
+        << Num(c.z) << "\" xyaxes=\"" << Num(box.x.x) << " " << Num(box.x.y) << " " << Num(box.x.z) << " " << Num(box.y.x)
+        << " " << Num(box.y.y) << " " << Num(box.y.z) << "\" class=\"" << kind << "\"/>\n";
     ++summary.boxes;
+    return {};
   };
-  // A body's (or the building's) pieces: boxes as box geoms (merged where they fill their common box),
+  // A body's (or the building's) pieces: boxes (merged where they fill their common box) as box meshes,
   // the rest as mesh geoms; `origin` is the body's. Returns the number of geoms written.
   auto add_geoms = [&](std::ostringstream& out, const std::vector<TriangleMesh>& pieces, const Vec3& origin,
                        const std::string& indent, const char* kind, bool merge) -> Result<int> {
@@ -300,7 +321,8 @@ Result<MjcfSummary> WriteMjcf(const fs::path& glb, const fs::path& dir, const Se
       boxes = MergeBoxes(boxes);
       summary.merged += static_cast<int>(before - boxes.size());
     }
-    for (const BoxFit& box : boxes) add_box(out, box, origin, indent, kind);
+    for (const BoxFit& box : boxes)
+      if (Status s = add_box(out, box, origin, indent, kind); !s) return Error{s.error()};
     return geoms + static_cast<int>(boxes.size());
   };
   std::vector<bool> is_door(scene->statics.size(), false);

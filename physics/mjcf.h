@@ -1,7 +1,7 @@
 #pragma once
 // A furnished .glb as a MuJoCo scene (MJCF, issue 28): `DIR/villa.xml` and its meshes in `DIR/meshes/`
-// (binary STL, one a convex part, since MuJoCo collides a mesh as its convex hull); a part that is a box is
-// a box geom (MuJoCo touches two meshes at one point only, and they rock). The building is the
+// (binary STL, one a convex part, since MuJoCo collides a mesh as its convex hull; a part that is a box is
+// one 8-corner mesh per size, not a box geom, whose collider makes phantom deep contacts). The building is the
 // world's static geoms (one a connected piece of its meshes); every object is a body named by its scene
 // id at its box's centre, with a free joint unless it is welded (hung on a wall or from the ceiling, on a
 // rail), one geom a convex part (density and friction as physics::SettleOptions), rugs left out as
@@ -20,7 +20,7 @@ inline constexpr int kMjcfMaxRows = 12000;
 
 struct MjcfSummary {
   int bodies = 0, free = 0, geoms = 0, static_geoms = 0, meshes = 0;
-  int boxes = 0;   // geoms written as boxes (pieces that are boxes); the rest are meshes
+  int boxes = 0;   // geoms that are boxes (pieces that are boxes), written as box-shaped meshes
   int merged = 0;  // object boxes merged into a neighbour (a book's pages and covers: one box)
   int doors = 0;   // door leaves, bodies on hinges
   int prisms = 0;  // building pieces cut into convex prisms

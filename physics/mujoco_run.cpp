@@ -8,6 +8,9 @@
 #include <mujoco/mujoco.h>
 
 namespace villa::physics {
+namespace {
+constexpr double kStartDepth = 0.002;  // m: deeper than this at the start is a defect (issue 28)
+}  // namespace
 
 Result<MujocoRun> RunMujoco(const std::filesystem::path& xml, const SettleOptions& options) {
   if (std::string bad = options.Check(); !bad.empty()) return Error{"mujoco: " + bad};
@@ -25,6 +28,18 @@ Result<MujocoRun> RunMujoco(const std::filesystem::path& xml, const SettleOption
   run.version = std::to_string(mj_version() / 100) + "." + std::to_string(mj_version() / 10 % 10) + "." +
                 std::to_string(mj_version() % 10);
   mj_forward(m, d);
+  auto body_name = [&](int geom) {
+    const char* name = mj_id2name(m, mjOBJ_BODY, m->geom_bodyid[geom]);
+    return std::string(name ? name : "world");
+  };
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    if (c.dist >= -kStartDepth) continue;
+    ++run.deep_at_start;
+    if (-c.dist <= run.deepest_at_start) continue;
+    run.deepest_at_start = -c.dist;
+    run.deepest_pair = body_name(c.geom1) + " and " + body_name(c.geom2);
+  }
   const std::vector<double> pos(d->xpos, d->xpos + 3 * m->nbody), quat(d->xquat, d->xquat + 4 * m->nbody);
   const int steps = std::max(1, static_cast<int>(std::lround(options.seconds / m->opt.timestep)));
   // The warnings are read after every step: on a bad acceleration MuJoCo resets the data (every body back

@@ -28,6 +28,11 @@ struct MujocoRun {
   bool unstable = false;        // MuJoCo reported a NaN or a huge acceleration (and restarted the run):
                                 // no free body counts as stable then
   std::vector<MujocoMover> movers;  // the free bodies outside the strict rule, the largest first
+  // MuJoCo's own contacts at the start (before the first step) deeper than 2 mm, and the deepest (its two
+  // bodies, "world" for the building): a geom that starts inside another is pushed out hard.
+  int deep_at_start = 0;
+  double deepest_at_start = 0.0;  // m, positive
+  std::string deepest_pair;
   double wall_seconds = 0.0;
 };
 
