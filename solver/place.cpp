@@ -425,26 +425,33 @@ bool CrampedSeat(const Layer& layer, int self, const RoomState& state) {
 }
 
 // What is to stand in front of this object at a distance of a metre or more (a TV stand 2-3 m before the
-// sofa): its index and the gap range, from its front_of edge and the gap edge that carries the range
-// (solver/scene_problem.cpp turns a side relation with a gap into both).
+// sofa), or, `behind`, what this object is to stand before (the stand's sofa): the other's index and the
+// gap range, from the front_of edge and the gap edge that carries the range (solver/scene_problem.cpp turns
+// a side relation with a gap into both).
 struct FarFront {
-  int source = -1;
+  int source = -1;  // the other object
   double min_gap = 0.0, max_gap = 0.0;
 };
-std::optional<FarFront> FarFrontOf(const RoomState& state, int object) {
+std::optional<FarFront> FarFrontOf(const RoomState& state, int object, bool behind = false) {
   const std::string& id = state.objects[object].id;
   for (const SemanticEdge& front : state.edges) {
-    if (front.target != id || front.relation != SemanticRelation::kFrontOf) continue;
+    if ((behind ? front.source : front.target) != id || front.relation != SemanticRelation::kFrontOf) continue;
     for (const SemanticEdge& gap : state.edges) {
-      if (gap.source != front.source || gap.target != id) continue;
+      if (gap.source != front.source || gap.target != front.target) continue;
       const bool ranged = gap.relation == SemanticRelation::kFrontOf || gap.relation == SemanticRelation::kNear ||
                           gap.relation == SemanticRelation::kFar;
-      if (ranged && gap.min_gap >= 1.0) return FarFront{state.Find(front.source), gap.min_gap, std::max(gap.max_gap, gap.min_gap)};
+      if (ranged && gap.min_gap >= 1.0)
+        return FarFront{state.Find(behind ? front.target : front.source), gap.min_gap, std::max(gap.max_gap, gap.min_gap)};
     }
   }
   return std::nullopt;
 }
 bool FacedFromAfar(const RoomState& state, int object) { return FarFrontOf(state, object).has_value(); }
+// Either end of such a pair: the sofa, or its TV stand where the stand is placed first (the cycle of their
+// relations broken by rank).
+bool FarPair(const RoomState& state, int object) {
+  return FacedFromAfar(state, object) || FarFrontOf(state, object, true).has_value();
+}
 
 // Distance from p to a polygon (0 inside).
 double DistanceToPolygon(Point p, const Ring& ring) { return PointInRing(p, ring, 0.0) ? 0.0 : DistanceToBoundary(p, ring); }
@@ -472,11 +479,16 @@ double FloorAhead(const Layer& layer, const Body& b, const Candidate& c) {
 // the range, growing by the metre outside it.
 double FacingPreference(const Layer& layer, int self, const RoomState& state, const Candidate& c) {
   const Body& b = layer.bodies[self];
-  const std::optional<FarFront> far = FarFrontOf(state, b.object);
+  // The stand placed before its sofa (the cycle of their relations broken by rank) likewise prefers floor
+  // ahead for the sofa's depth and the gap.
+  // More floor than the gap is no fault for the stand (its sofa need not back onto a wall).
+  std::optional<FarFront> far = FarFrontOf(state, b.object);
+  const bool stand = !far;
+  if (stand) far = FarFrontOf(state, b.object, true);
   if (!far) return 0.0;
   const double depth = far->source >= 0 ? state.objects[far->source].asset.size.y * state.objects[far->source].scale_min + 0.05 : 0.5;
   const double ahead = FloorAhead(layer, b, c) - depth;
-  return 2.0 * (std::max(0.0, far->min_gap - ahead) + std::max(0.0, ahead - far->max_gap));
+  return 2.0 * (std::max(0.0, far->min_gap - ahead) + (stand ? 0.0 : std::max(0.0, ahead - far->max_gap)));
 }
 
 // The planner's placement hints (scene/scene.h) as soft preferences on a room candidate, in the units of
@@ -864,7 +876,7 @@ std::vector<Scored> RankCandidates(Layer& layer, int self, const RoomState& stat
   std::vector<Candidate> candidates = layer.kind == Layer::Kind::kRoom ? RoomCandidates(layer, self, state, o, &around_count)
                                                                        : ChildCandidates(layer, self, state);
   if (layer.kind == Layer::Kind::kRoom) {
-    const bool faced = o.functional_groups && FacedFromAfar(state, b.object);
+    const bool faced = o.functional_groups && FarPair(state, b.object);
     for (Candidate& c : candidates) {
       c.pref += HintPreference(layer, self, state, c);
       if (faced) c.pref += FacingPreference(layer, self, state, c);
@@ -993,7 +1005,9 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     // A hub and the objects placed around it: try its few best poses, place the group at each, keep the
     // group that holds best (a bed needs room for both nightstands, a sofa for its side tables). Twelve
     // poses for a hub something must stand before at a distance (the TV stand 2-3 m before the sofa: four
-    // left it on a short wall with its stand 6 m away), four otherwise (twelve took room from what is
+    // left it on a short wall with its stand 6 m away), or that must itself stand before something at a
+    // distance (the stand placed before its sofa, the cycle of their relations broken by rank: four left a
+    // stand on a notch's short wall and its sofa 4 m aside), four otherwise (twelve took room from what is
     // placed after the group: children's rooms on the prompt set lost 1.5 objects each).
     // (FacedFromAfar read the front_of edge's own gap, which the problem carries on a separate gap edge, and
     // so never held before issue 27: kept so without the groups.)
@@ -1001,7 +1015,7 @@ void PlaceLayer(Layer& layer, const RoomState& state, const SolveOptions& o, Rng
     const bool seats = std::any_of(dependents.begin(), dependents.end(), [&](int k) {
       return GroupMembership(state, layer.bodies[k].object).role == GroupRole::kTableSeat;
     });
-    const size_t kLookahead = o.functional_groups && (FacedFromAfar(state, layer.bodies[b].object) || seats) ? 12 : 4;
+    const size_t kLookahead = o.functional_groups && (FarPair(state, layer.bodies[b].object) || seats) ? 12 : 4;
     const bool dining_hub = OneOf(state.objects[layer.bodies[b].object].category, {"dining-table", "conference-table"});
     int chair_count = 0;
     double chair_hx = 0.0, chair_hy = 0.0;

@@ -171,7 +171,8 @@ struct RoomSolver::Impl {
     for (int r = 0; r < options.restarts; ++r) {
       Layer layer = RoomLayer(state, floor, {});
       Rng rng(options.seed * kSplitMix64Gamma + static_cast<uint64_t>(r) + 1);
-      const LayerCost cost = Construct(layer, rng, r == 0 ? 0.0 : 0.3);
+      LayerCost cost = Construct(layer, rng, r == 0 ? 0.0 : 0.3);
+      cost.hard = HardWithoutDroppable(layer, cost.hard);
       int trouble = 0;
       if (options.functional_groups) {
         const auto before = state.placements;
@@ -223,6 +224,28 @@ struct RoomSolver::Impl {
         WriteLayer(layer);
       }
     }
+  }
+
+  // A start's hard cost as the agent will be able to repair it: without the side tables and decorative
+  // pieces that are deep in trouble (the agent takes them out when they are not asked for). A side table
+  // with no room at its sofa's end, left on the sofa, made the start whose sofa faced the TV lose to one
+  // whose TV was turned 53 degrees from it. (Armchairs too would be taken out, but on the living-room
+  // bench that lost as many sofas to the walkways as it saved.)
+  double HardWithoutDroppable(const Layer& layer, double hard) const {
+    Layer copy = layer;
+    bool dropped = false;
+    for (size_t b = 0; b < copy.bodies.size(); ++b) {
+      Body& body = copy.bodies[b];
+      if (!body.active || body.motion == Motion::kFixed || !Droppable(body.object)) continue;
+      if (Evaluate(MakeTerms(copy, state, options, static_cast<int>(b), -1.0)).hard <= kRepairable) continue;
+      body.active = false;
+      dropped = true;
+    }
+    return dropped ? Evaluate(MakeTerms(copy, state, options, -1, -1.0)).hard : hard;
+  }
+  bool Droppable(int i) const {
+    const ProblemObject& o = state.objects[i];
+    return !IsProtected(o.priority) && (o.priority == Priority::kDecorative || GroupMembership(state, i).role == GroupRole::kSideTable);
   }
 
   // Issue 27: a polish moves every body on its own, and can draw a member out of its group (a coffee table
@@ -715,12 +738,15 @@ struct RoomSolver::Impl {
 
   // How many of the room's group members break their group's rules now; with `seats`, a dining or meeting
   // chair without its 0.75 m behind it counts too (a table moved for a relation must not cram its chairs).
+  // A side table's trouble weighs 1, the rest 3 (a sofa turned from its TV is worse than a side table
+  // astray).
   int GroupTrouble(bool seats = false) const {
     int n = 0;
     std::set<int> with_coffee, with_tv;  // sofas that have them
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);
-      n += !GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9);
+      const int weight = GroupMembership(state, kk).role == GroupRole::kSideTable ? 1 : 3;
+      n += weight * (!GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9));
       const Membership m = GroupMembership(state, kk);
       if (m.role == GroupRole::kCoffeeTable) with_coffee.insert(m.hub);
       if (m.role == GroupRole::kTvStand) with_tv.insert(m.hub);
@@ -729,7 +755,7 @@ struct RoomSolver::Impl {
     // one back is never more trouble than its absence (an armchair it brings back into the group with it).
     for (size_t k = 0; k < state.objects.size(); ++k)
       if (state.objects[k].category == "sofa" && state.parent[k] < 0)
-        n += (coffee_planned && !with_coffee.count(static_cast<int>(k))) + (tv_planned && !with_tv.count(static_cast<int>(k)));
+        n += 3 * ((coffee_planned && !with_coffee.count(static_cast<int>(k))) + (tv_planned && !with_tv.count(static_cast<int>(k))));
     return n;
   }
 

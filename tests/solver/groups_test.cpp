@@ -488,6 +488,37 @@ TEST_CASE("A sofa that cannot face its TV along an angled wall is floated before
   CHECK(room["metrics"]["OBR"] == 0.0);
 }
 
+TEST_CASE("A TV stand placed before its sofa looks over floor enough for the sofa, not into a notch", "[solver][groups]") {
+  // living_notch_tv.json is villa-000014 of `villa synth --count 50 --seed 2027`: its L-shaped living
+  // room's stand, placed first, stood on the notch's short wall looking 2.3 m into the notch, and the sofa
+  // stood 4 m aside, the screen turned 88 degrees from it.
+  const nlohmann::json room = FurnishedRoom(std::string(VILLA_FIXTURE_DIR) + "/layouts/living_notch_tv.json", "living-room_0/0", 2027);
+  INFO(room["functional"].dump(1));
+  REQUIRE(room["functional"]["groups"].size() >= 1);
+  const nlohmann::json& seating = room["functional"]["groups"][0];
+  CHECK(seating["kind"] == "seating");
+  CHECK(seating["ok"] == true);
+  CHECK(seating["measures"]["tv_facing_deg"].get<double>() <= 45.0);
+  CHECK(seating["measures"]["tv_angle_deg"].get<double>() <= 25.0);
+  CHECK(room["metrics"]["CR"] == 0.0);
+}
+
+TEST_CASE("Of the solver's starts, one whose only overlap is a side table the agent can take out is no worse than a clean one",
+          "[solver][groups]") {
+  // living_side_table_on_sofa.json is villa-000007 of `villa synth --count 50 --seed 2027`: three starts
+  // put the sofa facing the TV with a side table that had no room at its end left on the sofa; the start
+  // kept was the clean one, its TV turned 53 degrees from the sofa.
+  const nlohmann::json room =
+      FurnishedRoom(std::string(VILLA_FIXTURE_DIR) + "/layouts/living_side_table_on_sofa.json", "living-room_0/0", 2027);
+  INFO(room["functional"].dump(1));
+  REQUIRE(room["functional"]["groups"].size() >= 1);
+  const nlohmann::json& seating = room["functional"]["groups"][0];
+  CHECK(seating["ok"] == true);
+  CHECK(seating["measures"]["tv_facing_deg"].get<double>() <= 45.0);
+  CHECK(room["metrics"]["CR"] == 0.0);
+  CHECK(room["metrics"]["OBR"] == 0.0);
+}
+
 TEST_CASE("The README's living room faces its TV: of the solver's starts, the one whose group holds is kept",
           "[solver][groups]") {
   // The README's `villa furnish examples/two-floor-house.json` (make run's out/furnished): every start of
