@@ -519,6 +519,26 @@ TEST_CASE("Of the solver's starts, one whose only overlap is a side table the ag
   CHECK(room["metrics"]["OBR"] == 0.0);
 }
 
+TEST_CASE("A dining table whose chairs cannot be pulled out moves with them to where every chair has 0.75 m behind it",
+          "[solver][groups]") {
+  // dining_small_square.json is villa-000002 of `villa synth --count 50 --seed 2027`: its 2.5 m square dining
+  // room kept its table in the middle with a chair 0.03 m from the wall behind it and the other 0.70 m from
+  // a cabinet.
+  const nlohmann::json room = FurnishedRoom(std::string(VILLA_FIXTURE_DIR) + "/layouts/dining_small_square.json", "dining-room_0/0", 2027);
+  INFO(room["functional"].dump(1));
+  bool moved = false;
+  for (const auto& a : room["actions"])
+    moved = moved || a["reason"].get<std::string>().find("its chairs have no room to pull out") != std::string::npos;
+  CHECK(moved);
+  REQUIRE(room["functional"]["groups"].size() >= 1);
+  const nlohmann::json& dining = room["functional"]["groups"][0];
+  CHECK(dining["ok"] == true);
+  CHECK(dining["measures"]["chairs"].get<int>() >= 2);
+  CHECK(dining["measures"]["chairs_ok"] == dining["measures"]["chairs"]);
+  CHECK(dining["measures"]["min_behind_m"].get<double>() >= 0.75);
+  CHECK(room["metrics"]["CR"] == 0.0);
+}
+
 TEST_CASE("The README's living room faces its TV: of the solver's starts, the one whose group holds is kept",
           "[solver][groups]") {
   // The README's `villa furnish examples/two-floor-house.json` (make run's out/furnished): every start of
