@@ -141,8 +141,20 @@ std::vector<Token> Tokenise(std::string_view text) {
         std::size_t k = 0;
         while (k < word.size() && std::isdigit(static_cast<unsigned char>(word[k]))) digits += word[k++];
         suffix = word.substr(k);
-        if ((suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th") && digits.size() < 4)
+        if ((suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th") && digits.size() < 4) {
           t.ordinal = std::stoi(digits);
+        } else if (digits.size() < 4 && std::all_of(suffix.begin(), suffix.end(), [](char ch) { return std::isalpha(static_cast<unsigned char>(ch)); })) {
+          // "2br", "3bed", "1ba": the count and the word, two tokens.
+          Token count = t;
+          count.end = t.begin + digits.size();
+          count.word = count.stem = digits;
+          count.number = true;
+          count.value = std::stoi(digits);
+          tokens.push_back(std::move(count));
+          t.begin += digits.size();
+          t.joined = false;
+          word = suffix;
+        }
       }
       t.stem = Singular(word);
       tokens.push_back(std::move(t));
@@ -156,7 +168,7 @@ std::vector<Token> Tokenise(std::string_view text) {
     }
     pending_hyphen = false;
     const bool ends_sentence = c == '.' || c == '!' || c == '?' || c == ';' || c == '\n';
-    if (ends_sentence || c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' ||
+    if (ends_sentence || c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' || c == '|' ||
         c == '-' || c == '*' || c == '=') {
       Token t;
       t.begin = i;
@@ -207,7 +219,8 @@ std::optional<int> Ordinal(const Token& t) {
 
 bool IsFloorNoun(const Token& t) {
   static const std::unordered_set<std::string> nouns = {"floor", "story", "storey", "level", "storied",
-                                                        "storeyed", "stories", "storeys", "floors", "levels"};
+                                                        "storeyed", "stories", "storeys", "floors", "levels",
+                                                        "fl", "flr", "flrs", "lvl", "lvls"};
   return !t.punct && (nouns.count(t.stem) || nouns.count(t.word));
 }
 
@@ -375,7 +388,7 @@ const std::vector<RoomWord>& RoomLexicon() {
                       "twin room", "twin bedroom", "primary suite", "guest suite", "double room", "bedrm", "bdrm",
                       "br", "doubles"});  // "two doubles and a box room" (the plural only: a "double" is a bed)
     add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse", "kitchen diner",
-                      "eat in kitchen"});
+                      "eat in kitchen", "kitchen breakfast room", "kitchen breakfast area", "kitchen breakfast"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
     add(C::kBathroom, {"bathroom", "bath room", "wc", "toilet", "washroom", "restroom", "lavatory",
                        "powder room", "shower room", "wet room", "half bath", "full bath", "bath", "loo",
@@ -406,6 +419,91 @@ const std::vector<RoomWord>& RoomLexicon() {
     return out;
   }();
   return lexicon;
+}
+
+// Edit distance of at most one between a and b, a transposition counting as one ("bedroms", "bathrom",
+// "balcny", "bedorom").
+bool OneEditApart(const std::string& a, const std::string& b) {
+  if (a == b) return false;
+  const std::size_t n = a.size(), m = b.size();
+  if (n + 1 < m || m + 1 < n) return false;
+  std::size_t i = 0;
+  while (i < n && i < m && a[i] == b[i]) ++i;
+  if (n == m) {
+    if (a.compare(i + 1, std::string::npos, b, i + 1, std::string::npos) == 0) return true;  // substituted
+    return i + 1 < n && a[i] == b[i + 1] && a[i + 1] == b[i] && a.compare(i + 2, std::string::npos, b, i + 2, std::string::npos) == 0;
+  }
+  return n < m ? a.compare(i, std::string::npos, b, i + 1, std::string::npos) == 0   // a letter left out
+               : a.compare(i + 1, std::string::npos, b, i, std::string::npos) == 0;  // one too many
+}
+
+// The tokens as the parser reads them: a count repeated in digits ("three (3) bedrooms") once; "half a
+// dozen" six, "a dozen" twelve; a misspelt room word of six letters or more one edit from exactly one
+// of the lexicon's one-word room names ("bedroms", "bathrom", "balcny") read as it.
+std::vector<Token> Normalised(std::vector<Token> tokens) {
+  std::vector<Token> out;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    if (t.punct == '(' && i + 2 < tokens.size() && tokens[i + 1].number && tokens[i + 2].punct == ')' && !out.empty() &&
+        Cardinal(out.back()) && *Cardinal(out.back()) == tokens[i + 1].value) {
+      i += 2;
+      continue;
+    }
+    if (t.word == "half" && i + 2 < tokens.size() && tokens[i + 1].word == "a" && tokens[i + 2].word == "dozen") {
+      Token six = tokens[i + 2];
+      six.begin = t.begin;
+      six.word = six.stem = "6";
+      six.number = true;
+      six.value = 6;
+      out.push_back(six);
+      i += 2;
+      continue;
+    }
+    if (t.word == "dozen" && !out.empty() && out.back().word == "a") {
+      out.back().word = out.back().stem = "12";
+      out.back().number = true;
+      out.back().value = 12;
+      out.back().end = t.end;
+      continue;
+    }
+    out.push_back(t);
+  }
+  static const std::vector<std::pair<std::string, Category>> names = [] {
+    std::vector<std::pair<std::string, Category>> words;
+    for (const RoomWord& r : RoomLexicon())
+      if (r.words.size() == 1 && r.words[0].size() >= 6) words.push_back({r.words[0], r.category});
+    return words;
+  }();
+  static const std::unordered_set<std::string> known = [] {
+    std::unordered_set<std::string> words;
+    for (const auto& [w, c] : names) words.insert(w);
+    return words;
+  }();
+  for (Token& t : out) {
+    // (Words of their own are no misspellings: "double" beside the plural "doubles", "single".)
+    if (t.punct || t.number || t.word.size() < 6 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
+        Cardinal(t) || IsAdjective(t) || IsFiller(t))
+      continue;
+    // One category among the names it is one edit from (it may be near two spellings of one room:
+    // "bathrom" is near "bathroom" and "bathrm"), the first such name taken.
+    std::string match;
+    std::optional<Category> category;
+    bool ambiguous = false;
+    for (const auto& [name, c] : names)
+      for (const std::string& form : {t.word, t.stem})
+        if (OneEditApart(form, name) || OneEditApart(form, name + "s")) {
+          if (category && *category != c) ambiguous = true;
+          if (!category) match = name;
+          category = c;
+        }
+    if (category && !ambiguous) {
+      // The plural kept where the misspelling was of the plural ("bedroms").
+      const bool plural = !OneEditApart(t.word, match) && !OneEditApart(t.stem, match);
+      t.stem = match;
+      t.word = plural ? match + "s" : match;
+    }
+  }
+  return out;
 }
 
 struct FurnitureWord {
@@ -556,7 +654,7 @@ struct Mention {
 
 class Parser {
  public:
-  explicit Parser(std::string_view text) : text_(text), tokens_(Tokenise(text)) {}
+  explicit Parser(std::string_view text) : text_(text), tokens_(Normalised(Tokenise(text))) {}
 
   Brief Run();
 
@@ -617,6 +715,7 @@ class Parser {
   std::vector<Mention> mentions_;
   std::unordered_map<int, int> mention_of_item_;
   bool british_ = false;
+  bool ground_heading_ = false;  // "Ground: ..." heads a list of the ground floor's rooms
   bool zero_based_numbers_ = false;
   std::optional<int> floors_;
   std::optional<TextSpan> floors_source_;
@@ -757,14 +856,21 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     return 1;
   }
   // "Upper: three bedrooms", "Lower: kitchen", "Down: ... Up: ...", "upper = ..." (spec headings and notes).
-  if (In(t, {"upper", "lower", "up", "down"}) && i + 1 < tokens_.size() && (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '=')) {
-    item.ref = In(t, {"upper", "up"}) ? RefType::kUpper : RefType::kGround;
+  if (In(t, {"upper", "lower", "up", "down", "top", "bottom"}) && i + 1 < tokens_.size() &&
+      (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '=')) {
+    item.ref = In(t, {"upper", "up"}) ? RefType::kUpper : t.word == "top" ? RefType::kTop : RefType::kGround;
     return 1;
   }
   if (auto o = Ordinal(t); o && floor_at(i + 1)) {
     item.ref = RefType::kOrdinal;
     item.n = *o;
     return 2;
+  }
+  // "first: 3 bedrooms" after a "ground: ..." heading (a spec's floors by their ordinals alone).
+  if (auto o = Ordinal(t); o && i + 1 < tokens_.size() && tokens_[i + 1].punct == ':' && ground_heading_) {
+    item.ref = RefType::kOrdinal;
+    item.n = *o;
+    return 1;
   }
   if (In(t, {"ground"})) {
     item.ref = RefType::kGround;
@@ -779,9 +885,13 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     std::size_t k = i + 1;
     if (k < tokens_.size() && tokens_[k].word == "of") ++k;
     if (k < tokens_.size() && tokens_[k].word == "the") ++k;
+    // "each of the two upper floors"
+    int n_before = 0;
+    if (k + 1 < tokens_.size() && Cardinal(tokens_[k]) && *Cardinal(tokens_[k]) > 0 && In(tokens_[k + 1], {"upper", "higher"}))
+      n_before = *Cardinal(tokens_[k++]);
     if (k < tokens_.size() && In(tokens_[k], {"upper", "higher"})) {
       std::size_t f = k + 1;
-      int n = 0;
+      int n = n_before;
       if (f < tokens_.size() && Cardinal(tokens_[f]) && *Cardinal(tokens_[f]) > 0 && !In(tokens_[f], {"single", "double", "triple"}))
         n = *Cardinal(tokens_[f++]);
       if (floor_at(f)) {
@@ -1131,16 +1241,34 @@ int Parser::TrySide(std::size_t i, Item& item) {
 
 void Parser::MatchAll() {
   // Prescan for the numbering conventions.
-  bool ground = false, first = false;
+  bool ground = false, first = false, glossed_ground = false;
   bool numbered = false;  // "Floor 1", "level 2"
   for (std::size_t i = 0; i + 1 < tokens_.size(); ++i) {
     // "ground floor", and the heading "Ground: ..." of a spec sheet.
-    if (tokens_[i].word == "ground" && (IsFloorNoun(tokens_[i + 1]) || tokens_[i + 1].punct == ':')) ground = true;
-    if (Ordinal(tokens_[i]) == 1 && IsFloorNoun(tokens_[i + 1])) first = true;
+    // ("ground and first floor": the ground floor named with the first.)
+    if (tokens_[i].word == "ground" && (IsFloorNoun(tokens_[i + 1]) || tokens_[i + 1].punct == ':' ||
+                                        (i + 3 < tokens_.size() && tokens_[i + 1].word == "and" && Ordinal(tokens_[i + 2]) == 1 &&
+                                         IsFloorNoun(tokens_[i + 3]))))
+      ground = true;
+    if (Ordinal(tokens_[i]) == 1 && IsFloorNoun(tokens_[i + 1])) {
+      // "1st floor (ground level)": the first floor is the ground floor (American).
+      if (i + 3 < tokens_.size() && tokens_[i + 2].punct == '(' && In(tokens_[i + 3], {"ground", "street", "entry", "entrance"})) {
+        glossed_ground = true;
+        continue;
+      }
+      first = true;
+    }
     if (IsFloorNoun(tokens_[i]) && (tokens_[i + 1].word == "0" || tokens_[i + 1].word == "zero")) zero_based_numbers_ = true;
     if (IsFloorNoun(tokens_[i]) && Cardinal(tokens_[i + 1]) && *Cardinal(tokens_[i + 1]) >= 1) numbered = true;
   }
-  british_ = ground && first;
+  british_ = ground && first && !glossed_ground;
+  for (std::size_t i = 0; i + 1 < tokens_.size(); ++i)
+    if (tokens_[i].word == "ground" && (tokens_[i + 1].punct == ':' || (IsFloorNoun(tokens_[i + 1]) && i + 2 < tokens_.size() && tokens_[i + 2].punct == ':')))
+      ground_heading_ = true;
+  // A text that heads its floors "ground: ... first: ..." is British.
+  if (ground_heading_)
+    for (std::size_t i = 0; i + 1 < tokens_.size(); ++i)
+      if (Ordinal(tokens_[i]) == 1 && tokens_[i + 1].punct == ':') british_ = true;
   // A text that names its ground floor counts numbered floors up from it: "Ground: ... Floor 1: ..." puts
   // floor 1 above the ground floor.
   if (ground && numbered) zero_based_numbers_ = true;
@@ -1389,9 +1517,15 @@ void Parser::Quantify(Mention& m) {
       return std::pair{std::stoi(next.word.substr(1)), after};
     if (next.punct == '(' && after + 2 < size && Cardinal(tokens_[after + 1]) && tokens_[after + 2].punct == ')')
       return std::pair{*Cardinal(tokens_[after + 1]), after + 2};
-    if ((next.punct == ':' || next.word == "x" || next.punct == '*') && after + 1 < size && Cardinal(tokens_[after + 1]) &&
-        tokens_[after + 1].sentence == sentence && !(after + 2 < size && IsFloorNoun(tokens_[after + 2])))
+    if ((next.punct == ':' || next.word == "x" || next.punct == '*' || next.punct == '-') && after + 1 < size &&
+        Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
+        !(after + 2 < size && IsFloorNoun(tokens_[after + 2])))
       return std::pair{*Cardinal(tokens_[after + 1]), after + 1};
+    // "Study: no", "Kitchen - yes" (spec sheets).
+    if ((next.punct == ':' || next.punct == '-') && after + 1 < size && tokens_[after + 1].sentence == sentence &&
+        In(tokens_[after + 1], {"no", "none", "yes"}) &&
+        (after + 2 >= size || tokens_[after + 2].punct || tokens_[after + 2].sentence != sentence || tokens_[after + 2].item >= 0))
+      return std::pair{tokens_[after + 1].word == "yes" ? 1 : 0, after + 1};
     return std::nullopt;
   };
   if (const auto count = trailing()) {
@@ -1409,13 +1543,27 @@ void Parser::Quantify(Mention& m) {
       return x >= 0 && tokens_[x].sentence == sentence && In(tokens_[x], ws);
     };
     while (word(j, {"a", "an", "are", "is", "being", "will", "be"})) --j;
-    std::optional<int> part = j >= 2 && word(j, {"them"}) && word(j - 1, {"of"}) && tokens_[j - 2].sentence == sentence
+    std::optional<int> part = j >= 2 && word(j, {"them", "which", "those", "these"}) && word(j - 1, {"of"}) &&
+                                      tokens_[j - 2].sentence == sentence
                                   ? Cardinal(tokens_[j - 2])
                                   : std::nullopt;
     // The count already taken into the phrase: "(2 of them are kids' rooms)" read as "2 ... rooms".
     if (!part && m.first + 2 <= m.last && Cardinal(tokens_[m.first]) && word(m.first + 1, {"of"}) && word(m.first + 2, {"them"})) {
       part = Cardinal(tokens_[m.first]);
       j = m.first + 2;
+    }
+    // "3 bed (1 master)": a count in brackets right after the rooms it is part of.
+    if (!part && m.counting && m.first >= 1 && tokens_[m.first - 1].punct == '(' && m.last + 1 < size &&
+        tokens_[m.last + 1].punct == ')' && Cardinal(tokens_[m.first]) && !mentions_.empty() &&
+        mentions_.back().last == m.first - 2 && mentions_.back().counting) {
+      part = m.min;
+      j = m.first + 2;  // Consume(j - 2, j) below takes the count and the noun's first token at most
+      if (mentions_.back().category == item.category && mentions_.back().min >= *part) {
+        m.counting = false;
+        m.definite = true;
+        determined = true;
+        part.reset();
+      }
     }
     if (part && *part > 0) {
       for (auto it = mentions_.rbegin(); it != mentions_.rend() && tokens_[it->first].sentence == sentence; ++it) {

@@ -599,4 +599,96 @@ TEST_CASE("a laundry, pantry or mudroom is a utility room on one floor, and no f
   CHECK(Exact(ParseBrief("two floors with a staircase room on each floor, a kitchen and two bedrooms"), Category::kUtilityRoom, kEachLevel) == 1);
 }
 
+TEST_CASE("shorthand, repeated digits, dozens and misspelt room words are read as people mean them", "[issue32]") {
+  {
+    const Brief b = ParseBrief("1 floor. 2br 1ba, kitchen, lounge");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(Exact(b, Category::kBedroom) == 2);
+    CHECK(Exact(b, Category::kBathroom) == 1);
+    CHECK(b.unparsed.empty());
+  }
+  {
+    const Brief b = ParseBrief("Two (2) bedrooms, two (2) bathrooms and one (1) kitchen on a single floor.");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(Exact(b, Category::kBedroom) == 2);
+    CHECK(Exact(b, Category::kBathroom) == 2);
+    CHECK(b.unparsed.empty());
+  }
+  {
+    const Brief b = ParseBrief("Three storeys. Half a dozen bedrooms in total, three bathrooms and a kitchen.");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(Exact(b, Category::kBedroom) == 6);
+  }
+  {
+    // One edit from exactly one room's name; a word of its own ("double" beside "doubles") is no misspelling.
+    const Brief b = ParseBrief("just 2 bedroms, a bathrom, a balcny and two double bedrooms");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(Exact(b, Category::kBedroom) == 4);
+    CHECK(Exact(b, Category::kBathroom) == 1);
+    CHECK(Exact(b, Category::kBalcony) == 1);
+  }
+}
+
+TEST_CASE("spec sheets with dashes, yes and no, and brackets that are part of a count", "[issue32]") {
+  {
+    const Brief b = ParseBrief("Storeys: 1 | Bedrooms - 2 | Bathrooms - 1 | Kitchen: yes | Study: no | Dining - 0");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(Exact(b, Category::kBedroom) == 2);
+    CHECK(Exact(b, Category::kBathroom) == 1);
+    CHECK(Exact(b, Category::kKitchen) == 1);
+    CHECK(Exact(b, Category::kOffice) == 0);
+    CHECK(Exact(b, Category::kDiningRoom) == 0);
+  }
+  {
+    const Brief b = ParseBrief("2 fl | 3 bed (1 master) | 2 bath | kitchen");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(b.floors == 2);
+    CHECK(Exact(b, Category::kBedroom) == 3);
+  }
+  {
+    const Brief b = ParseBrief("Second floor: three bedrooms and two bathrooms, one of which is an en-suite.");
+    INFO(BriefToJson(b).dump(1));
+    int bathrooms = 0;
+    for (const auto& r : b.rooms)
+      if (r.category == Category::kBathroom) bathrooms += r.min;
+    CHECK(bathrooms == 2);
+  }
+}
+
+TEST_CASE("floors by headings and glosses: ground/first headings, 'top:', '1st floor (ground level)', 'each of the two upper floors'",
+          "[issue32]") {
+  {
+    const Brief b = ParseBrief("a villa over ground and first floor. ground: kitchen and a lounge. first: 3 bedrooms and a bathroom");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(b.british_ordinals);
+    CHECK(Exact(b, Category::kKitchen, 0) == 1);
+    CHECK(Exact(b, Category::kBedroom, 1) == 3);
+  }
+  {
+    const Brief b = ParseBrief("3 levels. ground: kitchen, living. lvl 1: 3 bed, 2 bath. top: office + balcony");
+    INFO(BriefToJson(b).dump(1));
+    CHECK(b.floors == 3);
+    CHECK(Exact(b, Category::kBedroom, 1) == 3);
+    CHECK(Exact(b, Category::kOffice, 2) == 1);
+    CHECK(Exact(b, Category::kBalcony, 2) == 1);
+  }
+  {
+    const Brief b = ParseBrief("3 floors. 1st floor (ground level): kitchen & living room. 2nd floor: 2 bedrooms + 1 bath. 3rd floor: an office.");
+    INFO(BriefToJson(b).dump(1));
+    CHECK_FALSE(b.british_ordinals);
+    CHECK(Exact(b, Category::kKitchen, 0) == 1);
+    CHECK(Exact(b, Category::kBedroom, 1) == 2);
+    CHECK(Exact(b, Category::kOffice, 2) == 1);
+    CHECK(b.conflicts.empty());
+  }
+  {
+    const Brief b = ParseBrief("Three-storey villa with a balcony on each of the two upper floors and a kitchen.");
+    INFO(BriefToJson(b).dump(1));
+    int balconies = 0;
+    for (const auto& r : b.rooms)
+      if (r.category == Category::kBalcony) balconies += r.level == kEachLevel || r.level == kUpperLevels ? 2 * r.min : r.min;
+    CHECK(balconies == 2);
+  }
+}
+
 }  // namespace villa

@@ -1,4 +1,4 @@
-// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 278 requests in eight
+// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 318 requests in eight
 // voices (terse lists, long emails, British and American floor naming, spec sheets, "each"/"per"
 // distributions, ordinals, negations), numbers in words and digits, each with what it asks: floors, the
 // footprint when named, the rooms of each kind (utility rooms aside) and, where pinned, per floor. One table:
@@ -28,7 +28,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-038", "'the first floor is for living:' (a heading) not read as a scope"},
       {"voices-040", "'a bedroom with an en-suite, so that's three bedrooms and three en-suites' counted twice"},
       {"voices-045", "a floor phrase after a list pins only its last pair"},
-      {"voices-083", "'2BR/1BA' shorthand"},
       {"voices-091", "'the second floor is bedrooms, three of them'"},
       {"voices-115", "'Bathrooms: 2 (one downstairs, one upstairs)' not split over the floors"},
       {"voices-124", "'Bathrooms: 2, one on each floor' read as two on each floor"},
@@ -37,7 +36,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-142", "'two bedrooms on the first, an office and a bedroom on the second' (floor nouns left out)"},
       {"voices-143", "'each floor has its own bathroom and living room': the planner adds an office and a bedroom"},
       {"voices-145", "'each family gets a living room ..., one family per floor'"},
-      {"voices-146", "floors named after a list ('..., 3 bedrooms and 2 bathrooms above')"},
       {"voices-153", "'split evenly between the floors'"},
       {"voices-160", "'Upstairs: the master bedroom, another bedroom': 'the master bedroom' is a new room"},
       {"voices-173", "'the first bedroom ..., and the second bedroom ...' as two rooms"},
@@ -50,6 +48,14 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-230", "'Two bedrooms, one of them a guest bedroom' counts the guest bedroom again; 'a west-facing terrace'"},
       {"voices-238", "spec 'storeys 2; NOTES: office on the ground floor, all bedrooms upstairs'"},
       {"voices-255", "'a family room and a separate living room': the dining room lost; '2.5 baths (two full baths plus a powder room)' read as 4"},
+      // 279-318: written by a helper that saw none of the corpus and none of the code, as unseen requests for
+      // issue 32 (ten of them first cut to the six rooms a floor FORMAT.md allows); first reading 90.8 % of
+      // their requirements and 1 false "met"; after the fixes of that stop 97.3 %, 0.
+      {"voices-290", "'a small box room I can use as a study' is a study, not a bedroom"},
+      {"voices-299", "12 rooms on 2 floors: the planner finds no layout with the office and the balcony"},
+      {"voices-303", "spec floors in brackets after each count: 'Bathrooms - 2 (1 downstairs, 1 upstairs) | Kitchen - 1 (downstairs)'"},
+      {"voices-306", "'three kids: a children's room for each kid' (a room per person counted before)"},
+      {"voices-318", "'up' and 'down' after a room as floors: '3 bedrooms up, 2 bathrooms (one up, one down)'"},
   };
   return gaps;
 }
@@ -112,7 +118,7 @@ TEST_CASE("Requests in eight voices: every one off the known-gaps list is planne
     return true;
   });
   REQUIRE(read.ok());
-  REQUIRE(requests.size() >= 200);
+  REQUIRE(requests.size() >= 300);
   PlanOptions options;
   options.time_budget_s = 2.0;
   std::map<std::string, std::pair<int, int>> by_style;  // matched, total
