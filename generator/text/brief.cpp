@@ -1585,6 +1585,26 @@ void Parser::Quantify(Mention& m) {
       }
     }
   }
+  // "three kids: a children's room for each kid", "two sons, a bedroom per son": as many as the people
+  // the text counts before it.
+  if (m.counting && m.min == 1 && m.max == 1 && item.last + 2 < size && tokens_[item.last + 1].sentence == sentence) {
+    int j = item.last + 1;
+    if (tokens_[j].word == "for") ++j;
+    static const std::initializer_list<std::string_view> people = {"kid", "child", "son", "daughter", "boy", "girl", "teen",
+                                                                   "teenager", "grandchild", "twin"};
+    if (j + 1 < size && In(tokens_[j], {"each", "every", "per"}) && In(tokens_[j + 1], people)) {
+      for (int q = m.first - 1; q >= 1; --q)
+        if ((In(tokens_[q], people) || In(tokens_[q], {"kids", "children", "sons", "daughters", "boys", "girls", "teens",
+                                                        "teenagers", "grandchildren", "twins"})) &&
+            Cardinal(tokens_[q - 1]) && *Cardinal(tokens_[q - 1]) >= 2 && tokens_[q].item < 0) {
+          m.min = m.max = *Cardinal(tokens_[q - 1]);
+          Consume(q - 1, q);  // the people counted: no words left unread
+          Consume(item.last + 1, j + 1);
+          m.last = j + 1;
+          break;
+        }
+    }
+  }
   // "two baths including a Jack and Jill bathroom": one of those counted before it in the sentence.
   if (m.counting && m.first > 0 && In(tokens_[m.first - 1], {"including", "incl", "includes", "include"}) &&
       std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {

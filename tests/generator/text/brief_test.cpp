@@ -691,4 +691,14 @@ TEST_CASE("floors by headings and glosses: ground/first headings, 'top:', '1st f
   }
 }
 
+TEST_CASE("a room for each of the people counted before it: 'three kids: a children's room for each kid'", "[issue32]") {
+  const Brief b = ParseBrief("A two-story house for a family with three kids: a children's room for each kid, plus one master bedroom.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kChildrenRoom) == 3);
+  CHECK(Exact(b, Category::kBedroom) == 1);
+  CHECK(b.unparsed.empty());
+  const Brief sons = ParseBrief("two sons, a bedroom for each son, a kitchen");
+  CHECK(Exact(sons, Category::kBedroom) == 2);
+}
+
 }  // namespace villa
