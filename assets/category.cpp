@@ -90,7 +90,7 @@ std::vector<CategoryInfo> MakeTable() {
       {"clothes-horse", {"drying rack", "airer"}, P::kFloor, {0.6, 0.5, 0.9}, {1.4, 0.7, 1.3}, kCon, false, false, std::nullopt, true, "clothes-horse"},
       {"broom", {"mop", "ladder", "step ladder"}, P::kFloor, {0.25, 0.1, 1.2}, {0.5, 0.3, 1.6}, kCon, false, false, std::nullopt, true, "broom"},
       // ---- electronics
-      {"tv", {"television", "tv set", "flat screen"}, P::kSurface, {0.9, 0.06, 0.55}, {1.5, 0.25, 0.9}, kCon, false, false, std::nullopt, false, "screen"},
+      {"tv", {"television", "tv set", "flat screen", "telly"}, P::kSurface, {0.9, 0.06, 0.55}, {1.5, 0.25, 0.9}, kCon, false, false, std::nullopt, false, "screen"},
       {"monitor", {"computer screen", "display", "computer", "imac"}, P::kSurface, {0.45, 0.15, 0.35}, {0.7, 0.25, 0.55}, kCon, false, false, std::nullopt, false, "screen"},
       {"laptop", {"notebook computer", "computer laptop"}, P::kSurface, {0.3, 0.22, 0.02}, {0.4, 0.28, 0.04}, kCon, false, false, std::nullopt, false, "laptop"},
       {"printer", {"copier"}, P::kSurface, {0.35, 0.3, 0.15}, {0.5, 0.45, 0.35}, kCon, false, false, std::nullopt, false, "gadget"},

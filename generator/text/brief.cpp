@@ -513,7 +513,7 @@ struct FurnitureWord {
 const std::vector<std::vector<std::string>>& FurnitureLexicon() {
   static const std::vector<std::vector<std::string>> lexicon = [] {
     std::vector<std::vector<std::string>> out;
-    for (auto p : {"tv", "television", "tv set", "bed", "double bed", "single bed", "bunk bed", "king bed",
+    for (auto p : {"tv", "television", "tv set", "telly", "bed", "double bed", "single bed", "bunk bed", "king bed",
                    "queen bed", "king size bed", "queen size bed", "twin bed", "crib", "cot", "sofa",
                    "couch", "sofa bed", "armchair", "chair", "desk", "writing desk", "table", "dining table",
                    "coffee table", "conference table", "meeting table", "side table", "bedside table",
@@ -685,6 +685,7 @@ class Parser {
   int FloorsBefore(int at, int sentence) const;
   void Spread();
   void Distribute();
+  void UsedAs();
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
   void Attach();
@@ -2649,6 +2650,33 @@ void Parser::Finish(Brief& brief) {
   }
 }
 
+// "a small box room I can use as a study", "a spare room to use as an office", "a bedroom we'd use as a
+// playroom": one room, of the kind it is to be used as.
+void Parser::UsedAs() {
+  for (std::size_t k = 0; k + 1 < mentions_.size(); ++k) {
+    Mention& room = mentions_[k];
+    Mention& as = mentions_[k + 1];
+    if (!room.counting || room.max != 1 || room.min != 1 || !as.counting || as.min != 1 || as.max != 1 ||
+        tokens_[room.last].sentence != tokens_[as.first].sentence || room.category == as.category)
+      continue;
+    bool use = false, as_word = false, filler = true;
+    for (int j = room.last + 1; j < as.first && filler; ++j) {
+      const Token& t = tokens_[j];
+      if (In(t, {"use", "used", "using"})) use = true;
+      else if (t.word == "as") as_word = use;
+      else if (!In(t, {"that", "which", "i", "we", "you", "can", "could", "will", "would", "ll", "d", "to", "be", "also",
+                       "maybe", "might", "then", "as", "a", "an"}))
+        filler = false;
+    }
+    if (!filler || !use || !as_word) continue;
+    room.category = as.category;
+    items_[room.item].category = as.category;
+    as.counting = false;
+    as.definite = true;
+    Consume(room.last + 1, as.first - 1);
+  }
+}
+
 Brief Parser::Run() {
   Brief brief;
   brief.text = std::string(text_);
@@ -2664,6 +2692,7 @@ Brief Parser::Run() {
     mentions_.push_back(m);
     bare_.push_back(bare_mention_);
   }
+  UsedAs();
   Spread();
   PlaceLevels();
   Distribute();

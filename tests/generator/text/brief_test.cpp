@@ -701,4 +701,14 @@ TEST_CASE("a room for each of the people counted before it: 'three kids: a child
   CHECK(Exact(sons, Category::kBedroom) == 2);
 }
 
+TEST_CASE("a room to be used as another kind is one room of that kind: 'a small box room I can use as a study'", "[issue32]") {
+  const Brief b = ParseBrief("Two bedrooms, a lounge with space for the telly, and a small box room I can use as a study.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom) == 2);
+  CHECK(Exact(b, Category::kOffice) == 1);
+  CHECK(b.unparsed.empty());
+  CHECK(Exact(ParseBrief("a spare room to use as an office and a kitchen"), Category::kOffice) == 1);
+  CHECK(FindRooms(ParseBrief("a spare room to use as an office and a kitchen"), Category::kBedroom, kAnyLevel) == nullptr);
+}
+
 }  // namespace villa
