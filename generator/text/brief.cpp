@@ -856,6 +856,12 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kGround;
     return 1;
   }
+  // "3 bedrooms up, kitchen + lounge down" (terse notes): right after a room, then a break.
+  if (In(t, {"up", "down"}) && i > 0 && tokens_[i - 1].item >= 0 && items_[tokens_[i - 1].item].kind == ItemKind::kRoom &&
+      (i + 1 >= tokens_.size() || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence || tokens_[i + 1].word == "and")) {
+    item.ref = t.word == "up" ? RefType::kUpper : RefType::kGround;
+    return 1;
+  }
   // "Upper: three bedrooms", "Lower: kitchen", "Down: ... Up: ...", "upper = ..." (spec headings and notes).
   if (In(t, {"upper", "lower", "up", "down", "top", "bottom"}) && i + 1 < tokens_.size() &&
       (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '=')) {

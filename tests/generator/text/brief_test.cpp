@@ -711,4 +711,15 @@ TEST_CASE("a room to be used as another kind is one room of that kind: 'a small 
   CHECK(FindRooms(ParseBrief("a spare room to use as an office and a kitchen"), Category::kBedroom, kAnyLevel) == nullptr);
 }
 
+TEST_CASE("'up' and 'down' right after a room are the floors of a two-storey note", "[issue32]") {
+  const Brief b = ParseBrief("2 storeys: 3 bedrooms up, a bathroom up, kitchen and lounge down, a wc down");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom, 1) == 3);
+  CHECK(Exact(b, Category::kBathroom, 1) == 1);
+  CHECK(Exact(b, Category::kBathroom, 0) == 1);
+  CHECK(Exact(b, Category::kLivingRoom, 0) == 1);
+  // Not a floor where a word follows: "set up a desk", "a room up the stairs".
+  CHECK(Exact(ParseBrief("a bedroom up the stairs and a kitchen"), Category::kBedroom) == 1);
+}
+
 }  // namespace villa
