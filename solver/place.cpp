@@ -480,8 +480,8 @@ double FloorAhead(const Layer& layer, const Body& b, const Candidate& c) {
 double FacingPreference(const Layer& layer, int self, const RoomState& state, const Candidate& c) {
   const Body& b = layer.bodies[self];
   // The stand placed before its sofa (the cycle of their relations broken by rank) likewise prefers floor
-  // ahead for the sofa's depth and the gap.
-  // More floor than the gap is no fault for the stand (its sofa need not back onto a wall).
+  // ahead for the sofa's depth and the gap; more floor than that is no fault for it (a sofa need not back
+  // onto a wall).
   std::optional<FarFront> far = FarFrontOf(state, b.object);
   const bool stand = !far;
   if (stand) far = FarFrontOf(state, b.object, true);
