@@ -153,7 +153,7 @@ std::vector<Token> Tokenise(std::string_view text) {
           tokens.push_back(std::move(count));
           t.begin += digits.size();
           t.joined = false;
-          word = suffix;
+          t.word = word = suffix;
         }
       }
       t.stem = Singular(word);
