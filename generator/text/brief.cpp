@@ -437,6 +437,95 @@ bool OneEditApart(const std::string& a, const std::string& b) {
                : a.compare(i + 1, std::string::npos, b, i, std::string::npos) == 0;  // one too many
 }
 
+// A count whose floors follow it in brackets, written out as one phrase per floor: "Bathrooms - 2 (1
+// downstairs, 1 upstairs)" and "2 bathrooms (one up, one down)" read as "1 Bathrooms downstairs, 1 Bathrooms
+// upstairs", "Kitchen - 1 (downstairs)" and "Bedrooms: 3 (all upstairs)" as "1 Kitchen downstairs", "3
+// Bedrooms upstairs". The noun is the one to three words between the separator before them ('|', ',', '/',
+// a sentence's start) and the count, or right after the count; the floors are "upstairs", "downstairs",
+// "up" or "down"; the counts in the brackets must add up to the count.
+std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
+  auto floor_word = [](const Token& t) { return !t.punct && In(t, {"upstairs", "downstairs", "up", "down"}); };
+  // The floors of the brackets opening at `open` and the index of their ')', when they are floors.
+  auto floors_at = [&](std::size_t open, int total) -> std::optional<std::pair<std::vector<std::pair<int, const Token*>>, std::size_t>> {
+    if (open + 1 >= tokens.size() || tokens[open].punct != '(') return std::nullopt;
+    std::vector<std::pair<int, const Token*>> floors;
+    std::size_t j = open + 1;
+    if (floor_word(tokens[j]) || (tokens[j].word == "all" && j + 1 < tokens.size() && floor_word(tokens[j + 1]))) {
+      if (tokens[j].word == "all") ++j;
+      floors.push_back({total, &tokens[j++]});
+    } else {
+      while (j + 1 < tokens.size() && tokens[j].punct != ')') {
+        const std::optional<int> n = Cardinal(tokens[j]);
+        if (!n || !floor_word(tokens[j + 1])) return std::nullopt;
+        floors.push_back({*n, &tokens[j + 1]});
+        j += 2;
+        if (j < tokens.size() && (tokens[j].punct == ',' || tokens[j].word == "and")) ++j;
+      }
+    }
+    int sum = 0;
+    for (const auto& [n, f] : floors) sum += n;
+    if (floors.empty() || sum != total || j >= tokens.size() || tokens[j].punct != ')') return std::nullopt;
+    return std::pair{std::move(floors), j};
+  };
+  std::vector<Token> out;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& count = tokens[i];
+    const std::optional<int> total = count.punct ? std::nullopt : Cardinal(count);
+    std::vector<Token> noun;
+    std::size_t open = i + 1;
+    if (total) {
+      // The noun after the count: up to three words, then the brackets.
+      while (open < tokens.size() && open <= i + 3 && !tokens[open].punct && !Cardinal(tokens[open]) &&
+             tokens[open].sentence == count.sentence)
+        ++open;
+      if (open == i + 1) {
+        // The noun before it: what out has since the last separator, less a ':' or '-' before the count.
+        std::size_t start = out.size();
+        while (start > 0 && !(out[start - 1].punct && out[start - 1].punct != '-' && out[start - 1].punct != ':') &&
+               out[start - 1].sentence == count.sentence)
+          --start;
+        std::size_t end = out.size();
+        if (end > start && (out[end - 1].punct == ':' || out[end - 1].punct == '-')) --end;
+        if (end > start && end - start <= 3) noun.assign(out.begin() + static_cast<std::ptrdiff_t>(start), out.begin() + static_cast<std::ptrdiff_t>(end));
+        const auto floors = noun.empty() ? std::nullopt : floors_at(open, *total);
+        if (floors) out.resize(start);
+        else noun.clear();
+      } else {
+        noun.assign(tokens.begin() + static_cast<std::ptrdiff_t>(i + 1), tokens.begin() + static_cast<std::ptrdiff_t>(open));
+      }
+    }
+    const auto floors = noun.empty() ? std::nullopt : floors_at(open, *total);
+    if (!floors) {
+      out.push_back(count);
+      continue;
+    }
+    // Each token written spans the whole phrase, to the ')' (what a report quotes).
+    const std::size_t begin = std::min(noun.front().begin, count.begin), finish = tokens[floors->second].end;
+    auto put = [&](Token t) {
+      t.begin = begin;
+      t.end = finish;
+      out.push_back(std::move(t));
+    };
+    for (std::size_t k = 0; k < floors->first.size(); ++k) {
+      if (k > 0) {
+        Token comma = tokens[open];
+        comma.punct = ',';
+        comma.word = comma.stem = ",";
+        put(comma);
+      }
+      Token n = count;
+      n.word = n.stem = std::to_string(floors->first[k].first);
+      n.number = true;
+      n.value = floors->first[k].first;
+      put(n);
+      for (const Token& w : noun) put(w);
+      put(*floors->first[k].second);
+    }
+    i = floors->second;  // the ')'
+  }
+  return out;
+}
+
 // The tokens as the parser reads them: a count repeated in digits ("three (3) bedrooms") once; "half a
 // dozen" six, "a dozen" twelve; a misspelt room word of six letters or more one edit from exactly one
 // of the lexicon's one-word room names ("bedroms", "bathrom", "balcny") read as it.
@@ -468,6 +557,7 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     }
     out.push_back(t);
   }
+  out = FloorsInBrackets(out);
   static const std::vector<std::pair<std::string, Category>> names = [] {
     std::vector<std::pair<std::string, Category>> words;
     for (const RoomWord& r : RoomLexicon())
@@ -828,8 +918,9 @@ int Parser::TryFloorCount(std::size_t i, Item& item) {
     item.floors_at_least = true;
     return len;
   }
-  // "Floors: 3", "Number of stories: 2" (spec style).
-  if (IsFloorNoun(t) && i + 2 < tokens_.size() && tokens_[i + 1].punct == ':' && Cardinal(tokens_[i + 2]) &&
+  // "Floors: 3", "Number of stories: 2", "Storeys - 2" (spec style).
+  if (IsFloorNoun(t) && i + 2 < tokens_.size() && (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '-') &&
+      Cardinal(tokens_[i + 2]) &&
       !In(tokens_[i + 2], {"single", "double", "triple"})) {
     item.floors = *Cardinal(tokens_[i + 2]);
     return 3;

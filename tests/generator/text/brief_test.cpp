@@ -722,4 +722,20 @@ TEST_CASE("'up' and 'down' right after a room are the floors of a two-storey not
   CHECK(Exact(ParseBrief("a bedroom up the stairs and a kitchen"), Category::kBedroom) == 1);
 }
 
+TEST_CASE("a count split over the floors in brackets after it: 'Bathrooms: 2 (one downstairs, one upstairs)'", "[issue32]") {
+  const Brief b = ParseBrief("Storeys - 2 | Bedrooms - 3 (all upstairs) | Bathrooms - 2 (1 downstairs, 1 upstairs) | Kitchen - 1 (downstairs)");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(b.floors == 2);
+  CHECK(Exact(b, Category::kBedroom, 1) == 3);
+  CHECK(Exact(b, Category::kBathroom, 0) == 1);
+  CHECK(Exact(b, Category::kBathroom, 1) == 1);
+  CHECK(Exact(b, Category::kKitchen, 0) == 1);
+  CHECK(b.unparsed.empty());
+  const Brief after = ParseBrief("2 storey house, 3 bedrooms up, 2 bathrooms (one up, one down)");
+  CHECK(Exact(after, Category::kBathroom, 0) == 1);
+  CHECK(Exact(after, Category::kBathroom, 1) == 1);
+  // Brackets that are no floors are left as they are.
+  CHECK(Exact(ParseBrief("3 bedrooms (2 of them en-suite) and a kitchen"), Category::kBedroom) == 3);
+}
+
 }  // namespace villa
