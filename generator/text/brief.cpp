@@ -442,13 +442,28 @@ bool OneEditApart(const std::string& a, const std::string& b) {
 // upstairs", "Kitchen - 1 (downstairs)" and "Bedrooms: 3 (all upstairs)" as "1 Kitchen downstairs", "3
 // Bedrooms upstairs". The noun is the one to three words between the separator before them ('|', ',', '/',
 // a sentence's start) and the count, or right after the count; the floors are "upstairs", "downstairs",
-// "up" or "down"; the counts in the brackets must add up to the count.
+// "up" or "down"; the counts in the brackets must add up to the count. So does a count whose floors follow
+// it one by one: "2 living rooms, the first downstairs, the second upstairs".
 std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
   auto floor_word = [](const Token& t) { return !t.punct && In(t, {"upstairs", "downstairs", "up", "down"}); };
   // The floors of the brackets opening at `open` and the index of their ')', when they are floors.
   auto floors_at = [&](std::size_t open, int total) -> std::optional<std::pair<std::vector<std::pair<int, const Token*>>, std::size_t>> {
-    if (open + 1 >= tokens.size() || tokens[open].punct != '(') return std::nullopt;
     std::vector<std::pair<int, const Token*>> floors;
+    // ", the first downstairs, the second upstairs": one each, in order; ends on the last floor word.
+    if (open + 3 < tokens.size() && tokens[open].punct == ',' && tokens[open + 1].word == "the") {
+      std::size_t j = open + 1;
+      while (j + 2 < tokens.size() && tokens[j].word == "the" && Ordinal(tokens[j + 1]) == static_cast<int>(floors.size()) + 1 &&
+             floor_word(tokens[j + 2])) {
+        floors.push_back({1, &tokens[j + 2]});
+        j += 3;
+        if (static_cast<int>(floors.size()) == total) break;
+        if (j < tokens.size() && (tokens[j].punct == ',' || tokens[j].word == "and")) ++j;
+        if (j < tokens.size() && tokens[j].word == "and") ++j;
+      }
+      if (static_cast<int>(floors.size()) != total || total < 2) return std::nullopt;
+      return std::pair{std::move(floors), j - 1};
+    }
+    if (open + 1 >= tokens.size() || tokens[open].punct != '(') return std::nullopt;
     std::size_t j = open + 1;
     if (floor_word(tokens[j]) || (tokens[j].word == "all" && j + 1 < tokens.size() && floor_word(tokens[j + 1]))) {
       if (tokens[j].word == "all") ++j;

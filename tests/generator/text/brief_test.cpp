@@ -734,6 +734,9 @@ TEST_CASE("a count split over the floors in brackets after it: 'Bathrooms: 2 (on
   const Brief after = ParseBrief("2 storey house, 3 bedrooms up, 2 bathrooms (one up, one down)");
   CHECK(Exact(after, Category::kBathroom, 0) == 1);
   CHECK(Exact(after, Category::kBathroom, 1) == 1);
+  const Brief ordinals = ParseBrief("A two-storey house with 2 living rooms, the first downstairs, the second upstairs.");
+  CHECK(Exact(ordinals, Category::kLivingRoom, 0) == 1);
+  CHECK(Exact(ordinals, Category::kLivingRoom, 1) == 1);
   // Brackets that are no floors are left as they are.
   CHECK(Exact(ParseBrief("3 bedrooms (2 of them en-suite) and a kitchen"), Category::kBedroom) == 3);
 }
