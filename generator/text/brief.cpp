@@ -791,6 +791,7 @@ class Parser {
   void Spread();
   void Distribute();
   void UsedAs();
+  bool ElidedFloor(std::size_t i) const;
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
   void Attach();
@@ -950,9 +951,23 @@ int Parser::TryFloorCount(std::size_t i, Item& item) {
   return 2;
 }
 
+// "two bedrooms on the first, an office on the second": an ordinal after "on the" whose floor noun is left
+// out (before a break or "and"), in a text that names floors elsewhere.
+bool Parser::ElidedFloor(std::size_t i) const {
+  if (i < 2 || !Ordinal(tokens_[i]) || tokens_[i - 1].word != "the" || tokens_[i - 2].word != "on") return false;
+  if (i + 1 < tokens_.size() && !tokens_[i + 1].punct && tokens_[i + 1].sentence == tokens_[i].sentence && tokens_[i + 1].word != "and")
+    return false;
+  return std::any_of(tokens_.begin(), tokens_.end(), [](const Token& t) { return IsFloorNoun(t); });
+}
+
 int Parser::TryFloorRef(std::size_t i, Item& item) {
   const Token& t = tokens_[i];
   if (t.punct) return 0;
+  if (ElidedFloor(i)) {
+    item.ref = RefType::kOrdinal;
+    item.n = *Ordinal(t);
+    return 1;
+  }
   auto floor_at = [&](std::size_t k) { return k < tokens_.size() && IsFloorNoun(tokens_[k]); };
   if (In(t, {"upstairs", "upstair"})) {
     item.ref = RefType::kUpper;
@@ -1363,7 +1378,7 @@ void Parser::MatchAll() {
                                         (i + 3 < tokens_.size() && tokens_[i + 1].word == "and" && Ordinal(tokens_[i + 2]) == 1 &&
                                          IsFloorNoun(tokens_[i + 3]))))
       ground = true;
-    if (Ordinal(tokens_[i]) == 1 && IsFloorNoun(tokens_[i + 1])) {
+    if (Ordinal(tokens_[i]) == 1 && (IsFloorNoun(tokens_[i + 1]) || ElidedFloor(i))) {
       // "1st floor (ground level)": the first floor is the ground floor (American).
       if (i + 3 < tokens_.size() && tokens_[i + 2].punct == '(' && In(tokens_[i + 3], {"ground", "street", "entry", "entrance"})) {
         glossed_ground = true;

@@ -741,4 +741,14 @@ TEST_CASE("a count split over the floors in brackets after it: 'Bathrooms: 2 (on
   CHECK(Exact(ParseBrief("3 bedrooms (2 of them en-suite) and a kitchen"), Category::kBedroom) == 3);
 }
 
+TEST_CASE("floors named by their ordinals alone after 'on the': 'two bedrooms on the first, an office on the second'", "[issue32]") {
+  const Brief b = ParseBrief("A three-storey house: living room and kitchen on the ground floor, two bedrooms on the first, an office on the second.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(b.british_ordinals);
+  CHECK(Exact(b, Category::kBedroom, 1) == 2);
+  CHECK(Exact(b, Category::kOffice, 2) == 1);
+  // Not where a word follows the ordinal, or the text names no floors.
+  CHECK(Exact(ParseBrief("a kitchen on the first try and two bedrooms"), Category::kBedroom) == 2);
+}
+
 }  // namespace villa
