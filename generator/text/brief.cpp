@@ -1626,6 +1626,26 @@ void Parser::Quantify(Mention& m) {
       determined = true;  // a reference to a room counted elsewhere
       m.definite = true;
       m.first = k;
+      // "a guest bedroom downstairs ... Upstairs: the master bedroom": the master bedroom is no guest room,
+      // so one more (where every bedroom named before is a guest or spare one).
+      auto has = [&](int from, int to, std::initializer_list<std::string_view> words) {
+        for (int q = from; q <= to; ++q)
+          if (In(tokens_[q], words)) return true;
+        return false;
+      };
+      if (t->word == "the" && item.category == Category::kBedroom && has(item.first, item.last, {"master", "main", "primary", "principal"})) {
+        bool others = false, all_guest = true;
+        for (const Mention& o : mentions_)
+          if (o.category == Category::kBedroom && o.counting && o.max != 0) {
+            others = true;
+            all_guest = all_guest && has(o.first, o.last, {"guest", "spare"});
+          }
+        if (others && all_guest) {
+          m.definite = false;
+          m.counting = true;
+          m.min = m.max = 1;
+        }
+      }
       // "skip the dining room", "forget the balcony", "no need for the office": none of it.
       if (negated_before(k - 1)) {
         m.definite = false;

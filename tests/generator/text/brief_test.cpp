@@ -751,4 +751,13 @@ TEST_CASE("floors named by their ordinals alone after 'on the': 'two bedrooms on
   CHECK(Exact(ParseBrief("a kitchen on the first try and two bedrooms"), Category::kBedroom) == 2);
 }
 
+TEST_CASE("'the master bedroom' after guest bedrooms only is one more bedroom, after plain bedrooms one of them", "[issue32]") {
+  const Brief b = ParseBrief("Two-storey house. Downstairs: lounge, kitchen, a guest bedroom. Upstairs: the master bedroom and another bedroom.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom, 0) == 1);
+  CHECK(Exact(b, Category::kBedroom, 1) == 2);
+  const Brief plain = ParseBrief("Three bedrooms upstairs; the master bedroom has a walk-in wardrobe.");
+  CHECK(Exact(plain, Category::kBedroom, 1) == 3);
+}
+
 }  // namespace villa
