@@ -437,6 +437,45 @@ bool OneEditApart(const std::string& a, const std::string& b) {
                : a.compare(i + 1, std::string::npos, b, i, std::string::npos) == 0;  // one too many
 }
 
+// "our three kids each want their own room", "the two boys each get their own bedroom": that many
+// children's rooms, written as "3 kids rooms" for the parser to count.
+std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
+  std::vector<Token> out;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& n = tokens[i];
+    std::size_t j = i + 1;
+    const bool people = j < tokens.size() && In(tokens[j], {"kids", "children", "boys", "girls", "sons", "daughters", "teenagers", "teens"});
+    bool ok = !n.punct && Cardinal(n) && *Cardinal(n) >= 2 && people;
+    if (ok) {
+      ++j;
+      if (j < tokens.size() && tokens[j].word == "each") ++j;
+      else ok = false;
+      while (ok && j < tokens.size() && In(tokens[j], {"want", "wants", "need", "needs", "get", "gets", "have", "has", "should",
+                                                       "will", "would", "like", "deserve", "must"}))
+        ++j;
+      ok = ok && j + 2 < tokens.size() && tokens[j].word == "their" && tokens[j + 1].word == "own" &&
+           In(tokens[j + 2], {"room", "bedroom"});
+    }
+    if (!ok) {
+      out.push_back(n);
+      continue;
+    }
+    const std::size_t begin = n.begin, end = tokens[j + 2].end;
+    Token count = n, kids = tokens[i + 1], rooms = tokens[j + 2];
+    count.begin = kids.begin = rooms.begin = begin;
+    count.end = kids.end = rooms.end = end;
+    kids.word = "kids";
+    kids.stem = "kid";
+    rooms.word = "rooms";
+    rooms.stem = "room";
+    out.push_back(count);
+    out.push_back(kids);
+    out.push_back(rooms);
+    i = j + 2;
+  }
+  return out;
+}
+
 // A count whose floors follow it in brackets, written out as one phrase per floor: "Bathrooms - 2 (1
 // downstairs, 1 upstairs)" and "2 bathrooms (one up, one down)" read as "1 Bathrooms downstairs, 1 Bathrooms
 // upstairs", "Kitchen - 1 (downstairs)" and "Bedrooms: 3 (all upstairs)" as "1 Kitchen downstairs", "3
@@ -572,6 +611,7 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     }
     out.push_back(t);
   }
+  out = OwnRooms(out);
   out = FloorsInBrackets(out);
   static const std::vector<std::pair<std::string, Category>> names = [] {
     std::vector<std::pair<std::string, Category>> words;

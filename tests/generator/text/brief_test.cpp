@@ -760,4 +760,12 @@ TEST_CASE("'the master bedroom' after guest bedrooms only is one more bedroom, a
   CHECK(Exact(plain, Category::kBedroom, 1) == 3);
 }
 
+TEST_CASE("'our three kids each want their own room' is three children's rooms", "[issue32]") {
+  const Brief b = ParseBrief("Two floors. Our three kids each want their own room, plus a bedroom for us and a kitchen.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kChildrenRoom) == 3);
+  CHECK(Exact(b, Category::kBedroom) == 1);
+  CHECK(Exact(ParseBrief("the two boys each get their own bedroom"), Category::kChildrenRoom) == 2);
+}
+
 }  // namespace villa
