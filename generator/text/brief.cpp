@@ -855,6 +855,7 @@ class Parser {
   std::vector<int> MentionLevels(const Mention& m) const;
   int OwnLevel(const Mention& m) const { return m.ref >= 0 ? ResolveRef(m.ref) : kAnyLevel; }
   bool bare_mention_ = false;  // set by Quantify for the mention it just read
+  std::unordered_set<int> per_items_;  // room items named as a ratio's base ("for every two bedrooms"): counted elsewhere
 
   std::string_view text_;
   std::vector<Token> tokens_;
@@ -1493,6 +1494,10 @@ void Parser::Quantify(Mention& m) {
   m.plural = noun.stem != noun.word && noun.word != "children";
   m.first = item.first;
   m.last = item.last;
+  if (per_items_.count(m.item)) {  // "for every two bedrooms": the bedrooms counted before
+    m.definite = true;
+    return;
+  }
   int k = item.first - 1;
   int sentence = tokens_[item.first].sentence;
   bool determined = false;
@@ -1791,6 +1796,22 @@ void Parser::Quantify(Mention& m) {
           m.last = j + 1;
           break;
         }
+    }
+  }
+  // "one bathroom for every two bedrooms": as many as the bedrooms counted before it make, rounded up; the
+  // bedrooms named after it are those (per_items_).
+  if (m.counting && m.min >= 1 && m.max == m.min && item.last + 4 < size && tokens_[item.last + 1].word == "for" &&
+      In(tokens_[item.last + 2], {"every", "each"}) && Cardinal(tokens_[item.last + 3]) && *Cardinal(tokens_[item.last + 3]) >= 2 &&
+      tokens_[item.last + 4].item >= 0 && items_[tokens_[item.last + 4].item].kind == ItemKind::kRoom) {
+    const Category base = items_[tokens_[item.last + 4].item].category;
+    const int per = *Cardinal(tokens_[item.last + 3]);
+    int counted = 0;
+    for (const Mention& o : mentions_)
+      if (o.category == base && o.counting && o.max > 0) counted = std::max(counted, o.min);
+    if (counted > 0) {
+      m.min = m.max = m.min * ((counted + per - 1) / per);
+      per_items_.insert(tokens_[item.last + 4].item);
+      Consume(item.last + 1, item.last + 3);
     }
   }
   // "two baths including a Jack and Jill bathroom": one of those counted before it in the sentence.
@@ -2143,8 +2164,9 @@ void Parser::Spread() {
                                                      IsAdjective(*word(j)) || (word(j)->item >= 0 && items_[word(j)->item].kind == ItemKind::kFloorRef));
            ++steps)
         ++j;
+      // (Not a ratio: "one bathroom for every two bedrooms" is counted by Quantify.)
       if (const Token* t3 = word(j); t3 && t3->item >= 0 && items_[t3->item].kind == ItemKind::kRoom &&
-                                       sleeping(items_[t3->item].category))
+                                       sleeping(items_[t3->item].category) && !per_items_.count(t3->item))
         all_of = items_[t3->item].category;
     }
     // "each with its own en-suite and balcony": the next room of the phrase is spread alike.

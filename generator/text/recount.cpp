@@ -405,7 +405,9 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         }
         if (OneOf(next, {"bedroom", "bedrooms"}) && (w == "per" || w == "each" || w == "every")) {
           const int bedrooms = so_far(Category::kBedroom);
-          if (bedrooms > 0) n = std::max(n, 1) * bedrooms;
+          // "for every two bedrooms": one for each pair, rounded up.
+          const int group = t[k + 1] == "two" ? 2 : t[k + 1] == "three" ? 3 : 1;
+          if (bedrooms > 0) n = std::max(n, 1) * ((bedrooms + group - 1) / group);
           to = k + 2;
           break;
         }

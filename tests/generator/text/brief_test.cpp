@@ -768,4 +768,17 @@ TEST_CASE("'our three kids each want their own room' is three children's rooms",
   CHECK(Exact(ParseBrief("the two boys each get their own bedroom"), Category::kChildrenRoom) == 2);
 }
 
+TEST_CASE("'one bathroom for every two bedrooms' is a ratio, in the brief and in the recount", "[issue32]") {
+  const Brief b = ParseBrief("Two-storey, four bedrooms, one bathroom for every two bedrooms, a kitchen and a living room.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom) == 4);
+  CHECK(Exact(b, Category::kBathroom) == 2);
+  CHECK(Exact(ParseBrief("three bedrooms and a bathroom for every two bedrooms"), Category::kBathroom) == 2);
+  CHECK(Exact(ParseBrief("three bedrooms and a balcony for every bedroom"), Category::kBalcony) == 3);
+  PlanOptions options;
+  options.seed = 3;
+  const PlanSummary plan = PlanLayout("Two-storey, four bedrooms, one bathroom for every two bedrooms, a kitchen and a living room.", options);
+  CHECK(plan.outcome == PlanOutcome::kMet);
+}
+
 }  // namespace villa

@@ -31,7 +31,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-091", "'the second floor is bedrooms, three of them'"},
       {"voices-124", "'Bathrooms: 2, one on each floor' read as two on each floor"},
       {"voices-136", "'two bedrooms on each of the upper floors, each pair sharing a bathroom'"},
-      {"voices-138", "'one bathroom for every two bedrooms'"},
       {"voices-143", "'each floor has its own bathroom and living room': the planner adds an office and a bedroom"},
       {"voices-145", "'each family gets a living room ..., one family per floor'"},
       {"voices-153", "'split evenly between the floors'"},
