@@ -748,9 +748,9 @@ struct RoomSolver::Impl {
     std::set<int> with_coffee, with_tv;  // sofas that have them
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);
-      const int weight = GroupMembership(state, kk).role == GroupRole::kSideTable ? 1 : 3;
-      n += weight * (!GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9));
       const Membership m = GroupMembership(state, kk);
+      const int weight = m.role == GroupRole::kSideTable ? 1 : 3;
+      n += weight * (!GroupProblem(kk).empty() || (seats && TableSeat(kk) && SeatBehind(kk) < kSeatBehind - 1e-9));
       if (m.role == GroupRole::kCoffeeTable) with_coffee.insert(m.hub);
       if (m.role == GroupRole::kTvStand) with_tv.insert(m.hub);
     }
@@ -974,14 +974,11 @@ struct RoomSolver::Impl {
     return pick;
   }
 
-  // The unprotected objects whose removal lets protected object i find a free slot: among the objects of
-  // i's layer (the room's floor for what stands on it, i's siblings for what stands on a parent), the least
-  // important first, then the biggest, what hangs on a wall after what stands (or the other way round). One
-  // removal when one does (the first ten tried, each on a copy of the state); else all of them at once and,
-  // when that frees a slot, each put back again, the most important first, while the slot stays free (a
-  // bedroom keeps its bed and loses the wardrobe and the desk in its way, not its lamps). Empty when even
-  // the emptied layer has no slot for i.
-  std::vector<int> MakeWayFor(int i) {
+  // The unprotected objects that may give way to object i (MakeWayFor, a table seating its chairs): of i's
+  // layer (the room's floor for what stands on it, i's siblings for what stands on a parent), not of i's
+  // own group (its members, its hub), nothing protected on them; the least important first, then the
+  // biggest, what hangs on a wall after what stands (or the other way round).
+  std::vector<int> GiveWayPool(int i) const {
     std::vector<int> pool;
     const int p = state.parent[i];
     for (size_t k = 0; k < state.objects.size(); ++k) {
@@ -1002,6 +999,16 @@ struct RoomSolver::Impl {
       if (A.priority != B.priority) return A.priority < B.priority;
       return Volume(A, state.placements[a].pose.scale) > Volume(B, state.placements[b].pose.scale);
     });
+    return pool;
+  }
+
+  // The unprotected objects whose removal lets protected object i find a free slot, of those that may give
+  // way to it (GiveWayPool, in its order). One removal when one does (the first ten tried, each on a copy of the state); else all of them at once and,
+  // when that frees a slot, each put back again, the most important first, while the slot stays free (a
+  // bedroom keeps its bed and loses the wardrobe and the desk in its way, not its lamps). Empty when even
+  // the emptied layer has no slot for i.
+  std::vector<int> MakeWayFor(int i) {
+    const std::vector<int> pool = GiveWayPool(i);
     const std::string id = state.objects[i].id;
     // Tried at its smallest scale (a king-size bed in a 2 m wide room): the shrink comes after the room is made.
     auto frees_at_smallest = [&](int j) {
@@ -1246,9 +1253,7 @@ struct RoomSolver::Impl {
   // functional check's measure, solver/functional.cpp).
   bool TableSeat(int j) const {
     const Membership m = GroupMembership(state, j);
-    if (m.role != GroupRole::kTableSeat) return false;
-    const std::string& table = state.objects[m.hub].category;
-    return table == "dining-table" || table == "conference-table";
+    return m.role == GroupRole::kTableSeat && TableHub(m.hub);
   }
   // The furniture stopping chair j's pull-out room (an index per blocked sample; -1 a wall or the stairs),
   // and the free depth behind it (m, capped at the rule's 0.75).
@@ -1644,22 +1649,9 @@ struct RoomSolver::Impl {
           changed = true;
           continue;
         }
-        std::vector<int> pool;
-        for (size_t k = 0; k < state.objects.size(); ++k) {
-          const int kk = static_cast<int>(k);
-          const std::vector<int> below = state.Descendants(kk);
-          if (kk == t || state.parent[k] >= 0 || IsProtected(state.objects[k].priority) || GroupMembership(state, kk).hub == t ||
-              state.Hung(kk) || state.IsFloorCovering(kk) ||
-              std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); }))
-            continue;
-          pool.push_back(kk);
-        }
-        std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) {
-          if (state.objects[a].priority != state.objects[b].priority) return state.objects[a].priority < state.objects[b].priority;
-          return Volume(state.objects[a], state.placements[a].pose.scale) > Volume(state.objects[b], state.placements[b].pose.scale);
-        });
         std::vector<std::string> ids;
-        for (size_t k = 0; k < pool.size() && k < 3; ++k) ids.push_back(state.objects[pool[k]].id);
+        for (int k : GiveWayPool(t))
+          if (ids.size() < 3 && !state.Hung(k) && !state.IsFloorCovering(k)) ids.push_back(state.objects[k].id);
         for (const std::string& id : ids) {
           const Mark before = Here();
           TakeRemoval(id, "in the way of a place where the chairs of " + table + " can be pulled out: left out");

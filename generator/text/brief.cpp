@@ -217,6 +217,15 @@ std::optional<int> Ordinal(const Token& t) {
   return std::nullopt;
 }
 
+// Children named as people ("three kids", "for each son"); `plural`: the plural forms only.
+bool IsChildWord(const Token& t, bool plural) {
+  static const std::unordered_set<std::string> singular = {"kid", "child", "son", "daughter", "boy", "girl", "teen",
+                                                           "teenager", "grandchild", "twin"};
+  if (t.punct) return false;
+  if (t.word == "children" || t.word == "grandchildren") return true;
+  return singular.count(t.stem) > 0 && (!plural || t.stem != t.word);
+}
+
 bool IsFloorNoun(const Token& t) {
   static const std::unordered_set<std::string> nouns = {"floor", "story", "storey", "level", "storied",
                                                         "storeyed", "stories", "storeys", "floors", "levels",
@@ -444,7 +453,7 @@ std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const Token& n = tokens[i];
     std::size_t j = i + 1;
-    const bool people = j < tokens.size() && In(tokens[j], {"kids", "children", "boys", "girls", "sons", "daughters", "teenagers", "teens"});
+    const bool people = j < tokens.size() && IsChildWord(tokens[j], /*plural=*/true);
     bool ok = !n.punct && Cardinal(n) && *Cardinal(n) >= 2 && people;
     if (ok) {
       ++j;
@@ -1783,13 +1792,9 @@ void Parser::Quantify(Mention& m) {
   if (m.counting && m.min == 1 && m.max == 1 && item.last + 2 < size && tokens_[item.last + 1].sentence == sentence) {
     int j = item.last + 1;
     if (tokens_[j].word == "for") ++j;
-    static const std::initializer_list<std::string_view> people = {"kid", "child", "son", "daughter", "boy", "girl", "teen",
-                                                                   "teenager", "grandchild", "twin"};
-    if (j + 1 < size && In(tokens_[j], {"each", "every", "per"}) && In(tokens_[j + 1], people)) {
+    if (j + 1 < size && In(tokens_[j], {"each", "every", "per"}) && IsChildWord(tokens_[j + 1], false)) {
       for (int q = m.first - 1; q >= 1; --q)
-        if ((In(tokens_[q], people) || In(tokens_[q], {"kids", "children", "sons", "daughters", "boys", "girls", "teens",
-                                                        "teenagers", "grandchildren", "twins"})) &&
-            Cardinal(tokens_[q - 1]) && *Cardinal(tokens_[q - 1]) >= 2 && tokens_[q].item < 0) {
+        if (IsChildWord(tokens_[q], false) && Cardinal(tokens_[q - 1]) && *Cardinal(tokens_[q - 1]) >= 2 && tokens_[q].item < 0) {
           m.min = m.max = *Cardinal(tokens_[q - 1]);
           Consume(q - 1, q);  // the people counted: no words left unread
           Consume(item.last + 1, j + 1);
