@@ -535,7 +535,7 @@ std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
     const Token& count = tokens[i];
     const std::optional<int> total = count.punct ? std::nullopt : Cardinal(count);
     std::vector<Token> noun;
-    std::size_t open = i + 1;
+    std::size_t open = i + 1, noun_start = out.size();  // noun_start: where a noun before the count begins in out
     if (total) {
       // The noun after the count: up to three words, then the brackets.
       while (open < tokens.size() && open <= i + 3 && !tokens[open].punct && !Cardinal(tokens[open]) &&
@@ -549,10 +549,10 @@ std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
           --start;
         std::size_t end = out.size();
         if (end > start && (out[end - 1].punct == ':' || out[end - 1].punct == '-')) --end;
-        if (end > start && end - start <= 3) noun.assign(out.begin() + static_cast<std::ptrdiff_t>(start), out.begin() + static_cast<std::ptrdiff_t>(end));
-        const auto floors = noun.empty() ? std::nullopt : floors_at(open, *total);
-        if (floors) out.resize(start);
-        else noun.clear();
+        if (end > start && end - start <= 3) {
+          noun.assign(out.begin() + static_cast<std::ptrdiff_t>(start), out.begin() + static_cast<std::ptrdiff_t>(end));
+          noun_start = start;
+        }
       } else {
         noun.assign(tokens.begin() + static_cast<std::ptrdiff_t>(i + 1), tokens.begin() + static_cast<std::ptrdiff_t>(open));
       }
@@ -562,6 +562,7 @@ std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
       out.push_back(count);
       continue;
     }
+    out.resize(noun_start);  // a noun before the count is written again below
     // Each token written spans the whole phrase, to the ')' (what a report quotes).
     const std::size_t begin = std::min(noun.front().begin, count.begin), finish = tokens[floors->second].end;
     auto put = [&](Token t) {
