@@ -69,6 +69,7 @@ std::vector<Token> Tokenise(std::string_view text) {
   std::vector<Token> tokens;
   std::size_t i = 0;
   int sentence = 0;
+  int depth = 0;  // brackets open
   bool pending_hyphen = false;
   auto is_apostrophe = [&](std::size_t at) -> int {  // byte length of an apostrophe at `at`, or 0
     if (at < text.size() && text[at] == '\'') return 1;
@@ -79,6 +80,31 @@ std::vector<Token> Tokenise(std::string_view text) {
   };
   while (i < text.size()) {
     unsigned char c = static_cast<unsigned char>(text[i]);
+    // "Lounge ×2": the multiplication sign is the letter x of "x2"; en and em dashes and bullets are
+    // the hyphen of a list ("Level 1 – office", "• Kitchen").
+    if (c == 0xC3 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x97) {
+      Token t;
+      t.begin = i;
+      t.end = i + 2;
+      t.word = t.stem = "x";
+      t.sentence = sentence;
+      tokens.push_back(std::move(t));
+      i += 2;
+      continue;
+    }
+    if (c == 0xE2 && i + 2 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x80 &&
+        (static_cast<unsigned char>(text[i + 2]) == 0x93 || static_cast<unsigned char>(text[i + 2]) == 0x94 ||
+         static_cast<unsigned char>(text[i + 2]) == 0xA2)) {
+      Token t;
+      t.begin = i;
+      t.end = i + 3;
+      t.punct = '-';
+      t.word = t.stem = "-";
+      t.sentence = sentence;
+      tokens.push_back(std::move(t));
+      i += 3;
+      continue;
+    }
     // A word starts at a letter, a digit or a UTF-8 lead byte (never inside a multi-byte character).
     if (IsWordByte(c) && !(c >= 0x80 && c < 0xC0) && !is_apostrophe(i)) {
       Token t;
@@ -167,7 +193,11 @@ std::vector<Token> Tokenise(std::string_view text) {
       continue;
     }
     pending_hyphen = false;
-    const bool ends_sentence = c == '.' || c == '!' || c == '?' || c == ';' || c == '\n';
+    // Inside brackets only a line break ends a sentence: "one bath (with a bathtub, not a shower!) upstairs".
+    if (c == '(') ++depth;
+    else if (c == ')' && depth > 0) --depth;
+    else if (c == '\n') depth = 0;
+    const bool ends_sentence = c == '\n' || (depth == 0 && (c == '.' || c == '!' || c == '?' || c == ';'));
     if (ends_sentence || c == ',' || c == ':' || c == '(' || c == ')' || c == '/' || c == '&' || c == '+' || c == '|' ||
         c == '-' || c == '*' || c == '=') {
       Token t;
@@ -333,7 +363,7 @@ bool IsAdjective(const Token& t) {
 bool IsNegation(const Token& t) {
   return In(t, {"no", "not", "without", "dont", "doesnt", "never", "zero", "nor", "neither", "cannot",
                 "wont", "none", "exclude", "excluding", "except", "skip", "omit", "cant", "shouldnt",
-                "wouldnt", "isnt", "arent", "didnt", "forget"});
+                "wouldnt", "isnt", "arent", "didnt", "forget", "scratch", "ditch", "cancel"});
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -454,23 +484,33 @@ std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
     const Token& n = tokens[i];
     std::size_t j = i + 1;
     const bool people = j < tokens.size() && IsChildWord(tokens[j], /*plural=*/true);
-    bool ok = !n.punct && Cardinal(n) && *Cardinal(n) >= 2 && people;
+    // "both kids get their own children's room": two, with or without "each".
+    const bool both = n.word == "both";
+    bool ok = !n.punct && (both || (Cardinal(n) && *Cardinal(n) >= 2)) && people;
+    std::size_t own = 0;  // the room noun after "their own"
     if (ok) {
       ++j;
       if (j < tokens.size() && tokens[j].word == "each") ++j;
-      else ok = false;
+      else ok = both;
       while (ok && j < tokens.size() && In(tokens[j], {"want", "wants", "need", "needs", "get", "gets", "have", "has", "should",
                                                        "will", "would", "like", "deserve", "must"}))
         ++j;
-      ok = ok && j + 2 < tokens.size() && tokens[j].word == "their" && tokens[j + 1].word == "own" &&
-           In(tokens[j + 2], {"room", "bedroom"});
+      own = j + 2;
+      if (own + 1 < tokens.size() && IsChildWord(tokens[own], false)) ++own;  // "their own children's room"
+      ok = ok && own < tokens.size() && tokens[j].word == "their" && tokens[j + 1].word == "own" &&
+           In(tokens[own], {"room", "bedroom"});
     }
     if (!ok) {
       out.push_back(n);
       continue;
     }
-    const std::size_t begin = n.begin, end = tokens[j + 2].end;
-    Token count = n, kids = tokens[i + 1], rooms = tokens[j + 2];
+    const std::size_t begin = n.begin, end = tokens[own].end;
+    Token count = n, kids = tokens[i + 1], rooms = tokens[own];
+    if (both) {
+      count.word = count.stem = "2";
+      count.number = true;
+      count.value = 2;
+    }
     count.begin = kids.begin = rooms.begin = begin;
     count.end = kids.end = rooms.end = end;
     kids.word = "kids";
@@ -480,7 +520,7 @@ std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
     out.push_back(count);
     out.push_back(kids);
     out.push_back(rooms);
-    i = j + 2;
+    i = own;
   }
   return out;
 }
@@ -593,10 +633,47 @@ std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
 // The tokens as the parser reads them: a count repeated in digits ("three (3) bedrooms") once; "half a
 // dozen" six, "a dozen" twelve; a misspelt room word of six letters or more one edit from exactly one
 // of the lexicon's one-word room names ("bedroms", "bathrom", "balcny") read as it.
+// Shorthand of listings and notes, written out: "3bd/2ba", "kit, din, fam rm", "2 balc", "dining tbl for
+// 8", "GF: ... 1F: ...", "Grnd = office, meeting rm".
+const std::unordered_map<std::string, std::vector<std::string>>& Shorthand() {
+  static const std::unordered_map<std::string, std::vector<std::string>> words = {
+      {"rm", {"room"}}, {"rms", {"rooms"}}, {"tbl", {"table"}}, {"grnd", {"ground"}}, {"gnd", {"ground"}},
+      {"sep", {"separate"}}, {"balc", {"balcony"}}, {"balcs", {"balconies"}}, {"bd", {"bedroom"}}, {"bds", {"bedrooms"}},
+      {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
+      {"din", {"dining"}}, {"fam", {"family"}}, {"liv", {"living"}}, {"lvg", {"living"}}, {"conf", {"conference"}},
+      {"mstr", {"master"}}, {"gf", {"ground", "floor"}}, {"ff", {"first", "floor"}}, {"sf", {"second", "floor"}}, {"1f", {"1st", "floor"}}, {"2f", {"2nd", "floor"}},
+      {"3f", {"3rd", "floor"}}, {"incl", {"including"}}, {"inc", {"including"}}};
+  return words;
+}
+
 std::vector<Token> Normalised(std::vector<Token> tokens) {
   std::vector<Token> out;
+  // The full stop of an abbreviation ends no sentence ("Bedrooms: 5 (incl. master)", "kitchen + sep. dining").
+  for (std::size_t i = 0; i + 1 < tokens.size(); ++i)
+    if (tokens[i + 1].punct == '.' && tokens[i + 1].begin == tokens[i].end &&
+        In(tokens[i], {"incl", "inc", "approx", "appx", "excl", "sq", "ft", "nr", "sep"})) {
+      for (std::size_t k = i + 2; k < tokens.size(); ++k) tokens[k].sentence -= 1;
+      tokens.erase(tokens.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    }
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const Token& t = tokens[i];
+    if (t.punct == '=') {  // "Grnd = office, ...": a heading
+      Token colon = t;
+      colon.punct = ':';
+      colon.word = colon.stem = ":";
+      out.push_back(colon);
+      continue;
+    }
+    if (auto it = Shorthand().find(t.word); it != Shorthand().end()) {
+      for (const std::string& w : it->second) {
+        Token full = t;
+        full.word = w;
+        full.stem = Singular(w);
+        if (w.size() == 3 && std::isdigit(static_cast<unsigned char>(w[0]))) full.ordinal = w[0] - '0';
+        out.push_back(full);
+      }
+      continue;
+    }
     if (t.punct == '(' && i + 2 < tokens.size() && tokens[i + 1].number && tokens[i + 2].punct == ')' && !out.empty() &&
         Cardinal(out.back()) && *Cardinal(out.back()) == tokens[i + 1].value) {
       i += 2;
@@ -636,7 +713,7 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
   }();
   for (Token& t : out) {
     // (Words of their own are no misspellings: "double" beside the plural "doubles", "single".)
-    if (t.punct || t.number || t.word.size() < 6 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
+    if (t.punct || t.number || t.word.size() < 5 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
         Cardinal(t) || IsAdjective(t) || IsFiller(t))
       continue;
     // One category among the names it is one edit from (it may be near two spellings of one room:
@@ -841,6 +918,7 @@ class Parser {
   void Spread();
   void Distribute();
   void UsedAs();
+  void Corrections();
   bool ElidedFloor(std::size_t i) const;
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
@@ -1258,6 +1336,12 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
       !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
     return 0;
+  // "Upstairs for living: ...", "the first floor is for living": what a floor is for, not a room.
+  if (best == 1 && t.word == "living" && i > 0 && tokens_[i - 1].word == "for" &&
+      (i + 1 == tokens_.size() || tokens_[i + 1].punct)) {
+    tokens_[i].consumed = true;
+    return 0;
+  }
   // "a Victorian-style terrace", "an end terrace": the house, not a balcony (understood, asking nothing).
   if (t.word == "terrace" && i > 0 && In(tokens_[i - 1], {"style", "victorian", "georgian", "edwardian", "end", "mid", "period"})) {
     tokens_[i].consumed = true;
@@ -1431,7 +1515,10 @@ void Parser::MatchAll() {
       ground = true;
     if (Ordinal(tokens_[i]) == 1 && (IsFloorNoun(tokens_[i + 1]) || ElidedFloor(i))) {
       // "1st floor (ground level)": the first floor is the ground floor (American).
-      if (i + 3 < tokens_.size() && tokens_[i + 2].punct == '(' && In(tokens_[i + 3], {"ground", "street", "entry", "entrance"})) {
+      // ("1st floor (that's ground level)", "(i.e. street level)": a few words may come first.)
+      std::size_t g = i + 3;
+      while (g < tokens_.size() && g < i + 6 && In(tokens_[g], {"thats", "that", "is", "ie", "i", "e", ".", "the", "at", "on"})) ++g;
+      if (i + 3 < tokens_.size() && tokens_[i + 2].punct == '(' && g < tokens_.size() && In(tokens_[g], {"ground", "street", "entry", "entrance"})) {
         glossed_ground = true;
         continue;
       }
@@ -1768,6 +1855,30 @@ void Parser::Quantify(Mention& m) {
         part.reset();
       }
     }
+    // "two bedrooms (ours plus a guest room)", "Bedrooms: 5 (incl. master)", "the four bedrooms (well,
+    // strictly three bedrooms and a nursery)": rooms named further into brackets that open right after a
+    // count are parts of it ("(plus a study)" adds one).
+    if (!part && (m.counting || !determined)) {  // (a bare "master" too)
+      int b = m.first - 1;
+      while (b >= 0 && tokens_[b].sentence == sentence && tokens_[b].punct != '(' && tokens_[b].punct != ')') --b;
+      const bool more = b + 1 < size && (tokens_[b + 1].punct == '+' ||
+                                         In(tokens_[b + 1], {"plus", "and", "also", "extra", "with", "another", "additional", "as"}));
+      if (b >= 1 && b + 1 < m.first && tokens_[b].punct == '(' && tokens_[b].sentence == sentence && !more) {
+        for (Mention& p : mentions_) {
+          if (p.last != b - 1 || !p.counting) continue;
+          if (p.category == item.category && p.min >= m.min) {
+            m.counting = false;
+            m.definite = true;
+            determined = true;
+          } else if (p.category == Category::kBedroom && item.category == Category::kChildrenRoom && p.min > m.min && p.max == p.min) {
+            p.min -= m.min;
+            p.max -= m.min;
+            determined = true;
+          }
+          break;
+        }
+      }
+    }
     if (part && *part > 0) {
       for (auto it = mentions_.rbegin(); it != mentions_.rend() && tokens_[it->first].sentence == sentence; ++it) {
         const bool same = it->category == item.category;
@@ -1928,6 +2039,16 @@ bool IsBridge(const Token& t) {
 void Parser::PlaceLevels() {
   int sentence_count = tokens_.empty() ? 0 : tokens_.back().sentence + 1;
   int carried_scope = -1;
+  // A heading line ("Ground floor:" with its rooms on the lines below it) scopes those lines, up to a
+  // blank line or the next floor.
+  int heading_scope = -1;
+  std::vector<bool> inside(tokens_.size(), false);  // within brackets: an aside on the room before them
+  for (std::size_t k = 0, depth = 0; k < tokens_.size(); ++k) {
+    if (tokens_[k].punct == ')' && depth > 0) --depth;
+    inside[k] = depth > 0;
+    if (tokens_[k].punct == '(') ++depth;
+    if (k + 1 < tokens_.size() && tokens_[k + 1].sentence != tokens_[k].sentence && tokens_[k].punct == '\n') depth = 0;
+  }
   std::size_t item_index = 0;
   for (int s = 0; s < sentence_count; ++s) {
     std::vector<int> sentence_items;
@@ -1946,7 +2067,15 @@ void Parser::PlaceLevels() {
         In(tokens_[first_word + 1], {"has", "also", "contains", "holds", "features", "includes", "offers", "houses", "gets"})) {
       scope = carried_scope;
     }
+    bool own_floor = false, rooms = false;
+    for (int it : sentence_items) {
+      own_floor = own_floor || items_[it].kind == ItemKind::kFloorRef;
+      rooms = rooms || items_[it].kind == ItemKind::kRoom;
+    }
+    if (first_word < 0) heading_scope = -1;
+    else if (scope < 0 && !own_floor) scope = heading_scope;
     std::vector<int> pending;  // mention indices without a level since the last floor ref
+    bool placed_before = false;  // a trailing floor phrase placed rooms earlier in the sentence
     int last_mention_end = -1;
     for (std::size_t n = 0; n < sentence_items.size(); ++n) {
       int it = sentence_items[n];
@@ -1964,11 +2093,12 @@ void Parser::PlaceLevels() {
         if (!pending.empty() && last_mention_end >= 0) {
           attached = true;
           for (int k = last_mention_end + 1; k < item.first; ++k)
-            if (!IsBridge(tokens_[k]) && !tokens_[k].punct) attached = false;
+            if (inside[k] || tokens_[k].punct == ')' || tokens_[k].punct == '(') continue;
+            else if (!IsBridge(tokens_[k]) && !tokens_[k].punct) attached = false;
             else if (tokens_[k].punct && tokens_[k].punct != ',') attached = false;
           // a comma between the room and the floor: "a kitchen, upstairs two bedrooms"
           for (int k = last_mention_end + 1; k < item.first; ++k)
-            if (tokens_[k].punct == ',') attached = false;
+            if (tokens_[k].punct == ',' && !inside[k]) attached = false;
         }
         bool room_follows = false;
         for (std::size_t m2 = n + 1; m2 < sentence_items.size(); ++m2) {
@@ -2002,7 +2132,9 @@ void Parser::PlaceLevels() {
             if (In(tokens_[k], {"all", "both"})) all = true;
             else if (!In(tokens_[k], {"on", "the", "are", "is", "of", "them"})) break;
           }
-          if (all) from = 0;
+          // "one bedroom upstairs, and a kitchen, a living room and a study downstairs": after a floor
+          // phrase of its own sentence, a second one takes the whole list since.
+          if (all || placed_before) from = 0;
           // The "and" that ends a comma list joins its last room to the list, not to the floor: "a living
           // room, a kitchen, a dining room and two bedrooms upstairs" puts only the bedrooms upstairs.
           if (!all && from > 0 && from + 1 < pending.size()) {
@@ -2012,6 +2144,10 @@ void Parser::PlaceLevels() {
           }
           for (std::size_t k = from; k < pending.size(); ++k) mentions_[pending[k]].ref = it;
           pending.clear();
+          // (Only a contrast: "... upstairs, and ...".)
+          int after = item.last + 1;
+          if (after < static_cast<int>(tokens_.size()) && tokens_[after].punct == ',') ++after;
+          placed_before = after < static_cast<int>(tokens_.size()) && tokens_[after].word == "and";
           // A trailing phrase at the very start of a list still scopes what follows a colon.
         } else {
           scope = it;
@@ -2024,14 +2160,16 @@ void Parser::PlaceLevels() {
         Mention& m = mentions_[mi];
         if (m.bound_ref >= 0) m.ref = m.bound_ref;
         else if (scope >= 0) m.ref = scope;
+        else if (inside[m.first] && !pending.empty()) continue;  // an aside: "one bath (not a shower!) upstairs"
         else pending.push_back(mi);
         last_mention_end = m.last;
       } else if (item.kind == ItemKind::kPanoramic || item.kind == ItemKind::kFurniture ||
                  item.kind == ItemKind::kSide) {
         // keep `last_mention_end` on the room: "balconies with panoramic windows on the top floor"
-        if (!pending.empty()) last_mention_end = item.last;
+        if (!pending.empty() && !inside[item.first]) last_mention_end = item.last;
       }
     }
+    if (own_floor) heading_scope = !rooms && scope >= 0 ? scope : -1;
     // Attachments without a room take the sentence's scope (resolved in Attach()).
     sentence_scope_.push_back(scope);
     carried_scope = scope;
@@ -2872,7 +3010,7 @@ void Parser::UsedAs() {
     Mention& room = mentions_[k];
     Mention& as = mentions_[k + 1];
     if (!room.counting || room.max != 1 || room.min != 1 || !as.counting || as.min != 1 || as.max != 1 ||
-        tokens_[room.last].sentence != tokens_[as.first].sentence || room.category == as.category)
+        tokens_[room.last].sentence != tokens_[as.first].sentence)
       continue;
     bool use = false, as_word = false, filler = true;
     for (int j = room.last + 1; j < as.first && filler; ++j) {
@@ -2880,16 +3018,85 @@ void Parser::UsedAs() {
       if (In(t, {"use", "used", "using"})) use = true;
       else if (t.word == "as") as_word = use;
       else if (!In(t, {"that", "which", "i", "we", "you", "can", "could", "will", "would", "ll", "d", "to", "be", "also",
-                       "maybe", "might", "then", "as", "a", "an"}))
+                       "maybe", "might", "then", "as", "a", "an", "(", "wed", "well", "id", "ill", "youd", "theyd", "shall"}))
         filler = false;
     }
     if (!filler || !use || !as_word) continue;
+    // "a second living room we'd use as a den", "studio (used as office)": one room either way.
     room.category = as.category;
     items_[room.item].category = as.category;
     as.counting = false;
     as.definite = true;
     Consume(room.last + 1, as.first - 1);
   }
+}
+
+// Second thoughts: "Two bedrooms. Actually, make that three bedrooms", "four bedrooms... actually make it
+// three", "make that two children's rooms and two bedrooms": the later count replaces the earlier one (which
+// keeps nothing but its floor, when the new one names none).
+void Parser::Corrections() {
+  const int size = static_cast<int>(tokens_.size());
+  // Where "make that", "make it", "change that to" ends, for each such phrase.
+  std::vector<int> cues;
+  for (int i = 0; i + 1 < size; ++i)
+    if (In(tokens_[i], {"make", "change"}) && In(tokens_[i + 1], {"that", "it", "them", "this"})) {
+      int end = i + 1;
+      if (end + 1 < size && tokens_[end + 1].word == "to") ++end;
+      cues.push_back(end);
+    }
+  for (int cue : cues) {
+    // "make it three": a bare count for the rooms named last before the cue.
+    if (const int n = cue + 1; n < size && tokens_[n].item < 0 && Cardinal(tokens_[n]) &&
+                               (n + 1 == size || tokens_[n + 1].punct || tokens_[n + 1].item < 0)) {
+      Mention* last = nullptr;
+      for (Mention& p : mentions_)
+        if (p.last < cue && p.counting) last = &p;
+      if (!last) continue;
+      last->min = last->max = *Cardinal(tokens_[n]);
+      Consume(cue - 1 - (tokens_[cue].word == "to"), n);
+      continue;
+    }
+    // The mentions of the correction: those in its sentence after the cue.
+    std::vector<int> fresh;
+    for (int k = 0; k < static_cast<int>(mentions_.size()); ++k) {
+      const Mention& m = mentions_[k];
+      if (m.first > cue && tokens_[m.first].sentence == tokens_[cue].sentence && m.counting) fresh.push_back(k);
+    }
+    auto earlier = [&](Category c, int before) -> Mention* {
+      Mention* found = nullptr;
+      for (Mention& p : mentions_)
+        if (p.last < before && p.counting && p.category == c && p.max != 0) found = &p;
+      return found;
+    };
+    bool any = false;
+    for (int k : fresh) {
+      Mention& m = mentions_[k];
+      Mention* old = earlier(m.category, cue);
+      if (!old) continue;
+      old->counting = false;
+      old->definite = true;
+      if (m.ref < 0) m.ref = old->ref;
+      any = true;
+    }
+    if (any) Consume(cue - 1 - (tokens_[cue].word == "to"), cue);
+  }
+  // "No, scratch the meeting room", "forget the balcony": a room named before, taken back.
+  for (Mention& m : mentions_) {
+    if (!m.counting || m.max != 0) continue;
+    bool the = false, taken_back = false;
+    for (int k = m.first; k >= 0 && k >= m.first - 3; --k) {
+      the = the || tokens_[k].word == "the";
+      taken_back = taken_back || In(tokens_[k], {"scratch", "forget", "ditch", "cancel", "drop", "skip", "lose"});
+    }
+    if (!the || !taken_back) continue;
+    for (Mention& p : mentions_)
+      if (&p != &m && p.last < m.first && p.counting && p.category == m.category && p.max > 0) p.min = p.max = 0;
+  }
+  // "actually", "wait", "sorry" before a correction are read with it.
+  for (int i = 0; i < size; ++i)
+    if (In(tokens_[i], {"actually", "wait", "sorry", "scratch", "correction"}) && i + 1 < size &&
+        (tokens_[i + 1].consumed || tokens_[i + 1].punct) && !cues.empty())
+      tokens_[i].consumed = true;
 }
 
 Brief Parser::Run() {
@@ -2910,6 +3117,7 @@ Brief Parser::Run() {
   UsedAs();
   Spread();
   PlaceLevels();
+  Corrections();
   Distribute();
   Connect();
   Attach();

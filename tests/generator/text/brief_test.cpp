@@ -781,4 +781,78 @@ TEST_CASE("'one bathroom for every two bedrooms' is a ratio, in the brief and in
   CHECK(plan.outcome == PlanOutcome::kMet);
 }
 
+// The third unseen set (issue 32): listing shorthand, second thoughts, asides in brackets, heading lines.
+TEST_CASE("listing shorthand is written out: '3bd/2ba', 'kit, din, fam rm', '2 balc', 'GF: ... 1F: ...'", "[issue32]") {
+  const Brief b = ParseBrief("2 flrs, 3bd/2ba, kit, din, fam rm, 2 balc, meeting rm. Dining tbl for 8.");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom) == 3);
+  CHECK(Exact(b, Category::kBathroom) == 2);
+  CHECK(Exact(b, Category::kKitchen) == 1);
+  CHECK(Exact(b, Category::kDiningRoom) == 1);  // the table is furniture, not a second dining room
+  CHECK(Exact(b, Category::kLivingRoom) == 1);
+  CHECK(Exact(b, Category::kBalcony) == 2);
+  CHECK(Exact(b, Category::kMeetingRoom) == 1);
+  const Brief f = ParseBrief("Octagon plan, 2 flrs. GF: kitchen, lounge, WC. 1F: 3 bed, 1 bath, balcony.");
+  INFO(BriefToJson(f).dump(1));
+  CHECK(Exact(f, Category::kKitchen, 0) == 1);
+  CHECK(Exact(f, Category::kBedroom, 1) == 3);
+  CHECK(Exact(f, Category::kBalcony, 1) == 1);
+  const Brief e = ParseBrief("Storeys: 2\nLevel 0 (ground) \xE2\x80\x93 kitchen, lounge \xC3\x97" "2\nLevel 1 \xE2\x80\x93 bedroom \xC3\x97" "2, bathroom");
+  INFO(BriefToJson(e).dump(1));
+  CHECK(Exact(e, Category::kLivingRoom, 0) == 2);
+  CHECK(Exact(e, Category::kBedroom, 1) == 2);
+  CHECK(e.unparsed.empty());
+}
+
+TEST_CASE("second thoughts replace what they correct: 'actually, make that three', 'scratch the meeting room'", "[issue32]") {
+  CHECK(Exact(ParseBrief("Kitchen, lounge, two bedrooms, one bathroom. Actually, make that three bedrooms."), Category::kBedroom) == 3);
+  const Brief it = ParseBrief("I'd like four bedrooms... actually make it three, plus a nursery. Two bathrooms.");
+  INFO(BriefToJson(it).dump(1));
+  CHECK(Exact(it, Category::kBedroom) == 3);
+  CHECK(Exact(it, Category::kChildrenRoom) == 1);
+  CHECK(it.unparsed.empty());
+  const Brief scratch = ParseBrief("Three storeys. Second floor: office and meeting room. No, scratch the meeting room, just the office.");
+  INFO(BriefToJson(scratch).dump(1));
+  for (const BriefRooms& r : scratch.rooms)
+    if (r.category == Category::kMeetingRoom) {
+      CHECK(r.max == 0);
+    }
+  CHECK(scratch.conflicts.empty());
+}
+
+TEST_CASE("rooms in brackets after a count are parts of it, unless the brackets add one", "[issue32]") {
+  CHECK(Exact(ParseBrief("a kitchen and two bedrooms (ours plus a guest room)"), Category::kBedroom) == 2);
+  CHECK(Exact(ParseBrief("Bedrooms: 5 (incl. master)\nBathrooms: 2"), Category::kBedroom) == 5);
+  const Brief kids = ParseBrief("Upstairs the four bedrooms (well, strictly three bedrooms and a nursery for the baby) and a bathroom.");
+  INFO(BriefToJson(kids).dump(1));
+  CHECK(Exact(kids, Category::kBedroom, 1) == 3);
+  CHECK(Exact(kids, Category::kChildrenRoom, 1) == 1);
+  CHECK(Exact(ParseBrief("two bedrooms (plus a guest room)"), Category::kBedroom) != 2);
+  // "used as": one room of the kind it is used as.
+  CHECK(Exact(ParseBrief("a kitchen, a living room, and a second living room we'd use as a den"), Category::kLivingRoom) == 2);
+  const Brief studio = ParseBrief("Rooms: studio (used as office), bedroom, shower room");
+  CHECK(Exact(studio, Category::kOffice) == 1);
+}
+
+TEST_CASE("floors: heading lines scope the lines under them, asides in brackets keep a trailing floor phrase", "[issue32]") {
+  const Brief spec = ParseBrief("Floors: 2\nGround floor:\n- Living room (sofa, TV)\n- Kitchen\n- WC\nFirst floor:\n- Bedroom x3\n- Bathroom x2");
+  INFO(BriefToJson(spec).dump(1));
+  CHECK(Exact(spec, Category::kBathroom, 0) == 1);
+  CHECK(Exact(spec, Category::kBedroom, 1) == 3);
+  CHECK(Exact(spec, Category::kBathroom, 1) == 2);
+  const Brief aside = ParseBrief(
+      "just one bedroom and one bath (with a bathtub, not a shower!) upstairs, and a kitchen, livng room and a study downstairs. two floors.");
+  INFO(BriefToJson(aside).dump(1));
+  CHECK(Exact(aside, Category::kBedroom, 1) == 1);
+  CHECK(Exact(aside, Category::kBathroom, 1) == 1);
+  CHECK(Exact(aside, Category::kKitchen, 0) == 1);
+  CHECK(Exact(aside, Category::kLivingRoom, 0) == 1);
+  CHECK(Exact(aside, Category::kOffice, 0) == 1);
+  // "Upstairs for living:" says what a floor is for; "both kids get their own children's room" is two.
+  const Brief live = ParseBrief("Two floors. Upstairs for living: two bedrooms, a kitchen and a lounge. Both kids get their own children's room.");
+  INFO(BriefToJson(live).dump(1));
+  CHECK(Exact(live, Category::kLivingRoom, 1) == 1);
+  CHECK(Exact(live, Category::kChildrenRoom) == 2);
+}
+
 }  // namespace villa

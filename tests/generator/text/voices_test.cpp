@@ -25,9 +25,7 @@ const std::map<std::string, std::string>& KnownGaps() {
   static const std::map<std::string, std::string> gaps = {
       {"voices-012", "'1st - ... 2nd -' without 'floor' does not pin floors"},
       {"voices-037", "a correction ('scrap what I said') is not read as replacing the earlier floors"},
-      {"voices-038", "'the first floor is for living:' (a heading) not read as a scope"},
       {"voices-040", "'a bedroom with an en-suite, so that's three bedrooms and three en-suites' counted twice"},
-      {"voices-045", "a floor phrase after a list pins only its last pair"},
       {"voices-091", "'the second floor is bedrooms, three of them'"},
       {"voices-124", "'Bathrooms: 2, one on each floor' read as two on each floor"},
       {"voices-136", "'two bedrooms on each of the upper floors, each pair sharing a bathroom'"},
@@ -46,6 +44,17 @@ const std::map<std::string, std::string>& KnownGaps() {
       // issue 32 (ten of them first cut to the six rooms a floor FORMAT.md allows); first reading 90.8 % of
       // their requirements and 1 false "met"; after the fixes of that stop 99.5 %, 0.
       {"voices-299", "12 rooms on 2 floors: the planner finds no layout with the office and the balcony"},
+      // 319-357: the third unseen set (a helper that saw nothing of the project wrote 48; the 39 within
+      // FORMAT.md's floors and rooms a floor are here, storage rooms left out of the counts, a star read as
+      // the cross class); first reading 84.0 % of their requirements and 4 false "met"; after the fixes of
+      // that stop 95.2 %, 1.
+      {"voices-323", "'Home+office, 2 flrs' (the building's kind) read as an office of its own"},
+      {"voices-326", "a correction inside an email ('four bedrooms... wait, actually ... make that two children's rooms'): floors lost"},
+      {"voices-330", "'a box room for storage' read as a bedroom"},
+      {"voices-334", "'two-up two-down: lounge and kitchen on the ground floor, two bedrooms on the first floor'"},
+      {"voices-341", "spec 'Levels: ground + 1 upper'; 'master bed' as a bedroom"},
+      {"voices-343", "bulleted spec with '×1' counts after each noun of a comma list"},
+      {"voices-344", "'the two upper floors each have two bedrooms'"},
   };
   return gaps;
 }
@@ -53,7 +62,7 @@ const std::map<std::string, std::string>& KnownGaps() {
 // Known gaps whose report still says "met" (the count check does not catch them: it reads the most a kind
 // is named, never a sum).
 const std::set<std::string>& KnownFalseMet() {
-  static const std::set<std::string> ids = {};
+  static const std::set<std::string> ids = {"voices-323"};
   return ids;
 }
 
