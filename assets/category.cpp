@@ -44,6 +44,7 @@ std::vector<CategoryInfo> MakeTable() {
       {"wardrobe", {"closet", "armoire", "clothes cabinet"}, P::kFloor, {0.9, 0.55, 1.8}, {2.0, 0.65, 2.3}, kAll, true, true, Front(0.8), true, "wardrobe"},
       {"dresser", {"chest of drawers", "drawers cabinet", "drawer chest", "commode", "dressing table", "changing table"}, P::kFloor, {0.7, 0.4, 0.75}, {1.4, 0.55, 1.1}, kAll, true, true, Front(0.5), true, "dresser"},
       {"nightstand", {"bedside table", "night table", "bedside cabinet"}, P::kFloor, {0.4, 0.35, 0.45}, {0.6, 0.45, 0.65}, kAll, true, true, Front(0.3), true, "nightstand"},
+      {"piano", {"upright piano", "grand piano", "digital piano", "pianoforte"}, P::kFloor, {1.3, 0.5, 1.05}, {1.6, 0.7, 1.35}, kAll, true, false, Front(0.9), true, "piano"},
       {"tv-stand", {"television cabinet", "tv cabinet", "media console", "tv unit", "tv bench"}, P::kFloor, {1.2, 0.38, 0.4}, {2.0, 0.5, 0.6}, kAll, true, true, Front(0.5), true, "tv-stand"},
       {"sideboard", {"buffet", "credenza", "low cabinet"}, P::kFloor, {1.2, 0.4, 0.7}, {2.0, 0.5, 0.9}, kAll, true, true, Front(0.8), true, "cabinet"},
       {"glass-cabinet", {"glass door cabinet", "display cabinet", "vitrine", "china cabinet"}, P::kFloor, {0.8, 0.38, 1.6}, {1.2, 0.5, 2.0}, kAll, true, true, Front(0.8), true, "glass-cabinet"},

@@ -56,7 +56,15 @@ struct RoomWord {
 
 // Enough room names to bind furniture to rooms (the generator's brief parser has the full lexicon for
 // layouts; scene/ sits below it and keeps its own short list).
-constexpr std::array<RoomWord, 38> kRoomWords = {{
+constexpr std::array<RoomWord, 51> kRoomWords = {{
+    {"master bed", Category::kBedroom},         {"guest bed", Category::kBedroom},
+    // Rooms whose names are also fixtures' ("a WC", "a downstairs loo", "a half bath"): rooms, not wishes.
+    {"wc", Category::kBathroom},                {"loo", Category::kBathroom},
+    {"powder room", Category::kBathroom},       {"cloakroom", Category::kBathroom},
+    {"en suite", Category::kBathroom},          {"ensuite", Category::kBathroom},
+    {"half bath", Category::kBathroom},         {"full bath", Category::kBathroom},
+    {"den", Category::kLivingRoom},             {"great room", Category::kLivingRoom},
+    {"study room", Category::kOffice},
     {"living room", Category::kLivingRoom},     {"lounge", Category::kLivingRoom},
     {"sitting room", Category::kLivingRoom},    {"family room", Category::kLivingRoom},
     {"living area", Category::kLivingRoom},     {"bedroom", Category::kBedroom},
@@ -98,6 +106,29 @@ struct Mention {
   Category room_category = Category::kRoom;
 };
 
+std::optional<int> NumberWord(const std::string& w);
+
+// Fixtures that belong to one kind of room: a bed to a bedroom, a toilet to a bathroom, a cooker to a kitchen.
+bool FitsRoom(std::string_view category, Category room) {
+  auto is = [&](std::initializer_list<std::string_view> names) { return std::find(names.begin(), names.end(), category) != names.end(); };
+  if (is({"bed", "child-bed"})) return room == Category::kBedroom || room == Category::kChildrenRoom;
+  if (is({"toilet", "bathtub", "shower", "washbasin", "towel-rack"})) return room == Category::kBathroom;
+  if (is({"cooker", "counter", "range-hood", "dishwasher", "island"})) return room == Category::kKitchen;
+  return true;
+}
+
+// "3 bed, 1 bath", "a four-bed house": a count of rooms, the singular after a number (two beds are
+// "2 beds"; "1 bath" in digits is a bathroom too).
+// "One" counts rooms too right after another room: "one bedroom and one bath".
+std::optional<Category> RoomCount(const std::vector<Token>& tokens, size_t i, const std::string& phrase, bool after_room) {
+  if ((phrase != "bed" && phrase != "bath") || i == 0 || tokens[i - 1].sentence != tokens[i].sentence) return std::nullopt;
+  const std::string& before = tokens[i - 1].word;
+  const std::optional<int> n = NumberWord(before);
+  const bool digits = !before.empty() && std::isdigit(static_cast<unsigned char>(before[0]));
+  if (!n || (*n < 2 && !digits && !after_room)) return std::nullopt;
+  return phrase == "bed" ? Category::kBedroom : Category::kBathroom;
+}
+
 // Longest match first (3, 2, 1 words): "study desk" is a desk, "study" alone an office.
 std::vector<Mention> FindMentions(const std::vector<Token>& tokens) {
   std::vector<Mention> out;
@@ -107,7 +138,9 @@ std::vector<Mention> FindMentions(const std::vector<Token>& tokens) {
     for (size_t n = std::min<size_t>(3, tokens.size() - i); n >= 1 && !found; --n) {
       if (tokens[i + n - 1].sentence != tokens[i].sentence) continue;
       std::string phrase = Join(tokens, i, i + n);
-      if (auto room = RoomOf(phrase)) {
+      const bool after_room = !out.empty() && out.back().room && out.back().end + 2 >= i &&
+                              tokens[out.back().begin].sentence == tokens[i].sentence;
+      if (auto room = RoomOf(phrase); room || (n == 1 && (room = RoomCount(tokens, i, phrase, after_room)))) {
         out.push_back({true, i, i + n, nullptr, *room});
         found = true;
       } else if (n > 1 || std::find(kAmbiguous.begin(), kAmbiguous.end(), phrase) == kAmbiguous.end()) {
@@ -326,6 +359,7 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
   // The room each object mention belongs to, and whether that mention named one room of several.
   std::vector<std::optional<Category>> bound(mentions.size());
   std::vector<bool> bound_one(mentions.size(), false);
+  std::vector<bool> named(mentions.size(), false);  // bound by "in / for the <room>" after it
   std::optional<Category> carried;  // the room the text last spoke of, across sentences
   bool carried_one = false;
   for (size_t k = 0; k < mentions.size(); ++k) {
@@ -352,6 +386,7 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) {
         bound[k] = mentions[j].room_category;
         bound_one[k] = names_one(mentions[j]);
+        named[k] = true;
       }
       break;
     }
@@ -368,6 +403,12 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     if (!bound[k]) {
       bound[k] = carried;
       bound_one[k] = carried_one;
+    }
+    // A fixture of another kind of room is not carried into one by nearness alone: a bed named on a line
+    // after "... guest WC" is no bathroom's ("a bed in the lounge" still is the lounge's).
+    if (bound[k] && !named[k] && !FitsRoom(m.category->name, *bound[k])) {
+      bound[k].reset();
+      continue;
     }
     // Named before any room: the text is meant for the room being planned.
     if (!bound[k]) bound[k] = room;

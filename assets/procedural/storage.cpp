@@ -392,6 +392,38 @@ GeneratorDef TvStand() {
           }};
 }
 
+GeneratorDef Piano() {
+  return {.name = "piano",
+          .description = "upright piano: a tall case at the back, cheeks at both ends carrying the keybed, white keys "
+                         "and black keys in octaves, a pedal bar; its lid a top surface",
+          .categories = {"piano"},
+          .build =
+              [](Gen& g) {
+                const int body = g.out.Part(g.style == "modern" ? ScreenBlack() : g.rng.Pick(g.palette.wood));
+                const int ivory = g.out.Part(Porcelain()), ebony = g.out.Part(ScreenBlack());
+                const int brass = g.out.Part(g.rng.Pick(g.palette.metal));
+                const double x0 = -g.w / 2, x1 = g.w / 2, y0 = -g.d / 2, y1 = g.d / 2;
+                const double case_front = y1 - std::clamp(0.55 * g.d, 0.25, 0.4), cheek = std::min(0.06, g.w / 20);
+                const double keys = std::min(0.72, g.h * 0.6), reach = std::min(0.16, case_front - y0 - 0.02);
+                g.out.Box(body, {x0, case_front, 0}, {x1, y1, g.h});  // the case with the strings
+                g.out.Box(body, {x0, y0, 0}, {x0 + cheek, case_front, keys + 0.04});  // cheeks to the floor
+                g.out.Box(body, {x1 - cheek, y0, 0}, {x1, case_front, keys + 0.04});
+                g.out.Box(body, {x0 + cheek, y0 + 0.02, keys - 0.1}, {x1 - cheek, case_front, keys - 0.02});  // keybed
+                g.out.Box(ivory, {x0 + cheek, y0 + 0.02, keys - 0.02}, {x1 - cheek, y0 + 0.02 + reach, keys});
+                g.out.Box(body, {x0 + cheek, y0 + 0.02 + reach, keys - 0.02}, {x1 - cheek, case_front, keys + 0.06});  // fallboard
+                // Black keys: 2 then 3 in each octave of 7 white keys (a white key 23.5 mm of the keyboard).
+                const double white = (x1 - x0 - 2 * cheek) / std::max(1.0, std::floor((x1 - x0 - 2 * cheek) / 0.0235));
+                int k = 0;
+                for (double x = x0 + cheek + white; x + white / 3 < x1 - cheek; x += white, ++k) {
+                  const int in_octave = k % 7;
+                  if (in_octave == 2 || in_octave == 6) continue;  // no black key between E-F and B-C
+                  g.out.Box(ebony, {x - white * 0.3, y0 + 0.02 + reach * 0.4, keys}, {x + white * 0.3, y0 + 0.02 + reach, keys + 0.012});
+                }
+                g.out.Box(brass, {-0.12, case_front - 0.08, 0.04}, {0.12, case_front, 0.07});  // pedals
+                g.TopSurface(g.h, x0, case_front, x1, y1);
+              }};
+}
+
 GeneratorDef Desk() {
   return {.name = "desk",
           .description =
@@ -448,7 +480,7 @@ GeneratorDef Desk() {
 
 std::vector<GeneratorDef> StorageGenerators() {
   return {Bookcase(),  GlassCabinet(), Cabinet(), Chest(),      Counter(), WallCabinet(),
-          WallShelf(), Wardrobe(),     Dresser(), Nightstand(), TvStand(), Desk()};
+          WallShelf(), Wardrobe(),     Dresser(), Nightstand(), TvStand(), Desk(), Piano()};
 }
 
 }  // namespace villa::procedural

@@ -425,7 +425,7 @@ const std::vector<RoomWord>& RoomLexicon() {
                       "parents bedroom", "parent room", "parents room", "double bedroom", "spare bedroom",
                       "spare room", "master", "principal bedroom", "adult bedroom", "sleeping area", "box room",
                       "twin room", "twin bedroom", "primary suite", "guest suite", "double room", "bedrm", "bdrm",
-                      "br", "doubles"});  // "two doubles and a box room" (the plural only: a "double" is a bed)
+                      "br", "doubles", "master bed"});  // "two doubles and a box room" (the plural only: a "double" is a bed)
     add(C::kKitchen, {"kitchen", "kitchenette", "cooking area", "galley kitchen", "cookhouse", "kitchen diner",
                       "eat in kitchen", "kitchen breakfast room", "kitchen breakfast area", "kitchen breakfast"});
     add(C::kKitchen, {"open plan kitchen", "open kitchen", "openplan kitchen"}, false, true);
@@ -1158,6 +1158,13 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
         return static_cast<int>(f - i) + 1;
       }
     }
+  }
+  // "the two upper floors": the highest two together ("... each have" reads them one by one).
+  if (Cardinal(t) && *Cardinal(t) >= 2 && !t.punct && i + 2 < tokens_.size() && In(tokens_[i + 1], {"upper", "higher"}) &&
+      floor_at(i + 2) && IsFloorNoun(tokens_[i + 2]) && tokens_[i + 2].stem != tokens_[i + 2].word) {
+    item.ref = RefType::kUpper;
+    item.n = *Cardinal(t);
+    return 3;
   }
   // "the upper two floors", "the top 2 levels": the highest n floors together.
   if (In(t, {"upper", "higher", "top", "uppermost", "topmost"}) && i + 1 < tokens_.size() && Cardinal(tokens_[i + 1]) &&
@@ -2182,6 +2189,12 @@ void Parser::Distribute() {
   for (Mention& m : mentions_) {
     if (m.ref < 0 || !m.counting) continue;
     int sentence = tokens_[items_[m.ref].first].sentence;
+    // "the two upper floors each have two bedrooms": each of them on its own.
+    if (Item& ref = items_[m.ref]; ref.ref == RefType::kUpper && ref.last + 1 < static_cast<int>(tokens_.size()) &&
+                                   tokens_[ref.last + 1].word == "each" && ref.last + 1 < m.first) {
+      ref.each = true;
+      tokens_[ref.last + 1].consumed = true;
+    }
     auto at = [&](int k) -> const Token* {
       return k < static_cast<int>(tokens_.size()) && tokens_[k].sentence == sentence ? &tokens_[k] : nullptr;
     };
@@ -3091,6 +3104,32 @@ void Parser::Corrections() {
     if (!the || !taken_back) continue;
     for (Mention& p : mentions_)
       if (&p != &m && p.last < m.first && p.counting && p.category == m.category && p.max > 0) p.min = p.max = 0;
+  }
+  // A total first, its floors after: "Bedrooms x4 ... Top floor: 2 bedrooms + 1 bathroom only": the two are
+  // two of the four, not two more ("two more bedrooms upstairs", "another bathroom upstairs" add; a single
+  // room named before is no total, and en-suites are rooms of their own).
+  for (Mention& m : mentions_) {
+    if (!m.counting || m.ref < 0 || m.min != m.max || m.min <= 0 || m.per_level >= 0 || items_[m.ref].each) continue;
+    const int sentence = tokens_[m.first].sentence;
+    bool more = false;
+    for (int k = m.first; k <= m.last + 2 && k < size; ++k)
+      more = more || In(tokens_[k], {"more", "another", "additional", "extra", "also", "too", "further", "second", "third"});
+    for (int k = m.first - 1; k >= 0 && tokens_[k].sentence == sentence && k >= m.first - 4; --k)
+      more = more || In(tokens_[k], {"more", "another", "additional", "extra", "also", "too", "plus", "further"});
+    if (more) continue;
+    for (Mention& p : mentions_) {
+      if (&p == &m || !p.counting || p.ref >= 0 || p.category != m.category || p.min != p.max || p.min < m.min || p.min < 2 ||
+          p.per_level >= 0 || p.spread || items_[p.item].ensuite || items_[m.item].ensuite || tokens_[p.first].sentence >= sentence)
+        continue;
+        if (p.min == m.min) {
+        p.counting = false;
+        p.definite = true;
+      } else {
+        p.min -= m.min;
+        p.max -= m.min;
+      }
+      break;
+    }
   }
   // "actually", "wait", "sorry" before a correction are read with it.
   for (int i = 0; i < size; ++i)

@@ -385,6 +385,25 @@ std::vector<RoomRecount> RecountRooms(std::string_view text, int floors) {
         if (Boundary(t[k]) && t[k] != "with") break;
       }
     }
+    // "the two upper floors each have two bedrooms": as many on each of those floors.
+    if (n > 0 && !distributed && !ordinal && !another) {
+      for (size_t k = i, steps = 0; k > 2 && steps < 4; ++steps) {
+        --k;
+        if (OneOf(t[k], {"get", "gets", "has", "have", "need", "needs"}) && t[k - 1] == "each" && FloorWord(t[k - 2])) {
+          size_t q = k - 2;
+          int named = 0;
+          bool upper = false;
+          while (q > 0 && OneOf(t[q - 1], {"upper", "other", "the", "two", "three"})) {
+            --q;
+            upper = upper || t[q] == "upper";
+            if (t[q] == "two" || t[q] == "three") named = t[q] == "two" ? 2 : 3;
+          }
+          n *= named > 0 ? named : std::max(upper ? floors - 1 : floors, 1);
+          break;
+        }
+        if (Boundary(t[k])) break;
+      }
+    }
     // Forwards: "on each floor", "per floor", "on both floors", "per bedroom", "for each bedroom".
     size_t to = std::max(end, end_after);
     for (size_t k = end; k < t.size() && k < end + 4; ++k) {

@@ -204,3 +204,37 @@ TEST_CASE("seats asked of a room size its table and bring as many chairs", "[sce
   CHECK(Named(sofa, "sofa"));
   CHECK(ParseRoomRequest("room for two people to sleep", Category::kBedroom).wishes.empty());
 }
+
+// Issue 32's third unseen set: rooms written like furniture ("3 bed, 1 bath", "a WC", "a four-bed house")
+// are rooms, never wishes for the room named before them (three beds, a toilet and a bath stood in a lounge).
+TEST_CASE("a count of bedrooms or bathrooms and a WC in a list of rooms are rooms, not furniture", "[scene][request]") {
+  const std::string text = "Octagon plan, 2 flrs. GF: kitchen, dining, lounge, WC. 1F: 3 bed, 1 bath, balcony. Piano in lounge.";
+  const RoomRequest lounge = ParseRoomRequest(text, Category::kLivingRoom);
+  CHECK(Named(lounge, "bed") == nullptr);
+  CHECK(Named(lounge, "bathtub") == nullptr);
+  CHECK(Named(lounge, "toilet") == nullptr);
+  REQUIRE(Named(lounge, "piano") != nullptr);
+  CHECK(Named(lounge, "piano")->count == 1);
+  CHECK(Named(ParseRoomRequest("Four-bed detached with a lounge and a piano.", Category::kLivingRoom), "bed") == nullptr);
+  // Beds as furniture keep their plural or their article: "two beds", "a double bed".
+  const RoomRequest kids = ParseRoomRequest("two beds and a desk in the children's room", Category::kChildrenRoom);
+  REQUIRE(Named(kids, "bed") != nullptr);
+  CHECK(Named(kids, "bed")->count == 2);
+  CHECK(Named(ParseRoomRequest("a bathroom with a bath and a shower", Category::kBathroom), "bathtub") != nullptr);
+  // "one bedroom and one bath (with a bathtub, not a shower!)": the bath is the room, the bathtub its wish.
+  const RoomRequest bath = ParseRoomRequest("just one bedroom and one bath (with a bathtub, not a shower!) upstairs", Category::kBathroom);
+  REQUIRE(Named(bath, "bathtub") != nullptr);
+  CHECK(Named(bath, "bathtub")->count == 1);
+  REQUIRE(Named(bath, "shower") != nullptr);
+  CHECK(Named(bath, "shower")->count == 0);
+  CHECK(Named(ParseRoomRequest("just one bedroom and one bath (with a bathtub, not a shower!) upstairs", Category::kBedroom), "bathtub") == nullptr);
+}
+
+TEST_CASE("a fixture is not carried by nearness into a room of another kind", "[scene][request]") {
+  const std::string text = "Ground: kitchen / lounge / guest WC\nUpper: king bed, two kids rooms, bathroom\nExtras: a bathtub in the bathroom";
+  CHECK(Named(ParseRoomRequest(text, Category::kBathroom), "bed") == nullptr);
+  CHECK(Named(ParseRoomRequest(text, Category::kBathroom), "bathtub") != nullptr);
+  // Named for the room ("a bed in the lounge") or meant for the room being furnished, it stays.
+  CHECK(Named(ParseRoomRequest("A bathroom upstairs. Put a single bed in the lounge too.", Category::kLivingRoom), "bed") != nullptr);
+  CHECK(Named(ParseRoomRequest("a single bed by the window", Category::kLivingRoom), "bed") != nullptr);
+}

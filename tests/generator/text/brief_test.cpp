@@ -855,4 +855,26 @@ TEST_CASE("floors: heading lines scope the lines under them, asides in brackets 
   CHECK(Exact(live, Category::kChildrenRoom) == 2);
 }
 
+TEST_CASE("a total first and its floors after: the floors' rooms are part of it, 'more' adds", "[issue32]") {
+  const Brief b = ParseBrief("Floors: 3\nBedrooms x4, Bathrooms x3, Kitchen x1\nTop floor: 2 bedrooms + 1 bathroom only");
+  INFO(BriefToJson(b).dump(1));
+  CHECK(Exact(b, Category::kBedroom, 2) == 2);
+  CHECK(Exact(b, Category::kBedroom) == 4);  // in all, the two on the top floor among them
+  CHECK(Exact(b, Category::kBathroom) == 3);
+  const Brief more = ParseBrief("Two floors. Four bedrooms and a kitchen. Upstairs two more bedrooms.");
+  INFO(BriefToJson(more).dump(1));
+  CHECK(Exact(more, Category::kBedroom) == 6);
+  CHECK(Exact(more, Category::kBedroom, 1) == 2);
+  // "the two upper floors each have two bedrooms": two on each.
+  const Brief each = ParseBrief("Three floors. The ground floor has the kitchen and living room; the two upper floors each have two bedrooms.");
+  INFO(BriefToJson(each).dump(1));
+  CHECK(Exact(each, Category::kBedroom, 1) == 2);
+  CHECK(Exact(each, Category::kBedroom, 2) == 2);
+  CHECK(each.unparsed.empty());
+  int beds = 0;
+  for (const BriefRooms& r : ParseBrief("Upper: master bed, 2 children's rooms, bathroom").rooms)
+    if (r.category == Category::kBedroom) beds += r.min;
+  CHECK(beds == 1);
+}
+
 }  // namespace villa

@@ -53,8 +53,6 @@ const std::map<std::string, std::string>& KnownGaps() {
       {"voices-330", "'a box room for storage' read as a bedroom"},
       {"voices-334", "'two-up two-down: lounge and kitchen on the ground floor, two bedrooms on the first floor'"},
       {"voices-341", "spec 'Levels: ground + 1 upper'; 'master bed' as a bedroom"},
-      {"voices-343", "bulleted spec with '×1' counts after each noun of a comma list"},
-      {"voices-344", "'the two upper floors each have two bedrooms'"},
   };
   return gaps;
 }
