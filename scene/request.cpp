@@ -56,7 +56,8 @@ struct RoomWord {
 
 // Enough room names to bind furniture to rooms (the generator's brief parser has the full lexicon for
 // layouts; scene/ sits below it and keeps its own short list).
-constexpr std::array<RoomWord, 51> kRoomWords = {{
+constexpr std::array<RoomWord, 54> kRoomWords = {{
+    {"library", Category::kOffice},             {"studio", Category::kOffice},   {"workroom", Category::kOffice},
     {"master bed", Category::kBedroom},         {"guest bed", Category::kBedroom},
     // Rooms whose names are also fixtures' ("a WC", "a downstairs loo", "a half bath"): rooms, not wishes.
     {"wc", Category::kBathroom},                {"loo", Category::kBathroom},

@@ -216,6 +216,10 @@ TEST_CASE("a count of bedrooms or bathrooms and a WC in a list of rooms are room
   REQUIRE(Named(lounge, "piano") != nullptr);
   CHECK(Named(lounge, "piano")->count == 1);
   CHECK(Named(ParseRoomRequest("Four-bed detached with a lounge and a piano.", Category::kLivingRoom), "bed") == nullptr);
+  // A library is an office: its bookcases are the office's.
+  const RoomRequest library = ParseRoomRequest("Lounge x2, Bedrooms x4\nLibrary x1 (3 bookcases + 1 armchair)", Category::kOffice);
+  REQUIRE(Named(library, "bookcase") != nullptr);
+  CHECK(Named(library, "bookcase")->count == 3);
   // Beds as furniture keep their plural or their article: "two beds", "a double bed".
   const RoomRequest kids = ParseRoomRequest("two beds and a desk in the children's room", Category::kChildrenRoom);
   REQUIRE(Named(kids, "bed") != nullptr);
