@@ -144,7 +144,7 @@ Result<GlbSettleSummary> ResettleRooms(const std::string& glb, const GlbSettleSu
     if (!rooms.count(o.room)) out.objects.push_back(o);
   out.objects.insert(out.objects.end(), part->objects.begin(), part->objects.end());
   for (const GlbObjectMotion& o : out.objects) {
-    out.starts_inside += o.motion.start_depth > 0.002;
+    out.starts_inside += o.motion.start_depth > kStartsInside;
     out.parts += o.motion.parts;
   }
   CountStable(out);

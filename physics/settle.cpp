@@ -230,17 +230,20 @@ Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std:
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
     const auto a = index_of.find(manifold->getBody0()), b = index_of.find(manifold->getBody1());
     for (int c = 0; c < manifold->getNumContacts(); ++c) {
-      const double depth = -manifold->getContactPoint(c).getDistance();
-      for (const auto& [self, other] : {std::pair{a, b}, std::pair{b, a}}) {
+      const btManifoldPoint& point = manifold->getContactPoint(c);
+      const double depth = -point.getDistance();
+      const btVector3 n = point.m_normalWorldOnB;  // on body 1, toward body 0
+      for (const auto& [self, other, sign] : {std::tuple{a, b, 1.0}, std::tuple{b, a, -1.0}}) {
         if (self == index_of.end()) continue;
         BodyMotion& motion = result.bodies[self->second];
         if (depth <= motion.start_depth) continue;
         motion.start_depth = depth;
         motion.start_against = other == index_of.end() ? "building" : bodies[other->second].id;
+        motion.start_out = {sign * n.x(), sign * n.y(), sign * n.z()};
       }
     }
   }
-  for (const BodyMotion& motion : result.bodies) result.starts_inside += motion.start_depth > 0.002;
+  for (const BodyMotion& motion : result.bodies) result.starts_inside += motion.start_depth > kStartsInside;
 
   const int steps = static_cast<int>(std::ceil(options.seconds / options.step - 1e-9));
   for (int s = 0; s < steps; ++s) world.stepSimulation(options.step, 0, options.step);

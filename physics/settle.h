@@ -17,6 +17,9 @@
 
 namespace villa::physics {
 
+// m: a body that starts deeper than this inside another (or the building) is a defect (issue 28).
+inline constexpr double kStartsInside = 0.002;
+
 struct SettleBody {
   std::string id;
   TriangleMesh mesh;    // world frame (plan: metres, z up); each connected piece one convex part
@@ -43,6 +46,7 @@ struct BodyMotion {
   // "building" for the static triangles).
   double start_depth = 0.0;
   std::string start_against;
+  Vec3 start_out;  // unit: the way out of what it starts inside (the contact's normal), world frame
   bool welded = false;
   bool strict = true;   // within strict_move and strict_turn (welded ones always)
   bool loose = true;

@@ -576,9 +576,10 @@ std::string FurnishSummary::BriefReport() const {
     char line[256];
     std::snprintf(line, sizeof line,
                   "physics: %s %% of %d free objects stay within 1 cm and 0.1 rad in %.3g s of Bullet, %s %% within 20 "
-                  "cm and 8 degrees; %d start inside another; %d optional piece(s) that moved taken out; %.2f s\n",
+                  "cm and 8 degrees; %d start inside another; %d optional piece(s) that moved taken out, %d moved out of "
+                  "their parent's collision hull; %.2f s\n",
                   share(stability.strict).c_str(), n, physics_simulated, share(stability.loose).c_str(), starts_inside,
-                  physics_removed, physics_seconds);
+                  physics_removed, physics_lifted, physics_seconds);
     out += line;
   }
   return out;
@@ -718,7 +719,7 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
   // touch; the others keep what the settle before found).
   if (options.check_physics) {
     double seconds = 0.0;
-    int taken = 0;
+    int taken = 0, lifted = 0;
     std::optional<physics::GlbSettleSummary> before;
     std::set<std::string> resettle;
     for (int round = 0;; ++round) {
@@ -727,15 +728,51 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
       auto settled = before ? physics::ResettleRooms(*glb, *before, resettle, options.settle) : physics::SettleGlbBytes(*glb, options.settle);
       if (!settled.ok()) return Error{"physics: " + settled.error()};
       seconds += settled->seconds;
-      std::map<std::string, const physics::GlbObjectMotion*> moved;
-      for (const physics::GlbObjectMotion& o : settled->objects)
+      std::map<std::string, const physics::GlbObjectMotion*> moved, inside;
+      for (const physics::GlbObjectMotion& o : settled->objects) {
         if (!o.motion.welded && !o.motion.strict) moved[o.id] = &o;
+        if (o.motion.start_depth > physics::kStartsInside) inside[o.id] = &o;
+      }
       std::set<size_t> changed;
       if (round < options.physics_rounds) {
         for (size_t i = 0; i < results.size(); ++i) {
           RoomResult& r = results[i];
-          if (!r.solver || moved.empty()) continue;
+          if (!r.solver || (moved.empty() && inside.empty())) continue;
           const RoomSolution now = r.solver->Solution();
+          // A piece that starts inside its parent's collision hull (an imported bed's mattress or headboard, a
+          // basin's rim: the hull of a non-convex piece) is raised onto it, or slid off it along its surface,
+          // the contact's depth and 0.5 mm, with what stands on it.
+          for (const ProblemObject& o : now.objects) {
+            auto it = inside.find(o.id);
+            if (it == inside.end() || it->second->motion.start_against != o.parent || moved.count(o.id)) continue;
+            const physics::BodyMotion& m = it->second->motion;
+            const double step = m.start_depth + 0.0005;
+            bool done = false;
+            if (std::abs(m.start_out.z) >= 0.7) {
+              done = r.solver->Lift(o.id, step);
+            } else if (const double flat = std::hypot(m.start_out.x, m.start_out.y); flat > 1e-9 && step <= RoomSolver::kMaxLift) {
+              for (size_t k = 0; k < now.objects.size(); ++k) {
+                if (now.objects[k].id != o.id) continue;
+                Action a;
+                a.kind = ActionKind::kUpdatePose;
+                a.id = o.id;
+                Pose to = now.placements[k].pose;
+                to.x += step * m.start_out.x / flat;
+                to.y += step * m.start_out.y / flat;
+                to.z = std::nan("");
+                a.pose = to;
+                char why[160];
+                std::snprintf(why, sizeof why, "physics: starts %.1f mm inside its parent's collision hull: slid off it", 1000.0 * m.start_depth);
+                a.reason = why;
+                done = r.solver->Apply(a).status == ActionStatus::kApplied;
+                if (done) r.solver->KeepCurrent();
+              }
+            }
+            if (done) {
+              ++lifted;
+              changed.insert(i);
+            }
+          }
           for (const ProblemObject& o : now.objects) {
             auto it = moved.find(o.id);
             if (it == moved.end() || IsProtected(o.priority)) continue;
@@ -761,6 +798,7 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
         sum.physics_seconds = seconds;
         sum.physics_simulated = options.settle.seconds;
         sum.physics_removed = taken;
+        sum.physics_lifted = lifted;
         villa.physics = std::move(*settled);
         villa.glb = std::move(*glb);  // the bytes settled are the ones written
         break;
@@ -851,6 +889,10 @@ Json FurnishReportJson(const FurnishedVilla& villa, const FurnishOptions& option
     j["reachability"] = s.reach_note.empty() ? Json(nullptr) : Json{{"note", s.reach_note}};
   }
   j["physics"] = villa.physics ? physics::SettleSummaryJson(*villa.physics, options.settle) : Json(nullptr);
+  if (villa.physics) {
+    j["physics"]["taken_out"] = s.physics_removed;  // optional pieces that moved (with what they held)
+    j["physics"]["out_of_parent_hull"] = s.physics_lifted;  // pieces raised onto or slid off their parent's collision hull
+  }
   // Issue 31's budget: what furnished.glb draws (each placed object's mesh counted once per placement).
   {
     size_t building = 0, furniture = 0;

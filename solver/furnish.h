@@ -192,6 +192,7 @@ struct FurnishSummary {
   int starts_inside = 0;
   double physics_seconds = 0.0, physics_simulated = 0.0;
   int physics_removed = 0;  // optional pieces (with what they held) taken out because they moved
+  int physics_lifted = 0;   // pieces raised onto or slid off their parent's collision hull (they started inside it)
   std::vector<std::string> written;  // files written, relative to the output folder
 
   // CR, FR, OBR over every object of the furnished rooms; CSR over their inside edges (1 when none).

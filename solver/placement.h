@@ -19,6 +19,9 @@ struct ObjectPlacement {
   int surface = -1;  // ontop an object: index into the parent's support surfaces
   int cavity = -1;   // inside: index into the parent's cavities
   bool placed = false;
+  // m above its parent's support surface (issue 28): a simulator rests it on the parent's collision hull,
+  // which over an imported model's non-convex piece stands a few mm above the surface read off the mesh.
+  double lift = 0.0;
 };
 
 // An angle wrapped to (-pi, pi] (yaws drift without it: 9081 degrees was seen in a trial).

@@ -2349,6 +2349,39 @@ void RoomSolver::Finish() {
   im.summary.seconds = Since(im.start);
 }
 
+bool RoomSolver::Lift(const std::string& id, double dz) {
+  Impl& im = *impl_;
+  if (!im.initialised || !(dz > 0.0) || dz > kMaxLift + 1e-12) return false;
+  const int i = im.state.Find(id);
+  if (i < 0 || im.state.parent[i] < 0 || im.state.objects[i].relation != Relation::kOnTop ||
+      im.state.placements[i].lift + dz > kMaxLift + 1e-12)
+    return false;
+  const RoomState saved = im.state;
+  im.state.placements[i].lift += dz;
+  Pose raised = im.state.placements[i].pose;
+  raised.z = im.state.SupportHeight(i);
+  im.state.SetPose(i, raised);
+  im.Check();
+  if (!im.metrics.Clean()) {
+    im.state = saved;
+    im.Check();
+    return false;
+  }
+  ActionResult r;
+  r.action.kind = ActionKind::kUpdatePose;
+  r.action.id = id;
+  r.action.pose = raised;
+  r.action.reason = "physics: starts " + Fixed(1000.0 * dz, 1) + " mm inside its parent's collision hull: raised onto it";
+  r.status = ActionStatus::kApplied;
+  r.message = "done";
+  r.final_pose = raised;
+  im.summary.actions.push_back(std::move(r));
+  im.summary.metrics = im.metrics;
+  im.summary.energy = im.energy;
+  KeepCurrent();
+  return true;
+}
+
 void RoomSolver::KeepCurrent() {
   Impl& im = *impl_;
   if (!im.initialised) return;

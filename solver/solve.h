@@ -86,6 +86,12 @@ class RoomSolver {
   // Checks the problem and options; then places every layer and runs the first exact check.
   Status Initialise();
   ActionResult Apply(const Action& action);
+  // Issue 28: object `id`, standing on its parent, raised `dz` m (0 < dz <= kMaxLift) with what stands on
+  // it, where a physics engine finds it starting inside its parent's collision hull; kept as the session's
+  // state when the exact check stays clean. False when refused (no such object, not on a parent, too far,
+  // or the check no longer clean).
+  bool Lift(const std::string& id, double dz);
+  static constexpr double kMaxLift = 0.008;
   // Whether object `id` could take `pose` as update_pose would put it there (z from its support, a wall
   // object onto `wall` or the nearest wall, facing the room) without breaking a hard constraint, with
   // everything else where it is. Changes nothing; a critic asks before it acts.

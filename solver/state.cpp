@@ -99,7 +99,7 @@ double RoomState::SupportHeight(int i) const {
     return pp.z + pp.scale * c.min.z;
   }
   const int k = std::max(0, placements[i].surface);
-  return pp.z + pp.scale * pa.support_surfaces[k].z;
+  return pp.z + pp.scale * pa.support_surfaces[k].z + placements[i].lift;
 }
 
 Ring RoomState::LocalSupportPolygon(int i) const {

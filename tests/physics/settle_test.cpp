@@ -88,6 +88,8 @@ TEST_CASE("A book taller than its shelf starts inside the board above, named wit
     } else {
       CHECK(book.start_depth == Approx(0.03).margin(0.004));
       CHECK(book.start_against == "shelf");
+      CHECK(book.start_out.z < -0.7);  // out of the board above: down
+      CHECK(settled->bodies[0].start_out.z > 0.7);
       CHECK(settled->starts_inside == 2);  // the book and the shelf
     }
   }

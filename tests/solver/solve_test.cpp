@@ -104,6 +104,33 @@ TEST_CASE("A room with no right angle and a skewed inner corner is furnished cle
   RequireClean(*solved, room.objects.size());
 }
 
+TEST_CASE("A piece on its parent is raised onto the parent's collision hull, a few mm at most", "[solver][physics]") {
+  RoomProblem room = Rectangle(4, 3);
+  room.objects.push_back(TableObject("table-0", 0.8, 0.8, 0.7));
+  room.objects.push_back(SmallObject("cup-0", 0.12, 0.12, 0.1, "table-0", Relation::kOnTop));
+  RoomSolver solver(room, {});
+  const Status init = solver.Initialise();
+  INFO((init.ok() ? std::string() : init.error()));
+  REQUIRE(init.ok());
+  solver.RunAgent();
+  solver.Finish();
+  auto z_of = [&](const std::string& id) {
+    const RoomSolution s = solver.Solution();
+    for (size_t k = 0; k < s.objects.size(); ++k)
+      if (s.objects[k].id == id) return s.placements[k].pose.z;
+    return -1.0;
+  };
+  const double cup = z_of("r/cup-0"), table = z_of("r/table-0");
+  REQUIRE(cup > table);
+  CHECK(solver.Lift("r/cup-0", 0.004));
+  CHECK(z_of("r/cup-0") == Approx(cup + 0.004).margin(1e-9));
+  CHECK(z_of("r/table-0") == table);
+  CHECK(solver.Solution().summary.metrics.Clean());
+  CHECK_FALSE(solver.Lift("r/cup-0", RoomSolver::kMaxLift));  // 4 mm + 8 mm: more than a hull's error
+  CHECK_FALSE(solver.Lift("r/table-0", 0.002));                // on the floor: nothing to rise onto
+  CHECK_FALSE(solver.Lift("no-such-thing", 0.002));
+}
+
 TEST_CASE("Too many things on a small table end in remove_entity, said in the outcome", "[solver]") {
   // 20 cups of 12 x 12 cm for a 50 x 50 cm top: 16 fit at most.
   RoomProblem room = Rectangle(4, 3);
