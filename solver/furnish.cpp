@@ -740,35 +740,11 @@ Result<FurnishedVilla> FurnishLayout(const Layout& layout, const scene::FileRef&
           if (!r.solver || (moved.empty() && inside.empty())) continue;
           const RoomSolution now = r.solver->Solution();
           // A piece that starts inside its parent's collision hull (an imported bed's mattress or headboard, a
-          // basin's rim: the hull of a non-convex piece) is raised onto it, or slid off it along its surface,
-          // the contact's depth and 0.5 mm, with what stands on it.
+          // basin's rim) is moved out of it, with what stands on it.
           for (const ProblemObject& o : now.objects) {
             auto it = inside.find(o.id);
             if (it == inside.end() || it->second->motion.start_against != o.parent || moved.count(o.id)) continue;
-            const physics::BodyMotion& m = it->second->motion;
-            const double step = m.start_depth + 0.0005;
-            bool done = false;
-            if (std::abs(m.start_out.z) >= 0.7) {
-              done = r.solver->Lift(o.id, step);
-            } else if (const double flat = std::hypot(m.start_out.x, m.start_out.y); flat > 1e-9 && step <= RoomSolver::kMaxLift) {
-              for (size_t k = 0; k < now.objects.size(); ++k) {
-                if (now.objects[k].id != o.id) continue;
-                Action a;
-                a.kind = ActionKind::kUpdatePose;
-                a.id = o.id;
-                Pose to = now.placements[k].pose;
-                to.x += step * m.start_out.x / flat;
-                to.y += step * m.start_out.y / flat;
-                to.z = std::nan("");
-                a.pose = to;
-                char why[160];
-                std::snprintf(why, sizeof why, "physics: starts %.1f mm inside its parent's collision hull: slid off it", 1000.0 * m.start_depth);
-                a.reason = why;
-                done = r.solver->Apply(a).status == ActionStatus::kApplied;
-                if (done) r.solver->KeepCurrent();
-              }
-            }
-            if (done) {
+            if (r.solver->MoveOutOfParent(o.id, it->second->motion.start_out, it->second->motion.start_depth)) {
               ++lifted;
               changed.insert(i);
             }

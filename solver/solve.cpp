@@ -2351,10 +2351,10 @@ void RoomSolver::Finish() {
 
 bool RoomSolver::Lift(const std::string& id, double dz) {
   Impl& im = *impl_;
-  if (!im.initialised || !(dz > 0.0) || dz > kMaxLift + 1e-12) return false;
+  if (!im.initialised || !(dz > 0.0) || dz > kMaxOutOfHull + 1e-12) return false;
   const int i = im.state.Find(id);
   if (i < 0 || im.state.parent[i] < 0 || im.state.objects[i].relation != Relation::kOnTop ||
-      im.state.placements[i].lift + dz > kMaxLift + 1e-12)
+      im.state.placements[i].lift + dz > kMaxOutOfHull + 1e-12)
     return false;
   const RoomState saved = im.state;
   im.state.placements[i].lift += dz;
@@ -2378,6 +2378,26 @@ bool RoomSolver::Lift(const std::string& id, double dz) {
   im.summary.actions.push_back(std::move(r));
   im.summary.metrics = im.metrics;
   im.summary.energy = im.energy;
+  KeepCurrent();
+  return true;
+}
+
+bool RoomSolver::MoveOutOfParent(const std::string& id, Vec3 out, double depth) {
+  const double step = depth + 0.0005, flat = std::hypot(out.x, out.y);
+  if (std::abs(out.z) >= std::sqrt(0.5)) return Lift(id, step);
+  Impl& im = *impl_;
+  const int i = im.state.Find(id);
+  if (!im.initialised || i < 0 || im.state.parent[i] < 0 || !(flat > 1e-9) || !(step <= kMaxOutOfHull)) return false;
+  Action a;
+  a.kind = ActionKind::kUpdatePose;
+  a.id = id;
+  Pose to = im.state.placements[i].pose;
+  to.x += step * out.x / flat;
+  to.y += step * out.y / flat;
+  to.z = std::nan("");  // from its support
+  a.pose = to;
+  a.reason = "physics: starts " + Fixed(1000.0 * depth, 1) + " mm inside its parent's collision hull: slid off it";
+  if (Apply(a).status != ActionStatus::kApplied) return false;  // (Apply refuses what breaks a hard constraint)
   KeepCurrent();
   return true;
 }

@@ -86,12 +86,16 @@ class RoomSolver {
   // Checks the problem and options; then places every layer and runs the first exact check.
   Status Initialise();
   ActionResult Apply(const Action& action);
-  // Issue 28: object `id`, standing on its parent, raised `dz` m (0 < dz <= kMaxLift) with what stands on
-  // it, where a physics engine finds it starting inside its parent's collision hull; kept as the session's
-  // state when the exact check stays clean. False when refused (no such object, not on a parent, too far,
-  // or the check no longer clean).
+  // Issue 28: object `id`, standing on its parent, where a physics engine finds it starting `depth` m inside
+  // its parent's collision hull (the hull of an imported model's non-convex piece stands a few mm above or
+  // beside the surface read off the mesh), moved out by depth + 0.5 mm along `out` (the contact's normal,
+  // world frame): raised onto the hull when `out` is within 45 degrees of vertical (Lift), else slid along
+  // its surface (an update_pose). Kept as the session's state when the exact check stays clean. False when
+  // refused (no such object, not on a parent, more than kMaxOutOfHull, or a hard constraint broken).
+  bool MoveOutOfParent(const std::string& id, Vec3 out, double depth);
+  // The vertical case: raised `dz` m with what stands on it.
   bool Lift(const std::string& id, double dz);
-  static constexpr double kMaxLift = 0.008;
+  static constexpr double kMaxOutOfHull = 0.008;
   // Whether object `id` could take `pose` as update_pose would put it there (z from its support, a wall
   // object onto `wall` or the nearest wall, facing the room) without breaking a hard constraint, with
   // everything else where it is. Changes nothing; a critic asks before it acts.

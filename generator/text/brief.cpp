@@ -82,27 +82,18 @@ std::vector<Token> Tokenise(std::string_view text) {
     unsigned char c = static_cast<unsigned char>(text[i]);
     // "Lounge ×2": the multiplication sign is the letter x of "x2"; en and em dashes and bullets are
     // the hyphen of a list ("Level 1 – office", "• Kitchen").
-    if (c == 0xC3 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x97) {
+    auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0; };
+    const bool times = c == 0xC3 && byte(i + 1) == 0x97;
+    const bool dash = c == 0xE2 && byte(i + 1) == 0x80 && (byte(i + 2) == 0x93 || byte(i + 2) == 0x94 || byte(i + 2) == 0xA2);
+    if (times || dash) {
       Token t;
       t.begin = i;
-      t.end = i + 2;
-      t.word = t.stem = "x";
+      t.end = i + (times ? 2 : 3);
+      t.punct = times ? 0 : '-';
+      t.word = t.stem = times ? "x" : "-";
       t.sentence = sentence;
+      i = t.end;
       tokens.push_back(std::move(t));
-      i += 2;
-      continue;
-    }
-    if (c == 0xE2 && i + 2 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x80 &&
-        (static_cast<unsigned char>(text[i + 2]) == 0x93 || static_cast<unsigned char>(text[i + 2]) == 0x94 ||
-         static_cast<unsigned char>(text[i + 2]) == 0xA2)) {
-      Token t;
-      t.begin = i;
-      t.end = i + 3;
-      t.punct = '-';
-      t.word = t.stem = "-";
-      t.sentence = sentence;
-      tokens.push_back(std::move(t));
-      i += 3;
       continue;
     }
     // A word starts at a letter, a digit or a UTF-8 lead byte (never inside a multi-byte character).
@@ -919,6 +910,7 @@ class Parser {
   void Distribute();
   void UsedAs();
   void Corrections();
+  void FloorsOfTotals();
   bool ElidedFloor(std::size_t i) const;
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
@@ -3105,23 +3097,32 @@ void Parser::Corrections() {
     for (Mention& p : mentions_)
       if (&p != &m && p.last < m.first && p.counting && p.category == m.category && p.max > 0) p.min = p.max = 0;
   }
-  // A total first, its floors after: "Bedrooms x4 ... Top floor: 2 bedrooms + 1 bathroom only": the two are
-  // two of the four, not two more ("two more bedrooms upstairs", "another bathroom upstairs" add; a single
-  // room named before is no total, and en-suites are rooms of their own).
+  // "actually", "wait", "sorry" before a correction are read with it.
+  for (int i = 0; i < size; ++i)
+    if (In(tokens_[i], {"actually", "wait", "sorry", "scratch", "correction"}) && i + 1 < size &&
+        (tokens_[i + 1].consumed || tokens_[i + 1].punct) && !cues.empty())
+      tokens_[i].consumed = true;
+}
+
+// A total first, its floors after: "Bedrooms x4 ... Top floor: 2 bedrooms + 1 bathroom only": the two are
+// two of the four, not two more ("two more bedrooms upstairs", "another bathroom upstairs" add; a single
+// room named before is no total, and en-suites are rooms of their own).
+void Parser::FloorsOfTotals() {
+  const int size = static_cast<int>(tokens_.size());
   for (Mention& m : mentions_) {
     if (!m.counting || m.ref < 0 || m.min != m.max || m.min <= 0 || m.per_level >= 0 || items_[m.ref].each) continue;
     const int sentence = tokens_[m.first].sentence;
+    auto adds = [&](const Token& t) { return In(t, {"more", "another", "additional", "extra", "also", "too", "further"}); };
     bool more = false;
-    for (int k = m.first; k <= m.last + 2 && k < size; ++k)
-      more = more || In(tokens_[k], {"more", "another", "additional", "extra", "also", "too", "further", "second", "third"});
+    for (int k = m.first; k <= m.last + 2 && k < size; ++k) more = more || adds(tokens_[k]) || In(tokens_[k], {"second", "third"});
     for (int k = m.first - 1; k >= 0 && tokens_[k].sentence == sentence && k >= m.first - 4; --k)
-      more = more || In(tokens_[k], {"more", "another", "additional", "extra", "also", "too", "plus", "further"});
+      more = more || adds(tokens_[k]) || tokens_[k].word == "plus";
     if (more) continue;
     for (Mention& p : mentions_) {
       if (&p == &m || !p.counting || p.ref >= 0 || p.category != m.category || p.min != p.max || p.min < m.min || p.min < 2 ||
           p.per_level >= 0 || p.spread || items_[p.item].ensuite || items_[m.item].ensuite || tokens_[p.first].sentence >= sentence)
         continue;
-        if (p.min == m.min) {
+      if (p.min == m.min) {
         p.counting = false;
         p.definite = true;
       } else {
@@ -3131,11 +3132,6 @@ void Parser::Corrections() {
       break;
     }
   }
-  // "actually", "wait", "sorry" before a correction are read with it.
-  for (int i = 0; i < size; ++i)
-    if (In(tokens_[i], {"actually", "wait", "sorry", "scratch", "correction"}) && i + 1 < size &&
-        (tokens_[i + 1].consumed || tokens_[i + 1].punct) && !cues.empty())
-      tokens_[i].consumed = true;
 }
 
 Brief Parser::Run() {
@@ -3157,6 +3153,7 @@ Brief Parser::Run() {
   Spread();
   PlaceLevels();
   Corrections();
+  FloorsOfTotals();
   Distribute();
   Connect();
   Attach();

@@ -104,7 +104,7 @@ TEST_CASE("A room with no right angle and a skewed inner corner is furnished cle
   RequireClean(*solved, room.objects.size());
 }
 
-TEST_CASE("A piece on its parent is raised onto the parent's collision hull, a few mm at most", "[solver][physics]") {
+TEST_CASE("A piece on its parent is moved out of the parent's collision hull, raised or slid, a few mm at most", "[solver][physics]") {
   RoomProblem room = Rectangle(4, 3);
   room.objects.push_back(TableObject("table-0", 0.8, 0.8, 0.7));
   room.objects.push_back(SmallObject("cup-0", 0.12, 0.12, 0.1, "table-0", Relation::kOnTop));
@@ -126,8 +126,21 @@ TEST_CASE("A piece on its parent is raised onto the parent's collision hull, a f
   CHECK(z_of("r/cup-0") == Approx(cup + 0.004).margin(1e-9));
   CHECK(z_of("r/table-0") == table);
   CHECK(solver.Solution().summary.metrics.Clean());
-  CHECK_FALSE(solver.Lift("r/cup-0", RoomSolver::kMaxLift));  // 4 mm + 8 mm: more than a hull's error
+  CHECK_FALSE(solver.Lift("r/cup-0", RoomSolver::kMaxOutOfHull));  // 4 mm + 8 mm: more than a hull's error
   CHECK_FALSE(solver.Lift("r/table-0", 0.002));                // on the floor: nothing to rise onto
+  // Pressed sideways into its parent's hull: slid along the surface, depth and 0.5 mm, its height kept.
+  auto x_of = [&](const std::string& id) {
+    const RoomSolution s = solver.Solution();
+    for (size_t k = 0; k < s.objects.size(); ++k)
+      if (s.objects[k].id == id) return s.placements[k].pose.x;
+    return -100.0;
+  };
+  const double x = x_of("r/cup-0"), z = z_of("r/cup-0");
+  CHECK(solver.MoveOutOfParent("r/cup-0", {1.0, 0.0, 0.1}, 0.003));
+  CHECK(x_of("r/cup-0") == Approx(x + 0.0035).margin(1e-6));
+  CHECK(z_of("r/cup-0") == Approx(z).margin(1e-9));
+  CHECK_FALSE(solver.MoveOutOfParent("r/cup-0", {0.0, 1.0, 0.0}, 0.01));  // deeper than a hull's error
+  CHECK(solver.Solution().summary.metrics.Clean());
   CHECK_FALSE(solver.Lift("no-such-thing", 0.002));
 }
 
