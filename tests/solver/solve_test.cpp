@@ -114,12 +114,13 @@ TEST_CASE("A piece on its parent is moved out of the parent's collision hull, ra
   REQUIRE(init.ok());
   solver.RunAgent();
   solver.Finish();
-  auto z_of = [&](const std::string& id) {
+  auto pose_of = [&](const std::string& id) {
     const RoomSolution s = solver.Solution();
     for (size_t k = 0; k < s.objects.size(); ++k)
-      if (s.objects[k].id == id) return s.placements[k].pose.z;
-    return -1.0;
+      if (s.objects[k].id == id) return s.placements[k].pose;
+    return Pose{-100.0, -100.0, -1.0, 0.0, 1.0};
   };
+  auto z_of = [&](const std::string& id) { return pose_of(id).z; };
   const double cup = z_of("r/cup-0"), table = z_of("r/table-0");
   REQUIRE(cup > table);
   CHECK(solver.Lift("r/cup-0", 0.004));
@@ -129,15 +130,9 @@ TEST_CASE("A piece on its parent is moved out of the parent's collision hull, ra
   CHECK_FALSE(solver.Lift("r/cup-0", RoomSolver::kMaxOutOfHull));  // 4 mm + 8 mm: more than a hull's error
   CHECK_FALSE(solver.Lift("r/table-0", 0.002));                // on the floor: nothing to rise onto
   // Pressed sideways into its parent's hull: slid along the surface, depth and 0.5 mm, its height kept.
-  auto x_of = [&](const std::string& id) {
-    const RoomSolution s = solver.Solution();
-    for (size_t k = 0; k < s.objects.size(); ++k)
-      if (s.objects[k].id == id) return s.placements[k].pose.x;
-    return -100.0;
-  };
-  const double x = x_of("r/cup-0"), z = z_of("r/cup-0");
+  const double x = pose_of("r/cup-0").x, z = z_of("r/cup-0");
   CHECK(solver.MoveOutOfParent("r/cup-0", {1.0, 0.0, 0.1}, 0.003));
-  CHECK(x_of("r/cup-0") == Approx(x + 0.0035).margin(1e-6));
+  CHECK(pose_of("r/cup-0").x == Approx(x + 0.0035).margin(1e-6));
   CHECK(z_of("r/cup-0") == Approx(z).margin(1e-9));
   CHECK_FALSE(solver.MoveOutOfParent("r/cup-0", {0.0, 1.0, 0.0}, 0.01));  // deeper than a hull's error
   CHECK(solver.Solution().summary.metrics.Clean());
