@@ -940,6 +940,7 @@ Result<BuildingMesh> BuildBuilding(const Layout& layout, const BuildOptions& opt
     const double zt = (level + 1) * kLevelHeight;
     Ring inner;
     auto walls = ExteriorWalls(footprints[level], level, options.exterior_wall_thickness, inner, building.warnings);
+    building.wall_inner.push_back(inner);
     auto interior = InteriorWalls(layout, level, footprints[level], inner, options.interior_wall_thickness, building.warnings);
     walls.insert(walls.end(), std::make_move_iterator(interior.begin()), std::make_move_iterator(interior.end()));
 

@@ -94,6 +94,11 @@ struct BuildingMesh {
   std::vector<BuiltStair> stairs;
   // Slab holes by level (index = level; holes[0] is always empty).
   std::vector<std::vector<Ring>> slab_holes;
+  // By level: the inner faces of the exterior walls as one ring (the footprint inset by the walls'
+  // thickness, mitred at every corner, thinned where short edges ask for it). Where the footprint turns at
+  // a room's corner (an octagon's 45-degree edge beside a square room), the wall's inner face crosses that
+  // corner: the furnishing's free floor stays inside this ring.
+  std::vector<Ring> wall_inner;
   // Things the builder had to adapt: "door living0_kitchen0: no wall under it, leaf only".
   std::vector<std::string> warnings;
   // The villa's style (issue 31: its floor finishes and paint, building/materials.h); "" reads as modern.

@@ -256,6 +256,8 @@ class ContextBuilder {
     const std::vector<Segment>& exterior = Exterior(room.level);
     std::vector<EdgePiece> pieces = WallPieces(room.polygon, exterior, options_);
     c.free_floor = FreeFloor(room.polygon, pieces);
+    if (room.level < static_cast<int>(building_.wall_inner.size()))
+      c.free_floor = InsideWalls(std::move(c.free_floor), building_.wall_inner[room.level]);
     for (const Ring& r : c.free_floor) c.free_area += Area(r);
     if (c.free_floor.size() > 1) c.warnings.push_back("the free floor falls into " + std::to_string(c.free_floor.size()) + " pieces");
 
@@ -470,6 +472,18 @@ std::vector<Ring> FreeFloor(const Ring& polygon, const std::vector<EdgePiece>& p
     free = std::move(next);
   }
   return FromBoost(free, nullptr);
+}
+
+std::vector<Ring> InsideWalls(std::vector<Ring> free_floor, const Ring& wall_inner) {
+  if (wall_inner.size() < 3) return free_floor;
+  BPolygon outline = ToBoost(wall_inner);
+  if (!bg::is_valid(outline)) return free_floor;  // a self-crossing inset (a needle footprint): the bands alone
+  BMulti free = UnionOf(free_floor), inside;
+  bg::intersection(free, outline, inside);
+  // Only where the exterior walls reach past the room's own bands (a corner where the footprint turns):
+  // elsewhere the free floor stays exactly as its bands cut it.
+  if (AreaOf(free) - AreaOf(inside) < 1e-8) return free_floor;
+  return FromBoost(inside, nullptr);
 }
 
 Result<std::vector<RoomContext>> RoomContexts(const Layout& layout, const BuildingMesh& building,

@@ -121,5 +121,8 @@ struct EdgePiece {
 std::vector<EdgePiece> WallPieces(const Ring& polygon, const std::vector<Segment>& exterior_boundary,
                                   const BuildOptions& options);
 std::vector<Ring> FreeFloor(const Ring& polygon, const std::vector<EdgePiece>& pieces);
+// Third step: the free floor kept inside `wall_inner` (BuildingMesh::wall_inner of its level), where an
+// exterior wall beside the room reaches into its corner; unchanged where it does not.
+std::vector<Ring> InsideWalls(std::vector<Ring> free_floor, const Ring& wall_inner);
 
 }  // namespace villa::scene

@@ -55,6 +55,20 @@ TEST_CASE("A cup floating above a table falls and is reported, the table and a c
   CHECK(r.starts_inside == 0);
 }
 
+TEST_CASE("A settle stops once every free body sleeps, and runs the whole time while one still falls", "[physics]") {
+  const TriangleMesh crate = Box({-0.3, -0.3, 0}, {0.3, 0.3, 0.5}), lid = Box({-0.1, -0.1, 0.5}, {0.1, 0.1, 0.6});
+  auto rest = Settle(kFloor, {Body("crate", crate), Body("lid", lid)});
+  REQUIRE(rest.ok());
+  CHECK(rest->steps < 240);  // asleep within the first second of the two
+  CHECK(rest->strict == 2);
+  CHECK(rest->bodies[1].moved < 0.001);
+  // A box dropped from 30 m is still falling after 2 s (19.6 m): all 480 steps, and it fell that far.
+  auto fall = Settle(kFloor, {Body("crate", crate), Body("dropped", Box({1.0, 1.0, 30.0}, {1.2, 1.2, 30.2}))});
+  REQUIRE(fall.ok());
+  CHECK(fall->steps == 480);
+  CHECK(fall->bodies[1].shift.z == Approx(-0.5 * 9.81 * 4.0).epsilon(0.02));
+}
+
 TEST_CASE("A welded picture stays on its wall, the same picture unwelded falls to the floor", "[physics]") {
   const TriangleMesh picture = Box({-0.3, 0.97, 1.3}, {0.3, 1.0, 1.7});
   // A wall shelf with a cup on it: welded, it holds the cup; free, both fall.

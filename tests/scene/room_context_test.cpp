@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "layout/geometry.h"
+#include "layout/layout_io.h"
 #include "mesh/geometry2d.h"
 #include "scene/door_swing.h"
 #include "scene/room_context.h"
@@ -21,15 +22,16 @@ double TotalArea(const std::vector<Ring>& rings) {
 }
 
 // The inset of a CONVEX room by an independent route: the polygon clipped by each edge's inset half-plane
-// (for convex polygons the mitred inset is exactly that intersection).
-double ConvexInsetArea(const Ring& polygon, const std::vector<EdgePiece>& pieces) {
+// (for convex polygons the mitred inset is exactly that intersection), then the level's inner outline of
+// the exterior walls clipped to it (Sutherland-Hodgman: one piece for these rooms).
+double ConvexInsetArea(const Ring& polygon, const std::vector<EdgePiece>& pieces, const Ring& wall_inner) {
   Ring clipped = polygon;
   for (const EdgePiece& p : pieces) {
     Point a = polygon[p.edge], b = polygon[(p.edge + 1) % polygon.size()];
     Point in = geo::Left(geo::Unit(geo::Sub(b, a)));
     clipped = geo::ClipHalfPlane(clipped, geo::Add(a, geo::Scale(in, p.depth)), in);
   }
-  return Area(clipped);
+  return Area(geo::ClipConvex(wall_inner, clipped));
 }
 
 bool Contains(const std::vector<KeepOut>& zones, KeepOutKind kind, const std::string& element) {
@@ -84,6 +86,38 @@ TEST_CASE("free floor of an angled room follows the slanted wall", "[scene][cont
   CHECK(slanted == 1);
 }
 
+TEST_CASE("free floor keeps out of an exterior wall that crosses the room's corner", "[scene][context]") {
+  // The footprint turns 45 degrees at (2,0), the square room's corner, where an interior wall meets it:
+  // the slanted wall's inner face (x + y = 2 + 0.25 sqrt 2) cuts a triangle off the room's square corner
+  // (legs of a few cm between the interior wall's face and the bottom wall's face). A washer pushed into
+  // that corner started 2.8 mm inside the built wall (issue 28).
+  auto layout = ParseLayoutText(R"json({"rooms": {
+      "living-room_0/0": {"shape": "shapely.Polygon([(0, 2), (2, 0), (2, 4), (0, 4)])"},
+      "kitchen_0/0": {"shape": "shapely.box(2, 0, 6, 4)"}},
+    "entrance": {"main_door": {"shape": "shapely.LineString([(0, 3), (0, 2.5)])", "level": 0}},
+    "doors": {}, "opens": {"living0_kitchen0": {"shape": "shapely.LineString([(2, 3.5), (2, 2.5)])", "level": 0}},
+    "windows": {}, "interiors": {"wall_0": {"shape": "shapely.LineString([(2, 0), (2, 4)])", "level": 0}}})json",
+                                "inline");
+  REQUIRE(layout.ok());
+  BuiltLayout b = Built(std::move(*layout));
+  REQUIRE(b.building.wall_inner.size() == 1);
+  RoomContext c = ContextOf(b, "kitchen_0/0");
+  const double half = b.options.interior_wall_thickness / 2.0, t = b.options.exterior_wall_thickness;
+  const double diagonal = 2.0 + t * std::sqrt(2.0);  // x + y on the slanted wall's inner face
+  // The bands alone leave the square corner (2 + half, t); the wall takes the triangle beyond its face.
+  const double leg = diagonal - (2.0 + half) - t;
+  REQUIRE(leg > 0.02);
+  std::vector<EdgePiece> pieces = WallPieces(c.polygon, ExteriorBoundaryOf({b.layout.rooms[0].polygon, b.layout.rooms[1].polygon}, kTolerance).pieces, b.options);
+  const double banded = TotalArea(FreeFloor(c.polygon, pieces));
+  CHECK(c.free_area == Approx(banded - leg * leg / 2.0).margin(1e-9));
+  for (const Ring& ring : c.free_floor)
+    for (Point p : ring) CHECK(p.x + p.y >= diagonal - 1e-9);
+  // A room whose corners the exterior walls do not cross keeps the bands' floor exactly.
+  RoomContext living = ContextOf(b, "living-room_0/0");
+  std::vector<EdgePiece> living_pieces = WallPieces(living.polygon, ExteriorBoundaryOf({b.layout.rooms[0].polygon, b.layout.rooms[1].polygon}, kTolerance).pieces, b.options);
+  CHECK(living.free_area == Approx(TotalArea(FreeFloor(living.polygon, living_pieces))).margin(1e-12));
+}
+
 TEST_CASE("free floor of every convex fixture room matches the half-plane inset", "[scene][context]") {
   for (const char* file : {"tests/fixtures/layouts/villa_three_floors.json", "tests/fixtures/layouts/bungalow_angled.json",
                            "examples/three-floor-villa.json", "examples/l-shaped-house.json"}) {
@@ -102,7 +136,7 @@ TEST_CASE("free floor of every convex fixture room matches the half-plane inset"
       // An edge half exterior, half interior steps; half-planes cannot say that.
       if (pieces.size() != c.polygon.size()) continue;
       ++convex;
-      CHECK(c.free_area == Approx(ConvexInsetArea(c.polygon, pieces)).margin(1e-6));
+      CHECK(c.free_area == Approx(ConvexInsetArea(c.polygon, pieces, b.building.wall_inner[c.level])).margin(1e-6));
     }
     CHECK(convex > 0);
   }
@@ -115,8 +149,10 @@ TEST_CASE("wall pieces split an edge where it leaves the footprint", "[scene][co
   RoomContext c = ContextOf(b, "dining-room_0/0");
   CHECK(c.free_area == Approx((4.0 - 0.06 - 0.06) * (7.0 - 0.25 - 0.25)).margin(1e-6));
   // Living room: top edge y = 7 is interior over its whole length (bedroom and children's room above).
+  // At its corner (7,7) the footprint turns (the notch): the exterior walls' corner block, 0.25 m square,
+  // stands in the room's corner beyond the interior walls' 0.06 m.
   RoomContext living = ContextOf(b, "living-room_0/0");
-  CHECK(living.free_area == Approx((7.0 - 0.25 - 0.06) * (7.0 - 0.25 - 0.06)).margin(1e-6));
+  CHECK(living.free_area == Approx((7.0 - 0.25 - 0.06) * (7.0 - 0.25 - 0.06) - 0.19 * 0.19).margin(1e-6));
   // Children's room: x = 7 from y = 7 to 13 is exterior.
   RoomContext children = ContextOf(b, "children-room_0/0");
   CHECK(children.free_area == Approx((3.0 - 0.06 - 0.25) * (6.0 - 0.06 - 0.25)).margin(1e-6));
