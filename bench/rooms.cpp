@@ -131,6 +131,11 @@ int main(int argc, char** argv) {
     stability += fs.stability;
     starts_inside += fs.starts_inside, physics_removed += fs.physics_removed;
     physics_seconds += fs.physics_seconds, furnished_rooms += fs.furnished;
+    if (failing && furnished->physics)
+      for (const physics::GlbObjectMotion& o : furnished->physics->objects)
+        if (o.motion.start_depth > physics::kStartsInside)
+          lines.push_back(v.name + " " + o.id + ": starts " + FormatFixed(1000.0 * o.motion.start_depth, 1) + " mm inside " +
+                          o.motion.start_against);
     for (const solver::RoomReport& r : furnished->rooms) {
       if (!r.asked || !r.functional) continue;
       by_type[std::string(CategoryName(r.category))].Add(r);
@@ -160,7 +165,7 @@ int main(int argc, char** argv) {
               "another; %d optional pieces that moved taken out; settle %.2f s a room\n",
               stability.strict, stability.free, stability.loose, starts_inside, physics_removed, furnished_rooms ? physics_seconds / furnished_rooms : 0.0);
   if (failing) {
-    std::printf("\nrooms whose functional check fails (%zu):\n", lines.size());
+    std::printf("\nrooms whose functional check fails, and objects that start inside another (%zu):\n", lines.size());
     for (const std::string& l : lines) std::printf("  %s\n", l.c_str());
   }
   return 0;

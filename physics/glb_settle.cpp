@@ -176,8 +176,12 @@ nlohmann::ordered_json SettleSummaryJson(const GlbSettleSummary& s, const Settle
                     {"shift_m", {o->motion.shift.x, o->motion.shift.y, o->motion.shift.z}},
                     {"start_depth_m", o->motion.start_depth},
                     {"start_against", o->motion.start_against}});
+  nlohmann::ordered_json inside = nlohmann::ordered_json::array();
+  for (const auto& o : s.objects)
+    if (o.motion.start_depth > kStartsInside)
+      inside.push_back({{"id", o.id}, {"depth_m", o.motion.start_depth}, {"against", o.motion.start_against}});
   return {{"seconds_simulated", options.seconds}, {"all", StabilityJson(s.all)}, {"by_room_type", by_type},
-          {"movers", list}, {"starts_inside", s.starts_inside}, {"decals", s.decals},
+          {"movers", list}, {"starts_inside", s.starts_inside}, {"inside", inside}, {"decals", s.decals},
           {"convex_parts", s.parts}, {"static_triangles", s.static_triangles}, {"seconds", s.seconds}};
 }
 

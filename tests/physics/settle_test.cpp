@@ -171,6 +171,27 @@ TEST_CASE("A washbasin against a wall is welded (plumbed and bolted), the toilet
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("The physics summary lists each object that starts more than 2 mm inside another, with how deep", "[physics]") {
+  GlbSettleSummary s;
+  s.objects.resize(3);
+  s.objects[0].id = "bedroom_0/0/books-0";
+  s.objects[0].motion.start_depth = 0.0061;
+  s.objects[0].motion.start_against = "bedroom_0/0/nightstand-0";
+  s.objects[1].id = "bedroom_0/0/pillow-0";
+  s.objects[1].motion.start_depth = 0.0019;  // within the 2 mm tolerance: not listed
+  s.objects[2].id = "utility-room_0/0/washing-machine-0";
+  s.objects[2].motion.start_depth = 0.0028;
+  s.objects[2].motion.start_against = "building";
+  s.starts_inside = 2;
+  const auto j = SettleSummaryJson(s, SettleOptions{}, 10);
+  REQUIRE(j["inside"].size() == 2);
+  CHECK(j["inside"][0]["id"] == "bedroom_0/0/books-0");
+  CHECK(j["inside"][0]["depth_m"].get<double>() == Approx(0.0061));
+  CHECK(j["inside"][0]["against"] == "bedroom_0/0/nightstand-0");
+  CHECK(j["inside"][1]["id"] == "utility-room_0/0/washing-machine-0");
+  CHECK(j["inside"][1]["against"] == "building");
+}
+
 TEST_CASE("villa physics names a missing file and exits 2", "[physics][cli]") {
   const testing::CliRun missing = testing::RunVilla("physics /nonexistent/x.glb");
   CHECK(missing.status == 2);
@@ -193,6 +214,7 @@ TEST_CASE("villa physics settles a furnished room's .glb: everything stays withi
   CHECK(j["all"]["strict_share"].get<double>() >= 0.9);
   CHECK(j["by_room_type"].contains("living-room"));
   CHECK(j["decals"].get<int>() >= 1);  // the living room's rug
+  CHECK(j["inside"].size() == j["starts_inside"].get<size_t>());
   // The furnish report's physics is the same settle of the same bytes.
   std::ifstream in(dir / "report.json");
   const auto report = nlohmann::json::parse(in);
