@@ -54,8 +54,9 @@ std::vector<CategoryInfo> MakeTable() {
       {"counter", {"lower cabinet", "base cabinet", "kitchen counter", "kitchen cabinet", "worktop", "sink cabinet", "lower corner cabinet", "small lower cabinet"}, P::kFloor, {0.6, 0.6, 0.88}, {2.4, 0.65, 0.92}, kAll, true, true, Front(1.0), true, "counter"},
       {"upper-cabinet", {"wall cabinet", "upper shelves cabinet", "kitchen wall cabinet", "upper corner cabinet", "small upper cabinet"}, P::kWall, {0.4, 0.33, 0.6}, {1.2, 0.38, 0.9}, kConPro, true, true, std::nullopt, false, "wall-cabinet"},
       {"wall-shelf", {"floating shelf", "wall shelves"}, P::kWall, {0.6, 0.2, 0.04}, {1.2, 0.3, 0.3}, kConPro, true, false, std::nullopt, false, "wall-shelf"},
-      // ---- beds
-      {"bed", {"double bed", "queen bed", "king bed", "single bed"}, P::kFloor, {1.4, 1.95, 0.5}, {2.0, 2.2, 1.2}, kAll, true, false, InteractionZoneSpec{"sides", 0.6}, true, "bed"},
+      // ---- beds (a bed is planned a double, 1.4 m wide or more; narrower, down to a single of 0.9 m, only where
+      // no double stands clear of the doors: scene/planner.cpp BedFits)
+      {"bed", {"double bed", "queen bed", "king bed", "single bed"}, P::kFloor, {0.9, 1.95, 0.5}, {2.0, 2.2, 1.2}, kAll, true, false, InteractionZoneSpec{"sides", 0.6}, true, "bed"},
       {"child-bed", {"kids bed", "children bed", "bunk bed", "baby bed", "crib", "cot"}, P::kFloor, {0.8, 1.5, 0.5}, {1.2, 2.05, 1.7}, kAll, true, false, InteractionZoneSpec{"sides", 0.6}, true, "bed"},
       // ---- kitchen and laundry appliances
       {"fridge", {"refrigerator", "large fridge", "freezer"}, P::kFloor, {0.55, 0.6, 1.4}, {0.9, 0.75, 2.0}, kConInt, false, false, Front(1.0), true, "fridge"},

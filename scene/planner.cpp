@@ -23,6 +23,7 @@ constexpr double kWallGap = 0.05;           // m left beside each object against
 constexpr double kOnWallShare = 0.7;       // share of the free wall (not over windows) hung objects may take
 constexpr double kRugShare = 0.5;          // rugs cover at most half the furnishable floor
 constexpr double kSurfaceShare = 0.8;      // share of a parent's top small objects may cover
+constexpr double kDoubleBedWidth = 1.4;    // m: the narrowest bed planned unless no wider one fits (BedFits)
 constexpr double kTinyFootprint = 0.1;     // m2: slippers, a bin: they fit in what the floor share leaves
 
 // The parents a small object goes to when the room's priors do not say (a TV asked for in a bedroom).
@@ -255,6 +256,7 @@ class Planning {
     CompleteGroups();
     Settings();  // the place settings follow the seats CompleteGroups added
     Trim();
+    if (room_.category == Category::kBedroom) BedFits();  // a narrower bed leaves floor: nothing is added for it
     if (room_.category == Category::kBathroom && BathroomFixtures()) {
       Grow();  // what the fixtures left: towel racks, bottles on the basin instead of the cabinet's things
       Trim();
@@ -282,7 +284,9 @@ class Planning {
   Vec3 SizeOf(const CategoryInfo& c, int seats = 0) {
     double f = std::clamp(size_factor_ + 0.2 * (rng_.Unit() - 0.5), 0.0, 1.0);
     auto pick = [&](double lo, double hi) { return Round2(lo + f * (hi - lo)); };
-    Vec3 size{pick(c.size_min.x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
+    // A bed's range runs from a single to a king; it is planned a double or wider (BedFits narrows it).
+    const double usual_min_x = c.name == "bed" ? std::max(c.size_min.x, kDoubleBedWidth) : c.size_min.x;
+    Vec3 size{pick(usual_min_x, c.size_max.x), pick(c.size_min.y, c.size_max.y), pick(c.size_min.z, c.size_max.z)};
     // Issue 27: a narrow room gets the narrower pieces of the range, so that its essentials keep their
     // clearances: a bed a free long side of 0.6 m, a table a row of chairs with 0.75 m behind them (chair
     // 0.5 m, a 0.1 m gap) along its free side.
@@ -305,7 +309,7 @@ class Planning {
     }
     auto cap = [&](double& v, double lo, double limit) { v = std::max(lo, std::min(v, Round2(limit))); };
     if (clear_width_ > 0.0) {
-      if (c.name == "bed" || c.name == "child-bed") cap(size.x, c.size_min.x, clear_width_ - 0.65);
+      if (c.name == "bed" || c.name == "child-bed") cap(size.x, usual_min_x, clear_width_ - 0.65);
       if (c.name == "dining-table" || c.name == "conference-table") cap(size.y, c.size_min.y, clear_width_ - 1.4);
     }
     return size;
@@ -341,8 +345,10 @@ class Planning {
           if (s.left < n.size.x + kWallGap) continue;
           if (best < 0 || s.left < stretches_[best].left) best = i;
         }
-        // Too wide for every stretch: a narrower one of its kind, down to the category's smallest.
-        if (best < 0 && longest >= 0 && stretches_[longest].left - kWallGap >= n.info->size_min.x) {
+        // Too wide for every stretch: a narrower one of its kind, down to the category's smallest (a bed to a
+        // double's width: narrower only where BedFits finds no double clear of the doors).
+        const double narrowest = n.info->name == "bed" ? std::max(n.info->size_min.x, kDoubleBedWidth) : n.info->size_min.x;
+        if (best < 0 && longest >= 0 && stretches_[longest].left - kWallGap >= narrowest) {
           n.size.x = Round2(std::floor((stretches_[longest].left - kWallGap) * 100.0) / 100.0);
           best = longest;
         }
@@ -875,6 +881,38 @@ class Planning {
     onwall_left_ += m.size.x - width;
     m.onwall_taken -= m.size.x - width;
     m.size.x = width;
+  }
+
+  // Issue 27 (a bedroom keeps its bed): whether the planned bed stands with its head to a wall on open floor,
+  // clear of the doors' sweeps and the stairs (the bathroom's search, scene/bathroom_fit.h, with the bed as
+  // its one fixture); where it does not, the widest of 1.4, 1.2 and 0.9 m at the shortest length that does
+  // (a single bed in a walk-through room), one pillow on a single. True when the bed changed.
+  bool BedFits() {
+    const int bed = RootOf("bed");
+    if (bed < 0) return false;
+    Node& n = nodes_[bed];
+    auto fits = [&](double width, double length) {
+      return FitBathFixtures(room_, {BathFixture{"bed", width, length, n.size.z, 0.0}}).fits;
+    };
+    if (fits(n.size.x, n.size.y)) return false;
+    const double length = n.info->size_min.y;
+    for (double width : {kDoubleBedWidth, 1.2, n.info->size_min.x}) {
+      if (width >= n.size.x || width < n.info->size_min.x || !fits(width, length)) continue;
+      GiveBack(n);
+      const double before = n.size.x;
+      n.size.x = width;
+      n.size.y = length;
+      TakeRoom(n, n.origin == Origin::kPrompt);
+      if (width < 1.2) {  // one pillow on a single bed
+        int pillows = 0;
+        for (int j = 0; j < static_cast<int>(nodes_.size()); ++j)
+          if (!nodes_[j].removed && nodes_[j].parent == bed && nodes_[j].info->name == "pillow" && ++pillows > 1) RemoveWithChildren(j);
+      }
+      notes_.push_back("a bed " + FormatFixed(width, 2) + " m wide instead of " + FormatFixed(before, 2) +
+                       " m: no wider one stands with its head to a wall clear of the doors");
+      return true;
+    }
+    return false;
   }
 
   // A small bathroom's fixture set, chosen so that every fixture stands against a wall with its use zone

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/category.h"
+#include "scene/bathroom_fit.h"
 #include "scene/planner.h"
 #include "scene/priors.h"
 #include "scene/validate.h"
@@ -411,6 +412,41 @@ TEST_CASE("a living room's sofa stands free where no two facing walls hold it an
   }
 }
 
+TEST_CASE("A bedroom with no place for a double clear of its doors gets a single bed, a roomy one keeps its double",
+          "[scene][planner][issue27]") {
+  // bedroom_2/0 of bedroom_walkthrough.json: 6.5 m long, 1.5-2.5 m deep, a door at one end and one in its long
+  // wall: no bed 1.4 m wide stands with its head to a wall clear of both doors' sweeps (the premise, checked).
+  const BuiltLayout walk = LoadBuilt("tests/fixtures/layouts/bedroom_walkthrough.json");
+  const RoomContext c = ContextOf(walk, "bedroom_2/0");
+  const CategoryInfo* bed = FindCategory("bed");
+  REQUIRE(bed);
+  CHECK_FALSE(FitBathFixtures(c, {BathFixture{"bed", 1.4, bed->size_min.y, 0.7, 0.0}}).fits);
+  CHECK(FitBathFixtures(c, {BathFixture{"bed", 0.9, bed->size_min.y, 0.7, 0.0}}).fits);
+  const BuiltLayout wide = LoadBuilt("tests/fixtures/layouts/house_one_floor.json");
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    INFO("seed " << seed);
+    const RoomPlan plan = PlanOf(c, "", seed);
+    int beds = 0, pillows = 0;
+    for (const auto& o : plan.objects) {
+      if (o.category == "bed") {
+        ++beds;
+        CHECK(o.size.x < 1.4);
+        CHECK(o.size.x >= bed->size_min.x);
+        CHECK(o.size.y == Approx(bed->size_min.y));
+        CHECK(FitBathFixtures(c, {BathFixture{"bed", o.size.x, o.size.y, o.size.z, 0.0}}).fits);
+        for (const auto& p : plan.objects) pillows += p.category == "pillow" && p.parent == o.id;
+      }
+    }
+    CHECK(beds == 1);
+    CHECK(pillows <= 1);  // one pillow on a single
+    bool noted = false;
+    for (const std::string& n : plan.record.notes) noted = noted || n.find("no wider one stands with its head to a wall clear of the doors") != std::string::npos;
+    CHECK(noted);
+    for (const auto& o : PlanOf(ContextOf(wide, "bedroom_0/0"), "", seed).objects)
+      if (o.category == "bed") CHECK(o.size.x >= 1.4);
+  }
+}
+
 TEST_CASE("A narrow room gets the narrow end of the bed's sizes: a free long side of 0.6 m where the room is 2 m wide",
           "[scene][planner]") {
   // bedroom_0/0 of bedroom_narrow_strips.json is an L of 2 m wide strips (1.7 m of free floor across); the
@@ -426,8 +462,8 @@ TEST_CASE("A narrow room gets the narrow end of the bed's sizes: a free long sid
     for (const auto& o : PlanOf(ContextOf(wide, "bedroom_0/0"), "", seed).objects)
       if (o.category == "bed") wide_width = o.size.x;
     INFO("seed " << seed);
-    CHECK(narrow_width == Approx(bed->size_min.x));  // 1.7 - 0.65 is below the range: its narrowest
-    CHECK(wide_width > bed->size_min.x + 0.05);
+    CHECK(narrow_width == Approx(1.4));  // 1.7 - 0.65 is below a double's width: a double's (BedFits goes narrower)
+    CHECK(wide_width > 1.4 + 0.05);
   }
 }
 
