@@ -1879,8 +1879,11 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
   std::vector<MultiMove> layouts;
   // What carries things (a nightstand with its lamp and books) keeps its scale: smaller, its load would
   // no longer fit on it. The bed's pillows fit a smaller bed.
+  // A bed narrower than a double (the planner's single where no double fits, scene/planner.cpp BedFits)
+  // keeps its size: smaller it is no bed; its nightstands go without a place instead.
+  const bool bed_shrinks = bed.asset.size.x >= 1.4 - 1e-9;
   const auto scale_of = [&](int k, int shrink) {
-    const bool smallest = (shrink >= 1 && k == g.bed) || (shrink == 2 && room.children[k].empty());
+    const bool smallest = (shrink >= 1 && k == g.bed && bed_shrinks) || (shrink == 2 && room.children[k].empty() && k != g.bed);
     return smallest ? room.solution.objects[k].scale_min : room.solution.placements[k].pose.scale;
   };
   for (int shrink = 0; shrink <= 2; ++shrink) {

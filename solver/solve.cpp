@@ -1007,13 +1007,14 @@ struct RoomSolver::Impl {
   // when that frees a slot, each put back again, the most important first, while the slot stays free (a
   // bedroom keeps its bed and loses the wardrobe and the desk in its way, not its lamps). Empty when even
   // the emptied layer has no slot for i.
-  std::vector<int> MakeWayFor(int i) {
+  std::vector<int> MakeWayFor(int i, bool at_size = false) {
     const std::vector<int> pool = GiveWayPool(i);
     const std::string id = state.objects[i].id;
     // Tried at its smallest scale (a king-size bed in a 2 m wide room): the shrink comes after the room is made.
+    // `at_size`: at the scale it has (an essential keeps its size where optional pieces can make way).
     auto frees_at_smallest = [&](int j) {
       Pose small = state.placements[j].pose;
-      small.scale = std::min(small.scale, state.objects[j].scale_min);
+      if (!at_size) small.scale = std::min(small.scale, state.objects[j].scale_min);
       state.SetPose(j, small);
       return FindSlot(j).has_value();
     };
@@ -1092,8 +1093,8 @@ struct RoomSolver::Impl {
 
   // The removals that let protected object i find a slot (MakeWayFor), as actions: the first now, the
   // others queued for the next calls; none when none does.
-  std::optional<Action> MakeWayAction(int i) {
-    const std::vector<int> ks = MakeWayFor(i);
+  std::optional<Action> MakeWayAction(int i, bool at_size = false) {
+    const std::vector<int> ks = MakeWayFor(i, at_size);
     if (ks.empty()) return std::nullopt;
     const std::string reason_head = "make room for " + state.objects[i].id + " (" +
                                     std::string(PriorityName(state.objects[i].priority)) + "): remove ";
@@ -1156,6 +1157,15 @@ struct RoomSolver::Impl {
       if (n == 1) {
         ++n;
         if (o.scale_min < state.placements[i].pose.scale - 1e-9) {
+          // A single bed (an essential narrower than a double: the planner's where no double fits) keeps its size
+          // where optional pieces can make way for it: they go before it shrinks (issue 27: a 0.9 m single shrunk
+          // to 0.72 m is no bed). Other essentials shrink first, as before (making way first for every one
+          // turned three sofas from their TVs on the rooms bench).
+          if (o.priority == Priority::kEssential && o.category == "bed" && o.asset.size.x < 1.4 - 1e-9)
+            if (std::optional<Action> a = MakeWayAction(i, /*at_size=*/true)) {
+              n = 0;
+              return a;
+            }
           Action a;
           a.kind = ActionKind::kUpdateScale;
           a.id = id;

@@ -289,6 +289,34 @@ TEST_CASE("A reader with only furnished.glb finds every object where scene.json 
   }
 }
 
+TEST_CASE("A walk-through bedroom keeps a single bed at its full size, its pillow at the head", "[solver][furnish][issue27]") {
+  // bedroom_2/0 of bedroom_walkthrough.json holds no double clear of its doors: the planner gives it a single
+  // (0.9 x 1.95 m). The solver's agent once shrank it to 0.72 x 1.56 m to find a place, and the critic shrank
+  // it to lay out its nightstands; now optional pieces make way first and the critic keeps a single's size.
+  TempDir dir("walkthrough");
+  const Run run = Villa("furnish " + std::string(VILLA_FIXTURE_DIR) + "/layouts/bedroom_walkthrough.json -o " + dir.path.string() +
+                        " --room bedroom_2/0 --seed 2027 --force");
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  const auto scene = nlohmann::json::parse(Read(dir.path / "scene.json"));
+  const auto& objects = scene["objects"];
+  REQUIRE(objects.contains("bedroom_2/0/bed-0"));
+  const auto& bed = objects["bedroom_2/0/bed-0"];
+  CHECK(bed["size"][0].get<double>() == Approx(0.9));
+  CHECK(bed["size"][1].get<double>() == Approx(1.95));
+  // The pillow lies in the bed's back half (its head): the bed's front is its local -y.
+  int at_head = 0;
+  for (const auto& [id, o] : objects.items()) {
+    if (o.value("parent", "") != "bedroom_2/0/bed-0" || o.value("category", "") != "pillow") continue;
+    const double yaw = bed["pose"]["yaw"].get<double>() * std::numbers::pi / 180.0;
+    const double dx = o["pose"]["x"].get<double>() - bed["pose"]["x"].get<double>();
+    const double dy = o["pose"]["y"].get<double>() - bed["pose"]["y"].get<double>();
+    const double local_y = -std::sin(yaw) * dx + std::cos(yaw) * dy;
+    at_head += local_y > 0.3;
+  }
+  CHECK(at_head == 1);
+}
+
 TEST_CASE("villa furnish --no-reach skips reachability: RCH and ACC not measured, no feedback", "[solver][furnish]") {
   TempDir dir("noreach");
   Run run = Villa("furnish " + kHouse + " --procedural --seed 3 -o " + dir.path.string() + " --no-reach");
