@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/category.h"
 #include "bench/support/furnish_setup.h"
 #include "bench/support/villas.h"
 #include "critic/critic.h"
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   int reach_rooms = 0, rooms_reachable = 0, reach_zones = 0, zones_reachable = 0, removed = 0;
   physics::StabilityCount stability;
   int starts_inside = 0, physics_removed = 0, furnished_rooms = 0;
+  int beds = 0, short_beds = 0;  // adult beds, and those shorter or narrower than a single (0.9 x 1.95 m)
   double physics_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (size_t index = 0; index < all.size(); ++index) {
@@ -131,6 +133,16 @@ int main(int argc, char** argv) {
     stability += fs.stability;
     starts_inside += fs.starts_inside, physics_removed += fs.physics_removed;
     physics_seconds += fs.physics_seconds, furnished_rooms += fs.furnished;
+    if (const CategoryInfo* bed = FindCategory("bed"))
+      for (const scene::SceneObject& o : furnished->scene.objects)
+        if (o.category == "bed" && o.pose) {
+          ++beds;
+          const bool small = o.size.x < bed->size_min.x - 1e-6 || o.size.y < bed->size_min.y - 1e-6;
+          short_beds += small;
+          if (small && failing)
+            lines.push_back(v.name + " " + o.id + ": a bed of " + FormatFixed(o.size.x, 2) + " x " + FormatFixed(o.size.y, 2) +
+                            " m, smaller than a single (" + FormatFixed(bed->size_min.x, 2) + " x " + FormatFixed(bed->size_min.y, 2) + ")");
+        }
     if (failing && furnished->physics)
       for (const physics::GlbObjectMotion& o : furnished->physics->objects)
         if (o.motion.start_depth > physics::kStartsInside)
@@ -159,6 +171,7 @@ int main(int argc, char** argv) {
   std::printf("mean NO over living, dining, bed, kitchen and children's rooms: %.1f (%d rooms); %.1f s wall\n",
               rich_rooms ? rich_objects / rich_rooms : 0.0, rich_rooms, wall);
   std::printf("%s\n", total.f.Line().c_str());
+  std::printf("beds: %d of %d smaller than a single bed's 0.9 x 1.95 m (shrunk to fit)\n", short_beds, beds);
   std::printf("reach: %d/%d rooms, %d/%d zones reachable; %d objects removed by the solver (agent, critic, reach, physics)\n",
               rooms_reachable, reach_rooms, zones_reachable, reach_zones, removed);
   std::printf("physics (2 s in Bullet): %d/%d free objects strict (1 cm, 0.1 rad), %d loose (20 cm, 8 deg), %d start inside "

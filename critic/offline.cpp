@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "assets/category.h"
 #include "critic/observation.h"
 #include "layout/geometry.h"
 #include "mesh/geometry2d.h"
@@ -1879,9 +1880,12 @@ std::vector<std::vector<Step>> BedGroupMoves(const Room& room, const BedGroup& g
   std::vector<MultiMove> layouts;
   // What carries things (a nightstand with its lamp and books) keeps its scale: smaller, its load would
   // no longer fit on it. The bed's pillows fit a smaller bed.
-  // A bed narrower than a double (the planner's single where no double fits, scene/planner.cpp BedFits)
-  // keeps its size: smaller it is no bed; its nightstands go without a place instead.
-  const bool bed_shrinks = bed.asset.size.x >= 1.4 - 1e-9;
+  // A bed is not shrunk below a single bed's length (1.95 m) nor a single below its size (the planner's where
+  // no double fits, scene/planner.cpp BedFits): smaller it is no adult's bed; a nightstand stays unmended
+  // instead (issue 27).
+  const CategoryInfo* bed_info = FindCategory(bed.category);
+  const bool bed_shrinks = bed.asset.size.x >= 1.4 - 1e-9 &&
+                           (!bed_info || bed.asset.size.y * bed.scale_min >= bed_info->size_min.y - 1e-9);
   const auto scale_of = [&](int k, int shrink) {
     const bool smallest = (shrink >= 1 && k == g.bed && bed_shrinks) || (shrink == 2 && room.children[k].empty() && k != g.bed);
     return smallest ? room.solution.objects[k].scale_min : room.solution.placements[k].pose.scale;

@@ -1157,11 +1157,11 @@ struct RoomSolver::Impl {
       if (n == 1) {
         ++n;
         if (o.scale_min < state.placements[i].pose.scale - 1e-9) {
-          // A single bed (an essential narrower than a double: the planner's where no double fits) keeps its size
-          // where optional pieces can make way for it: they go before it shrinks (issue 27: a 0.9 m single shrunk
-          // to 0.72 m is no bed). Other essentials shrink first, as before (making way first for every one
-          // turned three sofas from their TVs on the rooms bench).
-          if (o.priority == Priority::kEssential && o.category == "bed" && o.asset.size.x < 1.4 - 1e-9)
+          // A bed (the bedroom's essential) keeps its size where optional pieces can make way for it: they go
+          // before it shrinks (issue 27: at 0.8 a double is 1.6-1.7 m long, a 0.9 m single 0.72 m wide: no
+          // adult's bed; half the rooms bench's beds were so). Other essentials shrink first, as before
+          // (making way first for every one turned three sofas from their TVs on the rooms bench).
+          if (o.priority == Priority::kEssential && o.category == "bed")
             if (std::optional<Action> a = MakeWayAction(i, /*at_size=*/true)) {
               n = 0;
               return a;

@@ -143,8 +143,10 @@ namespace villa {
 
 // villa-000006 of `villa synth --count 50 --seed 7` (the bench's set): its 11.2 m2 bedroom_0/0 puts the bed
 // where its wall has no room for a nightstand beside it and the painting cannot hang centred above it.
-// No single move mends that: the bed must move (here smaller) with its nightstand and painting.
-TEST_CASE("The offline critic lays a bed out again with its nightstand and painting where one move cannot mend them", "[critic][offline][bed]") {
+// No single move mends that, and the group move that did shrank the bed to 0.8 (1.6-1.7 m long: no adult's
+// bed; half the rooms bench's beds were so). A double is not shrunk below a single's 1.95 m length for its
+// group: the nightstand stays unmended rather than the bed too short (issue 27).
+TEST_CASE("The offline critic does not shrink a bed below a single bed's length to lay out its nightstand and painting", "[critic][offline][bed]") {
   const auto [room, record, totals, first] = testing::FurnishFixtureRoom("bedroom_no_wall_for_nightstand.json", "bedroom_0/0", false);
   INFO(record.dump(1));
   const auto lines = [](const nlohmann::json& unmet, const std::string& what) {
@@ -155,23 +157,16 @@ TEST_CASE("The offline critic lays a bed out again with its nightstand and paint
   // The solver alone leaves the nightstand away from the bed and the painting off its axis ...
   REQUIRE(lines(record["relations_before"]["unmet"], "nightstand-0 next_to bedroom_0/0/bed-0") == 1);
   REQUIRE(lines(record["relations_before"]["unmet"], "painting-0 centered bedroom_0/0/bed-0") == 1);
-  // ... the critic's group move mends both and breaks nothing of the bed's group.
-  CHECK(lines(record["relations_after"]["unmet"], "nightstand") == 0);
-  CHECK(lines(record["relations_after"]["unmet"], "painting") == 0);
-  CHECK(record["relations_after"]["satisfied"] == record["relations_after"]["measured"]);
-  CHECK(record["relations_after"]["measured"] == record["relations_before"]["measured"]);
-  bool group = false;
-  for (const auto& r : record["rounds"]) group = group || r.value("kept", 0) > 0;
-  CHECK(group);
+  // ... the critic does not shrink the bed for them, and leaves nothing worse.
+  int shrunk = 0;
+  for (const auto& a : room["actions"])
+    shrunk += a.value("id", "") == "bedroom_0/0/bed-0" && a.value("action", "") == "update_scale" &&
+              a.value("reason", "").rfind("critic:", 0) == 0;
+  CHECK(shrunk == 0);
+  CHECK(record["relations_after"]["satisfied"].get<int>() >= record["relations_before"]["satisfied"].get<int>());
   CHECK(totals["CR"] == 0.0);
   CHECK(totals["FR"] == 0.0);
   CHECK(totals["OBR"] == 0.0);
-  // The round log names the move.
-  REQUIRE(first.is_object());
-  bool laid_out = false;
-  for (const auto& a : first["attempts"])
-    laid_out = laid_out || (a["problem"].get<std::string>().find("bed-0 laid out again") != std::string::npos && a["kept"].get<bool>());
-  CHECK(laid_out);
 }
 
 }  // namespace villa
