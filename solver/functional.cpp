@@ -116,11 +116,14 @@ class Checker {
       if (const double g = Gap(from, *t); g < gap) gap = g, best = t;
     return best;
   }
-  // The notes that speak of a category ("no room for bed (0 of 1)"), joined.
-  std::string NotesAbout(std::string_view category) const {
+  // The notes that speak of a category ("no room for bed (0 of 1)"), each once (a removal the reachability
+  // feedback repeated round after round is one note), joined; `seen` carries the notes already said.
+  std::string NotesAbout(std::string_view category, std::set<std::string>* seen = nullptr) const {
+    std::set<std::string> local;
+    if (!seen) seen = &local;
     std::string why;
     for (const std::string& n : in_.notes)
-      if (n.find(category) != std::string::npos) why += (why.empty() ? "" : "; ") + n;
+      if (n.find(category) != std::string::npos && seen->insert(n).second) why += (why.empty() ? "" : "; ") + n;
     return why;
   }
 
@@ -133,7 +136,7 @@ class Checker {
       if (n >= e.count) continue;
       out_.missing.emplace_back(e.name);
       for (std::string_view c : e.categories) {
-        const std::string why = NotesAbout(c);
+        const std::string why = NotesAbout(c, &said_);
         if (!why.empty()) out_.missing_why += (out_.missing_why.empty() ? "" : "; ") + why;
       }
     }
@@ -483,6 +486,7 @@ class Checker {
   const scene::RoomContext& room_;
   std::vector<Item> items_;
   std::set<const Item*> seated_;  // chairs already counted at a table or a desk
+  std::set<std::string> said_;    // notes already in out_.missing_why
   FunctionalCheck out_;
 };
 

@@ -457,8 +457,9 @@ bool FarPair(const RoomState& state, int object) {
 double DistanceToPolygon(Point p, const Ring& ring) { return PointInRing(p, ring, 0.0) ? 0.0 : DistanceToBoundary(p, ring); }
 
 // Free floor before a body standing at candidate c: from the middle of its front face straight ahead to the
-// edge of the region (m).
-double FloorAhead(const Layer& layer, const Body& b, const Candidate& c) {
+// edge of the region (m); `hit`, where given, gets the point of that edge it meets and `along` the edge's
+// direction there.
+double FloorAhead(const Layer& layer, const Body& b, const Candidate& c, Point* hit = nullptr, Point* along = nullptr) {
   const Point f{std::sin(c.yaw), -std::cos(c.yaw)};
   const Point from = geo::Add({c.x, c.y}, geo::Scale(f, Extent(b.hx * b.s[0], b.hy * b.s[0], c.yaw, f)));
   double best = 1e9;
@@ -469,14 +470,39 @@ double FloorAhead(const Layer& layer, const Body& b, const Candidate& c) {
     if (std::abs(den) < 1e-12) continue;
     const Point w = geo::Sub(a, from);
     const double t = geo::Cross(w, e) / den, u = geo::Cross(w, f) / den;
-    if (t > 1e-6 && u >= -1e-9 && u <= 1.0 + 1e-9) best = std::min(best, t);
+    if (t > 1e-6 && u >= -1e-9 && u <= 1.0 + 1e-9 && t < best) {
+      best = t;
+      if (hit) *hit = geo::Add(from, geo::Scale(f, t));
+      if (along) *along = geo::Unit(e);
+    }
   }
   return best;
 }
 
+// Whether an object `width` x `depth` can stand with its back to the region's edge at `hit` (running along
+// `along`), its centre within `slide` of that point, clear of the doors' sweeps and strips and the open
+// passages: a TV stand where the sofa looks (a wall that is mostly a door or an opening holds none).
+bool WallTakes(const RoomState& state, Point hit, Point along, Point into, double width, double depth, double slide) {
+  for (double s : {0.0, 0.25, -0.25, 0.5, -0.5, 0.75, -0.75, 1.0, -1.0}) {
+    if (std::abs(s) > slide + 1e-9) continue;
+    bool clear = true;
+    for (double across : {-0.5, -0.25, 0.0, 0.25, 0.5})
+      for (double in : {0.1, 0.5, 0.9}) {
+        const Point p = geo::Add(geo::Add(hit, geo::Scale(along, s + across * width)), geo::Scale(into, in * depth));
+        for (const KeepOut& k : state.problem->keep_outs) {
+          const bool door = k.kind == KeepOutKind::kDoorSweep || k.kind == KeepOutKind::kDoorStrip || k.kind == KeepOutKind::kOpenPassage;
+          if (door && PointInRing(p, k.polygon, 0.0)) clear = false;
+        }
+      }
+    if (clear) return true;
+  }
+  return false;
+}
+
 // Issue 27: a body something is to stand before from afar (the sofa of a TV stand 2-3 m before it) prefers
 // poses facing a wall at that distance plus the far object's depth, so the group finds its place: 0 within
-// the range, growing by the metre outside it.
+// the range, growing by the metre outside it; a sofa facing a wall the stand cannot stand against (a door, an
+// opening there) as if the wall were 1.5 m off the range.
 double FacingPreference(const Layer& layer, int self, const RoomState& state, const Candidate& c) {
   const Body& b = layer.bodies[self];
   // The stand placed before its sofa (the cycle of their relations broken by rank) likewise prefers floor
@@ -486,9 +512,17 @@ double FacingPreference(const Layer& layer, int self, const RoomState& state, co
   const bool stand = !far;
   if (stand) far = FarFrontOf(state, b.object, true);
   if (!far) return 0.0;
-  const double depth = far->source >= 0 ? state.objects[far->source].asset.size.y * state.objects[far->source].scale_min + 0.05 : 0.5;
-  const double ahead = FloorAhead(layer, b, c) - depth;
-  return 2.0 * (std::max(0.0, far->min_gap - ahead) + (stand ? 0.0 : std::max(0.0, ahead - far->max_gap)));
+  const Vec3 size = far->source >= 0 ? state.objects[far->source].asset.size * state.objects[far->source].scale_min : Vec3{0.0, 0.45, 0.0};
+  const double depth = size.y + 0.05;
+  Point hit{}, along{};
+  const double ahead = FloorAhead(layer, b, c, &hit, &along) - depth;
+  double pref = 2.0 * (std::max(0.0, far->min_gap - ahead) + (stand ? 0.0 : std::max(0.0, ahead - far->max_gap)));
+  if (!stand && far->source >= 0 && ahead < 1e8) {
+    const Point f{std::sin(c.yaw), -std::cos(c.yaw)};
+    // The stand's centre within the sofa's width (the TV stand template's rule).
+    if (!WallTakes(state, hit, along, geo::Scale(f, -1.0), size.x, size.y, b.hx * b.s[0])) pref += 3.0;
+  }
+  return pref;
 }
 
 // The planner's placement hints (scene/scene.h) as soft preferences on a room candidate, in the units of
@@ -568,11 +602,22 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
       return true;
     }
     case GroupRole::kCoffeeTable: {
-      // Centred before the sofa, 0.45-0.6 m from its front (the priors' front_of gap), turned like it.
-      for (double g : {0.5, 0.45, 0.55, 0.6}) {
+      // Centred before the sofa, 0.45-0.6 m from its front (the priors' front_of gap), turned like it; 0.3 m
+      // behind those in a narrow room, where the floor before the screen is too short for the sofa, a table
+      // 0.45 m before it and the 0.5 m before the stand (a 2.5 m deep living room).
+      bool narrow = false;
+      if (const std::optional<FarFront> far = FarFrontOf(state, m.hub); far && far->source >= 0)
+        if (const int sb = layer.body_of[far->source]; sb >= 0 && layer.bodies[sb].active) {
+          const Body& stand = layer.bodies[sb];
+          const OrientedBox st = LayerBox(stand);
+          narrow = FloorAhead(layer, stand, {st.c.x, st.c.y, stand.p[2], st.yaw, -1, 0.0}) < 2.0 * box.hy + 0.45 + 2.0 * cy + 0.5 + 0.1;
+        }
+      for (double g : {0.5, 0.45, 0.55, 0.6, 0.3}) {
+        if (g < 0.4 && !narrow) continue;
         const Point c = geo::Add(box.c, geo::Scale(v, -(box.hy + g + cy)));
-        add(c, box.yaw, 0.05 * std::abs(g - 0.5));
-        add(c, box.yaw + kPi, 0.05 * std::abs(g - 0.5) + 0.01);
+        const double pref = 0.05 * std::abs(g - 0.5) + (g < 0.45 ? 0.5 : 0.0);
+        add(c, box.yaw, pref);
+        add(c, box.yaw + kPi, pref + 0.01);
       }
       return true;
     }
@@ -626,15 +671,16 @@ bool TemplateCandidates(const Layer& layer, int self, const RoomState& state, co
           const double ahead = geo::Dot(to, front), across = std::abs(geo::Dot(to, u));
           const double stand_depth = Extent(cx, cy, c.yaw, front);
           const double g = ahead - box.hy - stand_depth;
-          // 2-3 m (the priors' front_of gap); 1.2-3.4 m behind those where the walls allow no better.
-          if (g < 1.2 || g > 3.4 || across > box.hx) continue;
+          // 2-3 m (the priors' front_of gap); 1.0-3.4 m behind those where the walls allow no better (a
+          // narrow room's sofa on one long wall, the screen on the other).
+          if (g < 1.0 || g > 3.4 || across > box.hx) continue;
           const double angle = std::atan2(across, ahead);
           if (angle > 20.0 * kPi / 180.0) continue;
           // And the screen turned to the sofa within the critic's 30 degrees: a stand on a side wall ahead
           // (the wall of a passage the sofa looks down) shows the sofa its end.
           const Point shows{std::sin(c.yaw), -std::cos(c.yaw)};
           if (geo::Dot(shows, geo::Unit(geo::Scale(to, -1.0))) < std::cos(30.0 * kPi / 180.0)) continue;
-          c.pref += angle + 0.1 * std::abs(g - 2.4) + (g < 2.0 || g > 3.0 ? 1.0 : 0.0);
+          c.pref += angle + 0.1 * std::abs(g - 2.4) + (g < 2.0 || g > 3.0 ? 1.0 : 0.0) + (g < 1.2 ? 0.5 : 0.0);
           out.push_back(c);
         }
       }
@@ -671,7 +717,9 @@ bool SofaBeforeScreen(const Layer& layer, int self, const RoomState& state, cons
   std::vector<std::pair<double, double>> gaps;  // gap, preference
   for (double g : {2.0, 2.2, 2.4, 2.6, 2.8, 3.0}) gaps.push_back({g, 0.1 * std::abs(g - 2.4)});
   for (double g : {1.4, 1.7, 3.2}) gaps.push_back({g, 0.5 + 0.1 * std::abs(g - 2.4)});
-  if (const double g = floor_ahead - 2.0 * cy - 0.05; g >= 1.4 && g <= 3.4) gaps.push_back({g, g < 2.0 || g > 3.0 ? 0.3 : -0.1});
+  // Back to the wall behind: down to 1.0 m before the stand in a narrow room (a sofa on one long wall, the
+  // screen on the other, as in a 2.5 m deep living room), which the check's 1.4 m between centres still holds.
+  if (const double g = floor_ahead - 2.0 * cy - 0.05; g >= 1.0 && g <= 3.4) gaps.push_back({g, g < 2.0 || g > 3.0 ? 0.3 : -0.1});
   for (const auto& [g, pref] : gaps)
     for (double lateral : {0.0, 0.2, -0.2}) {
       const Point c = geo::Add(geo::Add(box.c, geo::Scale(ahead, box.hy + g + cy)), geo::Scale(u, lateral));

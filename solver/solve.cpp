@@ -739,6 +739,25 @@ struct RoomSolver::Impl {
     return !surplus.empty();
   }
 
+  // A dining or meeting room whose table has no place keeps none of its chairs (issue 27: no chair stands
+  // farther than 1.5 m from a table): a chair is there to sit at the table, and the room is reported without
+  // its table (the functional check's essentials say so).
+  bool TablelessRoom() const {
+    const std::string& room = state.problem->room;
+    if (!room.starts_with("dining-room_") && !room.starts_with("meeting-room_")) return false;
+    return std::none_of(state.objects.begin(), state.objects.end(),
+                        [](const ProblemObject& o) { return o.category == "dining-table" || o.category == "conference-table"; });
+  }
+  static bool IsChair(const ProblemObject& o) { return o.category == "chair" || o.category == "office-chair"; }
+  bool DropTablelessChairs() {
+    if (!TablelessRoom()) return false;
+    std::vector<std::string> chairs;
+    for (const ProblemObject& o : state.objects)
+      if (IsChair(o)) chairs.push_back(o.id);
+    for (const std::string& id : chairs) TakeRemoval(id, "its table has no place in the room: left out with it");
+    return !chairs.empty();
+  }
+
   // How many of the room's group members break their group's rules now; with `seats`, a dining or meeting
   // chair without its 0.75 m behind it counts too (a table moved for a relation must not cram its chairs).
   // A side table's trouble weighs 1, the rest 3 (a sofa turned from its TV is worse than a side table
@@ -1525,7 +1544,8 @@ struct RoomSolver::Impl {
   // tables and armchairs carried along (re-seated from their templates where they collide; an optional one
   // with no place left out). Kept where nothing collides (the exact check has the last word) and the groups
   // break fewer rules. True when one held.
-  bool FaceTv(int sofa, int stand, const std::string& why) {
+  // `slides`: the stand may slide along its wall; `trouble`: the group rules broken to better (-1: now).
+  bool FaceTv(int sofa, int stand, const std::string& why, bool slides = true, int trouble = -1) {
     const std::string sofa_id = state.objects[sofa].id, stand_id = state.objects[stand].id;
     const OrientedBox st = state.WorldBox(stand), so = state.WorldBox(sofa);
     const Point f = st.Front(), u = st.U();
@@ -1535,10 +1555,10 @@ struct RoomSolver::Impl {
     for (int j : MembersOf(sofa))
       if (state.objects[j].relation != Relation::kAgainstWall) carried.push_back(state.objects[j].id);
     const RoomState saved = state;
-    const int trouble = GroupTrouble();
+    if (trouble < 0) trouble = GroupTrouble();
     for (double side : {0.0, 0.3, -0.3, 0.6, -0.6, 0.9, -0.9, 1.2, -1.2, 1.5, -1.5})
       for (bool slide : {true, false}) {   // the stand slid along its wall by as much, or where it stands
-        if (slide && side == 0.0) continue;
+        if (slide && (side == 0.0 || !slides)) continue;
         state = saved;
         if (slide) {
           Pose to = stand_from;
@@ -1598,20 +1618,77 @@ struct RoomSolver::Impl {
     return false;
   }
 
+  // Issue 27: a sofa that cannot face its TV from anywhere before the stand's wall (a slanted wall that faces
+  // a near one, a stretch the sofa cannot stand 2 m before): the stand to each other place with its back to
+  // a wall, every 0.5 m along each, and the sofa with its group floated before it (FaceTv), the first where
+  // the room's groups break fewer rules and the exact check is clean. True when one held.
+  bool StandElsewhere(int sofa, int stand, const std::string& why) {
+    const std::string sofa_id = state.objects[sofa].id, stand_id = state.objects[stand].id;
+    const RoomState saved = state;
+    const int trouble = GroupTrouble();
+    const Pose home = state.placements[stand].pose;
+    const OrientedBox box = state.WorldBox(stand);
+    const double off_wall = state.objects[stand].wall_gap + box.hy;
+    for (size_t w = 0; w < problem.walls.size(); ++w) {
+      const WallEdge& wall = problem.walls[w];
+      const Point d = geo::Unit(geo::Sub(wall.b, wall.a)), n = geo::Left(d);
+      const double length = geo::Dist(wall.a, wall.b);
+      for (double t = box.hx + 0.05; t <= length - box.hx - 0.05 + 1e-9; t += 0.5) {
+        state = saved;
+        const int k = state.Find(stand_id);
+        Pose to = home;
+        to.yaw = std::atan2(n.x, -n.y);  // its front into the room
+        state.SetPose(k, to);            // turned first, then its box centred where it goes
+        const Point target = geo::Add(geo::Add(wall.a, geo::Scale(d, t)), geo::Scale(n, off_wall));
+        const Point now = state.WorldBox(k).c;
+        to.x += target.x - now.x;
+        to.y += target.y - now.y;
+        state.SetPose(k, to);
+        state.placements[k].wall = static_cast<int>(w);
+        if (CostAt(k).hard > kHairline) continue;
+        const size_t logged = summary.actions.size();
+        if (!FaceTv(state.Find(sofa_id), k, why, /*slides=*/false, trouble)) continue;
+        // The stand's move logged before the sofa's.
+        const RoomState placed = state;
+        ActionResult r;
+        r.action.kind = ActionKind::kUpdatePose;
+        r.action.id = stand_id;
+        r.action.pose = to;
+        r.action.reason = "the sofa cannot face its TV where it stands (" + why + "): the TV stand to another wall, the sofa before it";
+        r.status = ActionStatus::kApplied;
+        r.message = "done";
+        r.final_pose = to;
+        summary.actions.insert(summary.actions.begin() + static_cast<long>(logged), r);
+        state = placed;
+        return true;
+      }
+    }
+    state = saved;
+    return false;
+  }
+
   // Object k to its best free place (FindSlot) when the room's groups break fewer rules there (GroupTrouble)
   // and the move is applied; else nothing changes (the state and the removals as they were).
-  bool MoveIfTidier(int k, const std::string& reason) {
+  // `scale`: at that scale (a TV stand at its smallest, for a short stretch of wall between two doors).
+  bool MoveIfTidier(int k, const std::string& reason, std::optional<double> scale = std::nullopt) {
+    const RoomState saved = state;
+    if (scale) {
+      Pose smaller = state.placements[k].pose;
+      smaller.scale = *scale;
+      state.SetPose(k, smaller);
+    }
     strict_groups = true;
     const std::optional<Slot> slot = FindSlot(k);
     strict_groups = false;
+    if (scale) state = saved;
     if (!slot) return false;
     Action a;
     a.kind = ActionKind::kUpdatePose;
     a.id = state.objects[k].id;
     a.pose = slot->pose;
+    if (scale) a.scale = *scale;
     if (slot->wall >= 0) a.wall = slot->wall;
     a.reason = reason;
-    const RoomState saved = state;
     const size_t removed = summary.removed.size();
     const int before = GroupTrouble(/*seats=*/true);
     const bool clean = metrics.Clean();
@@ -1625,6 +1702,22 @@ struct RoomSolver::Impl {
     }
     state = saved;
     summary.removed.resize(removed);
+    return false;
+  }
+
+  bool SmallerStand(int stand, const std::string& why) {
+    const double smallest = state.objects[stand].scale_min;
+    if (state.placements[stand].pose.scale <= smallest + 1e-9) return false;
+    const std::string id = state.objects[stand].id, reason = "out of its group (" + why + "): smaller, to its best free place by its hub";
+    if (MoveIfTidier(stand, reason, smallest)) return true;
+    std::vector<std::string> ornaments;
+    for (int c : state.children[stand])
+      if (state.objects[c].category != "tv" && !IsProtected(state.objects[c].priority)) ornaments.push_back(state.objects[c].id);
+    if (ornaments.empty()) return false;
+    const Mark before = Here();
+    for (const std::string& o : ornaments) TakeRemoval(o, "no room beside the TV on " + id + " made smaller to face its sofa: left out");
+    if (const int k = state.Find(id); k >= 0 && MoveIfTidier(k, reason, smallest)) return true;
+    Rewind(before);
     return false;
   }
 
@@ -1736,6 +1829,7 @@ struct RoomSolver::Impl {
       changed = true;
     }
     changed = DropUnseatedSettings() || changed;
+    changed = DropTablelessChairs() || changed;
     // The other members out of their group's rules (a TV stand off the sofa's axis, a nightstand at the
     // bed's foot): with `moves`, to their best free place by the hub when it holds them (for a TV stand,
     // else the sofa with its group to its best free place); else an optional one is left out.
@@ -1763,6 +1857,17 @@ struct RoomSolver::Impl {
           continue;
         }
         if (m.role == GroupRole::kTvStand && FaceTv(m.hub, j, why)) {
+          changed = true;
+          continue;
+        }
+        // A smaller stand where the wall before the sofa has only a short stretch between its doors; the
+        // ornaments beside its TV left out where the smaller top has no room for them (Refill puts back
+        // what fits).
+        if (m.role == GroupRole::kTvStand && SmallerStand(j, why)) {
+          changed = true;
+          continue;
+        }
+        if (m.role == GroupRole::kTvStand && StandElsewhere(m.hub, j, why)) {
           changed = true;
           continue;
         }
@@ -2024,6 +2129,7 @@ struct RoomSolver::Impl {
     for (int round = 0; round < 2; ++round)  // a parent put back in the first round brings its children in the second
       for (const ProblemObject& original : problem.objects) {
         if (state.Find(original.id) >= 0 || original.category == "pillow" || tried.count(original.id)) continue;
+        if (IsChair(original) && TablelessRoom()) continue;  // nothing to sit at (DropTablelessChairs)
         if (!scene::IsRootParent(original.parent) && state.Find(original.parent) < 0) continue;
         tried.insert(original.id);
         const Mark before = Here();

@@ -145,6 +145,12 @@ TEST_CASE("A room type's essentials: a bedroom without its bed, a dining room wi
   bedroom.objects.push_back(Put("bed-0", 2, 1.1, 180, 1.6, 2.0, 0.5));
   CHECK(bedroom.Check().essentials_ok());
 
+  // A removal the reachability feedback repeated round after round is said once.
+  bedroom.objects.pop_back();
+  bedroom.notes = {"removed r/bed-0: in the way", "removed r/rug-0: makes room for r/bed-0", "removed r/bed-0: in the way",
+                   "removed r/rug-0: makes room for r/bed-0"};
+  CHECK(bedroom.Check().missing_why == "removed r/bed-0: in the way; removed r/rug-0: makes room for r/bed-0");
+
   Case dining = Dining();
   dining.objects.resize(2);  // the table and one chair: two needed
   CHECK(dining.Check().missing == std::vector<std::string>{"dining chairs"});

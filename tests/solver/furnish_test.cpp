@@ -317,6 +317,70 @@ TEST_CASE("A walk-through bedroom keeps a single bed at its full size, its pillo
   CHECK(at_head == 1);
 }
 
+// One room of a fixture layout furnished by the CLI (seed 2027): its report.json entry and scene.json's
+// objects.
+struct FixtureRoom {
+  nlohmann::json room, objects;
+};
+FixtureRoom FurnishFixtureRoom(const std::string& layout, const std::string& room) {
+  TempDir dir("fixture");
+  const Run run = Villa("furnish " + std::string(VILLA_FIXTURE_DIR) + "/layouts/" + layout + " -o " + dir.path.string() + " --room " +
+                        room + " --seed 2027 --force");
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  FixtureRoom out;
+  const nlohmann::json report = nlohmann::json::parse(Read(dir.path / "report.json"));
+  for (const auto& r : report.at("rooms"))
+    if (r["room"] == room) out.room = r;
+  out.objects = nlohmann::json::parse(Read(dir.path / "scene.json")).at("objects");
+  REQUIRE(out.room.is_object());
+  return out;
+}
+
+TEST_CASE("A 2.5 m deep living room keeps its TV: the sofa on one long wall, the screen on the other", "[solver][furnish][issue27]") {
+  // living_narrow.json is villa-000049 of `villa synth --count 50 --seed 2027`: a 6 x 2.5 m living room whose
+  // short west wall is mostly the front door. The sofa once faced that wall from the middle of the room, so
+  // the TV stand had no place (2-3 m before it meant the door's sweep) and was removed with the TV. Now the
+  // sofa prefers to face a wall a stand can stand against, and a narrow room's stand may be 1.0 m before it.
+  const auto [room, objects] = FurnishFixtureRoom("living_narrow.json", "living-room_0/0");
+  INFO(room["functional"].dump(1));
+  int seating = 0;
+  for (const auto& g : room["functional"]["groups"]) {
+    if (g["kind"] != "seating") continue;
+    ++seating;
+    CHECK(g["ok"] == true);
+    CHECK(g["measures"]["tv_distance_m"].get<double>() >= 1.4);
+    CHECK(g["measures"]["tv_angle_deg"].get<double>() <= 25.0);
+  }
+  CHECK(seating == 1);
+  REQUIRE(objects.contains("living-room_0/0/tv-0"));
+  // The sofa faces north or south, across the room's 2.5 m, not down its length at the door.
+  const double yaw = std::abs(std::remainder(objects["living-room_0/0/sofa-0"]["pose"]["yaw"].get<double>(), 360.0));
+  CHECK((yaw < 1.0 || yaw > 179.0));
+}
+
+TEST_CASE("A dining room with no place for its table keeps no chairs", "[solver][furnish][issue27]") {
+  // dining_entrance_hall.json is villa-000042 of the same synth: a 2.5 m square dining room entered by the
+  // front door, with a door and an opening on two more sides: its table has no place. Its chairs were left
+  // standing with nothing to sit at (a chair farther than 1.5 m from any table); now they go with the table
+  // and the room is reported without it.
+  const auto [room, objects] = FurnishFixtureRoom("dining_entrance_hall.json", "dining-room_0/0");
+  INFO(room["functional"].dump(1));
+  int tables = 0, chairs = 0;
+  for (const auto& [id, o] : objects.items()) {
+    if (id.rfind("dining-room_0/0/", 0) != 0) continue;
+    tables += o["category"] == "dining-table";
+    chairs += o["category"] == "chair";
+  }
+  REQUIRE(tables == 0);
+  CHECK(chairs == 0);
+  CHECK(room["functional"]["ok"] == false);
+  CHECK(room["functional"]["essentials"]["missing"].dump().find("dining table") != std::string::npos);
+  bool said = false;
+  for (const auto& a : room["actions"]) said = said || a.value("reason", "") == "its table has no place in the room: left out with it";
+  CHECK(said);
+}
+
 TEST_CASE("villa furnish --no-reach skips reachability: RCH and ACC not measured, no feedback", "[solver][furnish]") {
   TempDir dir("noreach");
   Run run = Villa("furnish " + kHouse + " --procedural --seed 3 -o " + dir.path.string() + " --no-reach");

@@ -503,6 +503,24 @@ TEST_CASE("A TV stand placed before its sofa looks over floor enough for the sof
   CHECK(room["metrics"]["CR"] == 0.0);
 }
 
+TEST_CASE("A TV stand made smaller stands between two doors before its sofa, its ornaments left out", "[solver][groups]") {
+  // living_notch_tv.json again: the wall before the sofa has 1.5 m between the bedroom's and the office's
+  // doors, too short for the 1.5 m stand at full size; it stood at the wall's end, 42 degrees off the
+  // sofa's axis. At its smallest scale it fits between the doors, the ornaments beside its TV go.
+  const nlohmann::json room = FurnishedRoom(std::string(VILLA_FIXTURE_DIR) + "/layouts/living_notch_tv.json", "living-room_0/0", 2027);
+  INFO(room["functional"].dump(1));
+  bool smaller = false;
+  for (const auto& a : room["actions"])
+    smaller = smaller || (a["id"] == "living-room_0/0/tv-stand-0" && a["status"] == "applied" &&
+                          a["reason"].get<std::string>().find("smaller, to its best free place by its hub") != std::string::npos);
+  CHECK(smaller);
+  REQUIRE(room["functional"]["groups"].size() >= 1);
+  const nlohmann::json& seating = room["functional"]["groups"][0];
+  CHECK(seating["ok"] == true);
+  CHECK(seating["measures"]["tv_angle_deg"].get<double>() <= 25.0);
+  CHECK(room["metrics"]["CR"] == 0.0);
+}
+
 TEST_CASE("Of the solver's starts, one whose only overlap is a side table the agent can take out is no worse than a clean one",
           "[solver][groups]") {
   // living_side_table_on_sofa.json is villa-000007 of `villa synth --count 50 --seed 2027`: three starts
