@@ -162,6 +162,28 @@ std::unique_ptr<aiScene> MakeScene(const BuildingMesh& building) {
 
 Vec3 ToGltfFrame(const Vec3& p) { return {p.x, p.z, -p.y}; }
 
+// Furniture's normals where faces meet at this angle or less shade smooth (issue 31): a 12-sided lamp
+// shade (30 degrees) is round, a box (90) keeps its edges. The building is all flat faces (a stair's soffit
+// meets its landing at 35 degrees, a slab's edge turns 30 at an angled wall): only coplanar faces share.
+constexpr double kFurnitureCreaseDeg = 40.0;
+constexpr double kBuildingCreaseDeg = 0.5;
+
+// A primitive of these triangles in the file's frame, with vertex normals (ShadeSmooth).
+gltf::Primitive ShadedPrimitive(const TriangleMesh& mesh, double crease_deg) {
+  const ShadedMesh shaded = ShadeSmooth(mesh, crease_deg);
+  gltf::Primitive p;
+  p.positions.reserve(3 * shaded.vertices.size());
+  p.normals.reserve(3 * shaded.vertices.size());
+  for (size_t v = 0; v < shaded.vertices.size(); ++v) {
+    const Vec3 g = ToGltfFrame(shaded.vertices[v]), n = ToGltfFrame(shaded.normals[v]);
+    p.positions.insert(p.positions.end(), {static_cast<float>(g.x), static_cast<float>(g.y), static_cast<float>(g.z)});
+    p.normals.insert(p.normals.end(), {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)});
+  }
+  for (const auto& t : shaded.triangles)
+    for (int k = 0; k < 3; ++k) p.indices.push_back(static_cast<std::uint32_t>(t[k]));
+  return p;
+}
+
 // A building part's triangles split into its own material and, for floor slabs and terraces, the steep
 // faces (|n_z| < 0.5: the slab's edges) in the exterior wall's material.
 struct PartPrimitives {
@@ -171,27 +193,30 @@ struct PartPrimitives {
 };
 PartPrimitives SplitPart(const MeshPart& part) {
   const bool slab = part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace;
-  PartPrimitives out;
+  TriangleMesh main, edges, below;
   std::vector<int> main_index(part.mesh.vertices.size(), -1), edge_index(part.mesh.vertices.size(), -1),
       below_index(part.mesh.vertices.size(), -1);
-  auto add = [&](gltf::Primitive& p, std::vector<int>& index, int v) {
+  auto add = [&](TriangleMesh& m, std::vector<int>& index, int v) {
     if (index[v] < 0) {
-      index[v] = static_cast<int>(p.positions.size() / 3);
-      const Vec3 g = ToGltfFrame(part.mesh.vertices[v]);
-      p.positions.insert(p.positions.end(), {static_cast<float>(g.x), static_cast<float>(g.y), static_cast<float>(g.z)});
+      index[v] = static_cast<int>(m.vertices.size());
+      m.vertices.push_back(part.mesh.vertices[v]);
     }
-    p.indices.push_back(static_cast<std::uint32_t>(index[v]));
+    return index[v];
   };
   for (const auto& t : part.mesh.triangles) {
     const Vec3 &a = part.mesh.vertices[t[0]], &b = part.mesh.vertices[t[1]], &c = part.mesh.vertices[t[2]];
     const Vec3 n = Cross(b - a, c - a);
     const double len = Norm(n);
     const bool steep = slab && len > 0.0 && std::abs(n.z) < 0.5 * len;
-    const bool below = part.kind == PartKind::kFloor && !steep && n.z < 0.0;
-    gltf::Primitive& p = steep ? out.edges : below ? out.below : out.main;
-    std::vector<int>& index = steep ? edge_index : below ? below_index : main_index;
-    for (int k = 0; k < 3; ++k) add(p, index, t[k]);
+    const bool down = part.kind == PartKind::kFloor && !steep && n.z < 0.0;
+    TriangleMesh& m = steep ? edges : down ? below : main;
+    std::vector<int>& index = steep ? edge_index : down ? below_index : main_index;
+    m.AddTriangle(add(m, index, t[0]), add(m, index, t[1]), add(m, index, t[2]));
   }
+  PartPrimitives out;
+  if (!main.triangles.empty()) out.main = ShadedPrimitive(main, kBuildingCreaseDeg);
+  if (!edges.triangles.empty()) out.edges = ShadedPrimitive(edges, kBuildingCreaseDeg);
+  if (!below.triangles.empty()) out.below = ShadedPrimitive(below, kBuildingCreaseDeg);
   return out;
 }
 
@@ -275,13 +300,7 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
       mesh.name = asset.name;
       for (const ExportAssetMesh::Part& part : asset.parts) {
         if (!part.mesh || part.mesh->triangles.empty()) continue;
-        gltf::Primitive p;
-        for (const Vec3& v : part.mesh->vertices) {
-          const Vec3 g = ToGltfFrame(v);
-          p.positions.insert(p.positions.end(), {static_cast<float>(g.x), static_cast<float>(g.y), static_cast<float>(g.z)});
-        }
-        for (const auto& t : part.mesh->triangles)
-          for (int k = 0; k < 3; ++k) p.indices.push_back(static_cast<std::uint32_t>(t[k]));
+        gltf::Primitive p = ShadedPrimitive(*part.mesh, kFurnitureCreaseDeg);
         p.material = materials.Of(part.material);
         mesh.primitives.push_back(std::move(p));
       }
@@ -623,6 +642,7 @@ SceneInfo SceneInfoOf(const aiScene* scene) {
       const Vec3 p{m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
       mi.bounds.Add(p);
       mi.mesh.vertices.push_back(p);
+      if (m->HasNormals()) mi.normals.push_back({m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z});
     }
     for (unsigned f = 0; f < m->mNumFaces; ++f)
       if (m->mFaces[f].mNumIndices == 3)

@@ -83,6 +83,7 @@ struct SceneMeshInfo {
   int triangles = 0;
   Box3 bounds;        // the mesh's own frame (glTF: +Y up)
   TriangleMesh mesh;  // its triangles in that frame
+  std::vector<Vec3> normals;  // one per vertex as the file gives them; empty when it gives none
 };
 struct SceneMaterialInfo {
   std::string name;

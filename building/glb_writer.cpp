@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace villa::gltf {
 namespace {
@@ -114,12 +115,21 @@ std::string WriteGlb(const Document& doc) {
                            {"min", {double(lo[0]), double(lo[1]), double(lo[2])}},
                            {"max", {double(hi[0]), double(hi[1]), double(hi[2])}}});
       const size_t position_accessor = accessors.size() - 1;
+      assert((p.normals.empty() || p.normals.size() == p.positions.size()) && "one normal per vertex");
+      std::optional<size_t> normal_accessor;
+      if (!p.normals.empty()) {
+        views.push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", p.normals.size() * 4}, {"target", kArrayBuffer}});
+        Append(bin, p.normals);
+        accessors.push_back({{"bufferView", views.size() - 1}, {"componentType", kFloat}, {"count", vertices}, {"type", "VEC3"}});
+        normal_accessor = accessors.size() - 1;
+      }
       assert(std::all_of(p.indices.begin(), p.indices.end(), [&](std::uint32_t i) { return i < vertices; }) &&
              "index beyond the primitive's vertices");
       views.push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", p.indices.size() * 4}, {"target", kElementArrayBuffer}});
       Append(bin, p.indices);
       accessors.push_back({{"bufferView", views.size() - 1}, {"componentType", kUnsignedInt}, {"count", p.indices.size()}, {"type", "SCALAR"}});
       Json prim{{"attributes", {{"POSITION", position_accessor}}}, {"indices", accessors.size() - 1}};
+      if (normal_accessor) prim["attributes"]["NORMAL"] = *normal_accessor;
       if (p.material >= 0) prim["material"] = p.material;
       primitives.push_back(std::move(prim));
     }

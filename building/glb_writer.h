@@ -1,7 +1,7 @@
 #pragma once
 // A small glTF 2.0 binary (.glb) writer: what villa's 3D files need and nothing more. Triangle meshes of
-// one or more primitives (positions + 32-bit indices; no normals: viewers then shade flat, which the
-// solids want), metallic-roughness materials by linear base colour factors, a node tree with names,
+// one or more primitives (positions, unit normals where given (without, viewers shade flat), 32-bit
+// indices), metallic-roughness materials by linear base colour factors, a node tree with names,
 // TRS transforms, shared meshes (instancing: many chairs, one mesh) and `extras`, and the asset's extras
 // (credits). The bytes depend only on the document, so equal documents give equal files.
 //
@@ -32,6 +32,7 @@ struct Material {
 
 struct Primitive {
   std::vector<float> positions;     // x, y, z per vertex (file frame)
+  std::vector<float> normals;       // empty, or a unit x, y, z per vertex (file frame): glTF's NORMAL
   std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
   int material = -1;                // index into Document::materials; -1: none
 };

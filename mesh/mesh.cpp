@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <numeric>
 #include <tuple>
+#include <unordered_map>
 
 namespace villa {
 
@@ -113,6 +116,80 @@ std::vector<TriangleMesh> SplitPieces(const TriangleMesh& mesh) {
       local[k] = index[t[k]];
     }
     piece.triangles.push_back(local);
+  }
+  return out;
+}
+
+namespace {
+
+// Hash of a few 64-bit words (the keys ShadeSmooth welds by).
+struct WordsHash {
+  template <size_t N>
+  size_t operator()(const std::array<std::int64_t, N>& words) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t w : words) h = (h ^ static_cast<std::uint64_t>(w)) * 1099511628211ull;
+    return static_cast<size_t>(h ^ (h >> 29));
+  }
+};
+
+std::int64_t Bits(double v) {
+  if (v == 0.0) v = 0.0;  // -0 and +0 weld
+  std::int64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+}  // namespace
+
+ShadedMesh ShadeSmooth(const TriangleMesh& mesh, double crease_deg) {
+  ShadedMesh out;
+  const size_t faces = mesh.triangles.size();
+  std::vector<Vec3> unit(faces);  // each face's unit normal, 0 for a degenerate face
+  std::vector<std::array<double, 3>> angle(faces);  // its interior angle at each corner
+  for (size_t t = 0; t < faces; ++t) {
+    const auto& f = mesh.triangles[t];
+    const Vec3 n = Cross(mesh.vertices[f[1]] - mesh.vertices[f[0]], mesh.vertices[f[2]] - mesh.vertices[f[0]]);
+    unit[t] = Norm(n) > 0.0 ? Normalized(n) : Vec3{};
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = Normalized(mesh.vertices[f[(k + 1) % 3]] - mesh.vertices[f[k]]);
+      const Vec3 b = Normalized(mesh.vertices[f[(k + 2) % 3]] - mesh.vertices[f[k]]);
+      angle[t][k] = std::acos(std::clamp(Dot(a, b), -1.0, 1.0));
+    }
+  }
+  // Positions welded exactly, and the face corners round each.
+  std::unordered_map<std::array<std::int64_t, 3>, int, WordsHash> where;
+  std::vector<int> position(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    position[v] = where.emplace(std::array<std::int64_t, 3>{Bits(p.x), Bits(p.y), Bits(p.z)}, static_cast<int>(where.size())).first->second;
+  }
+  std::vector<std::vector<std::pair<int, int>>> around(where.size());  // face, corner
+  for (size_t t = 0; t < faces; ++t)
+    for (int k = 0; k < 3; ++k) around[position[mesh.triangles[t][k]]].push_back({static_cast<int>(t), k});
+  const double cos_crease = std::cos(crease_deg * 3.14159265358979323846 / 180.0) - 1e-12;
+  // (position, normal to 1e-5) -> vertex of the result.
+  std::unordered_map<std::array<std::int64_t, 4>, int, WordsHash> shared;
+  out.triangles.reserve(faces);
+  for (size_t t = 0; t < faces; ++t) {
+    std::array<int, 3> corner{};
+    const bool degenerate = Norm(unit[t]) == 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[t][k], at = position[v];
+      // The faces round the position within the crease of this one, each weighted by its angle there (so a
+      // quad's two triangles count as the quad, whichever way it was cut).
+      Vec3 sum{};
+      for (const auto& [f, c] : around[at])
+        if (degenerate || Dot(unit[f], unit[t]) >= cos_crease) sum = sum + unit[f] * angle[f][c];
+      const Vec3 n = Norm(sum) > 0.0 ? Normalized(sum) : degenerate ? Vec3{0.0, 0.0, 1.0} : unit[t];
+      const std::array<std::int64_t, 4> key{at, std::llround(n.x * 1e5), std::llround(n.y * 1e5), std::llround(n.z * 1e5)};
+      auto [it, added] = shared.emplace(key, static_cast<int>(out.vertices.size()));
+      if (added) {
+        out.vertices.push_back(mesh.vertices[v]);
+        out.normals.push_back(n);
+      }
+      corner[k] = it->second;
+    }
+    out.triangles.push_back(corner);
   }
   return out;
 }

@@ -53,6 +53,21 @@ std::vector<int> PieceRoots(const TriangleMesh& mesh);
 // of their first triangle.
 std::vector<TriangleMesh> SplitPieces(const TriangleMesh& mesh);
 
+// A mesh with a normal per vertex, for shading (issue 31).
+struct ShadedMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Vec3> normals;  // unit, one per vertex
+  std::vector<std::array<int, 3>> triangles;
+};
+// Vertex normals with a crease angle: the corners at one position (vertices welded by exact position, so
+// an imported mesh's duplicated vertices count as one) share a normal where their faces meet at
+// `crease_deg` or less, so curved parts shade smooth, and split where they meet at more, so a box keeps its
+// sharp edges. A corner's normal is the sum of the unit normals of the faces round its position within the
+// crease angle of its own face, each weighted by its interior angle there (so a quad's two triangles weigh
+// as the quad, however it was cut); a degenerate face takes all its neighbours' (or +z alone). Vertices are
+// shared where position and normal agree. Deterministic.
+ShadedMesh ShadeSmooth(const TriangleMesh& mesh, double crease_deg = 40.0);
+
 // The result of checking a mesh for being a closed, consistently oriented solid.
 struct SolidCheck {
   bool closed = false;         // every edge used by exactly two triangles, once in each direction

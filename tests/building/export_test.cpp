@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "building/export.h"
@@ -235,6 +236,28 @@ TEST_CASE("issue 18: no slab edge carries a room colour, no ceiling the colour o
   fs::remove_all(dir);
 }
 
+namespace {
+
+// The building's .glb with one object in its first room: an asset of `mesh` in each of `materials`.
+std::string GlbWithObject(const BuildingMesh& b, const TriangleMesh& mesh, const std::vector<PartMaterial>& materials,
+                          const std::string& name) {
+  ExportFurniture furniture;
+  ExportAssetMesh asset;
+  asset.name = "test:asset";
+  for (const PartMaterial& m : materials) asset.parts.push_back({&mesh, m});
+  furniture.meshes.push_back(asset);
+  ExportObject object;
+  object.name = name;
+  object.room = b.rooms.front().name;
+  object.mesh = 0;
+  furniture.objects.push_back(object);
+  auto bytes = BuildingToGlb(b, &furniture);
+  REQUIRE(bytes);
+  return *bytes;
+}
+
+}  // namespace
+
 TEST_CASE("issue 31: materials by what they are made of: one name each, bare metals metallic, the ceiling its own") {
   const BuildingMesh& b = ThreeFloorBuilding();
   TriangleMesh cube;
@@ -242,22 +265,13 @@ TEST_CASE("issue 31: materials by what they are made of: one name each, bare met
   for (const auto& f : std::vector<std::array<int, 3>>{{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                                                       {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}})
     cube.AddTriangle(f[0], f[1], f[2]);
-  ExportFurniture furniture;
-  ExportAssetMesh asset;
-  asset.name = "test:asset";
-  for (PartMaterial m : {PartMaterial{"glass", {0.75, 0.85, 0.88}, 0.3, 0.05}, PartMaterial{"chrome", {0.8, 0.81, 0.83}, 1.0, 0.5},
-                         PartMaterial{"matte-white-metal", {0.9, 0.9, 0.9}, 1.0, 0.9}, PartMaterial{"gold-brocade", {0.72, 0.58, 0.3}, 1.0, 0.9},
-                         PartMaterial{"white-enamel", {0.95, 0.95, 0.95}, 1.0, 0.5}, PartMaterial{"mirror", {0.85, 0.88, 0.9}, 1.0, 0.9}})
-    asset.parts.push_back({&cube, m});
-  furniture.meshes.push_back(asset);
-  ExportObject object;
-  object.name = "kitchen_0/0/thing-0";
-  object.room = b.rooms.front().name;
-  object.mesh = 0;
-  furniture.objects.push_back(object);
-  auto bytes = BuildingToGlb(b, &furniture);
-  REQUIRE(bytes);
-  auto json = GlbJson(*bytes);
+  const std::string bytes =
+      GlbWithObject(b, cube,
+                    {PartMaterial{"glass", {0.75, 0.85, 0.88}, 0.3, 0.05}, PartMaterial{"chrome", {0.8, 0.81, 0.83}, 1.0, 0.5},
+                     PartMaterial{"matte-white-metal", {0.9, 0.9, 0.9}, 1.0, 0.9}, PartMaterial{"gold-brocade", {0.72, 0.58, 0.3}, 1.0, 0.9},
+                     PartMaterial{"white-enamel", {0.95, 0.95, 0.95}, 1.0, 0.5}, PartMaterial{"mirror", {0.85, 0.88, 0.9}, 1.0, 0.9}},
+                    "kitchen_0/0/thing-0");
+  auto json = GlbJson(bytes);
   std::map<std::string, nlohmann::json> by_name;
   for (const auto& m : json["materials"]) {
     INFO(m["name"]);
@@ -328,3 +342,46 @@ TEST_CASE("issue 31: floors by what they are laid with and walls painted in the 
 }
 
 }  // namespace
+
+TEST_CASE("issue 31: every mesh carries vertex normals: furniture curves shade smooth, walls and boxes keep their edges") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  // A 16-sided cylinder (a lamp shade, a bowl's wall): 16 x 22.5-degree edges round its side, 90 at its rims.
+  TriangleMesh cylinder;
+  constexpr int kSides = 16;
+  auto at = [](int k, double z) {
+    const double a = 2.0 * std::numbers::pi * (k % kSides) / kSides;
+    return Vec3{0.2 * std::cos(a), 0.2 * std::sin(a), z};
+  };
+  const int bottom = cylinder.AddVertex({0, 0, 0}), top = cylinder.AddVertex({0, 0, 0.3});
+  for (int k = 0; k < kSides; ++k) {
+    const int b0 = cylinder.AddVertex(at(k, 0.0)), b1 = cylinder.AddVertex(at(k + 1, 0.0));
+    const int t0 = cylinder.AddVertex(at(k, 0.3)), t1 = cylinder.AddVertex(at(k + 1, 0.3));
+    cylinder.AddTriangle(b0, b1, t1);
+    cylinder.AddTriangle(b0, t1, t0);
+    cylinder.AddTriangle(bottom, b1, b0);
+    cylinder.AddTriangle(top, t0, t1);
+  }
+  const std::string bytes = GlbWithObject(b, cylinder, {PartMaterial{"linen", {0.9, 0.88, 0.8}, 1.0, 0.9}}, "living-room_0/0/floor-lamp-0");
+  auto scene = ReadSceneInfoFromMemory(bytes, "glb");
+  REQUIRE(scene);
+  int shade_meshes = 0;
+  for (const SceneMeshInfo& m : scene->meshes) {
+    INFO(m.name);
+    REQUIRE(m.normals.size() == m.mesh.vertices.size());
+    for (const Vec3& n : m.normals) CHECK(Norm(n) == Approx(1.0).margin(1e-5));
+    if (m.bounds.max.y - m.bounds.min.y == Approx(0.3).margin(1e-6) && m.bounds.max.x == Approx(0.2).margin(1e-6)) {
+      ++shade_meshes;
+      // Round: one vertex per rim point on the side (32), the caps' rims again and their centres (34); a
+      // faceted side would need four per side face (64).
+      CHECK(m.mesh.vertices.size() == 32 + 34);
+      continue;
+    }
+    // The building is boxes and prisms: every corner takes its own face's normal.
+    for (const auto& t : m.mesh.triangles) {
+      const Vec3 face = Cross(m.mesh.vertices[t[1]] - m.mesh.vertices[t[0]], m.mesh.vertices[t[2]] - m.mesh.vertices[t[0]]);
+      if (Norm(face) < 1e-6) continue;  // a sliver of collinear corners (a stair's): no area to shade, no direction
+      for (int v : t) CHECK(Dot(m.normals[v], Normalized(face)) > 0.999);
+    }
+  }
+  CHECK(shade_meshes == 1);
+}
