@@ -184,6 +184,19 @@ std::vector<Token> Tokenise(std::string_view text) {
       continue;
     }
     pending_hyphen = false;
+    // "Floors ... 1", "Rooms.....bedroom, bathroom" (a form's leaders): a run of dots is a colon.
+    if (c == '.' && i + 1 < text.size() && text[i + 1] == '.') {
+      Token t;
+      t.begin = i;
+      while (i < text.size() && (text[i] == '.' || (text[i] == ' ' && i + 1 < text.size() && text[i + 1] == '.'))) ++i;
+      t.end = i;
+      t.punct = ':';
+      t.sentence = sentence;
+      t.word = ":";
+      t.stem = t.word;
+      tokens.push_back(t);
+      continue;
+    }
     // Inside brackets only a line break ends a sentence: "one bath (with a bathtub, not a shower!) upstairs".
     if (c == '(') ++depth;
     else if (c == ')' && depth > 0) --depth;
@@ -481,6 +494,8 @@ std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
     std::size_t own = 0;  // the room noun after "their own"
     if (ok) {
       ++j;
+      // "Two kids, each gets their own bedroom": a comma before "each".
+      if (j + 1 < tokens.size() && tokens[j].punct == ',' && tokens[j + 1].word == "each") ++j;
       if (j < tokens.size() && tokens[j].word == "each") ++j;
       else ok = both;
       while (ok && j < tokens.size() && In(tokens[j], {"want", "wants", "need", "needs", "get", "gets", "have", "has", "should",
@@ -512,6 +527,21 @@ std::vector<Token> OwnRooms(const std::vector<Token>& tokens) {
     out.push_back(kids);
     out.push_back(rooms);
     i = own;
+    // "...; plus one for us", "and one for the two of us": a bedroom for the parents.
+    std::size_t k = own + 1;
+    if (k < tokens.size() && tokens[k].punct && tokens[k].punct != '.') ++k;
+    if (k + 2 < tokens.size() && In(tokens[k], {"plus", "and"}) && In(tokens[k + 1], {"one", "1"}) && tokens[k + 2].word == "for") {
+      Token one = tokens[k + 1], bedroom = tokens[k + 1];
+      one.word = one.stem = "1";
+      one.number = true;
+      one.value = 1;
+      bedroom.word = "bedroom";
+      bedroom.stem = "bedroom";
+      for (std::size_t x = own + 1; x <= k; ++x) out.push_back(tokens[x]);
+      out.push_back(one);
+      out.push_back(bedroom);
+      i = k + 1;
+    }
   }
   return out;
 }
@@ -947,6 +977,7 @@ class Parser {
   bool zero_based_numbers_ = false;
   std::optional<int> floors_;
   std::optional<TextSpan> floors_source_;
+  int floors_source_last_ = 0;  // the last token of the floor count floors_ came from
   int floors_min_ = 0;
   std::vector<std::string> conflicts_;
   std::vector<int> sentence_scope_;  // per sentence: the floor ref scoping its end, or -1
@@ -1098,10 +1129,16 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kGround;
     return 1;
   }
-  // "3 bedrooms up, kitchen + lounge down" (terse notes): right after a room, then a break.
-  if (In(t, {"up", "down"}) && i > 0 && tokens_[i - 1].item >= 0 && items_[tokens_[i - 1].item].kind == ItemKind::kRoom &&
-      (i + 1 >= tokens_.size() || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence || tokens_[i + 1].word == "and")) {
+  // "bedrooms upstairs, ... plus a bathroom up there".
+  if (In(t, {"up", "down"}) && i + 1 < tokens_.size() && tokens_[i + 1].word == "there" && tokens_[i + 1].sentence == t.sentence) {
     item.ref = t.word == "up" ? RefType::kUpper : RefType::kGround;
+    return 2;
+  }
+  // "3 bedrooms up, kitchen + lounge down" (terse notes): right after a room, then a break.
+  // "... 3 bedrooms and a bathroom above." likewise (not "the bedroom above the kitchen": a relation).
+  if (In(t, {"up", "down", "above", "below"}) && i > 0 && tokens_[i - 1].item >= 0 && items_[tokens_[i - 1].item].kind == ItemKind::kRoom &&
+      (i + 1 >= tokens_.size() || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence || tokens_[i + 1].word == "and")) {
+    item.ref = In(t, {"up", "above"}) ? RefType::kUpper : RefType::kGround;
     return 1;
   }
   // "Upper: three bedrooms", "Lower: kitchen", "Down: ... Up: ...", "upper = ..." (spec headings and notes).
@@ -1177,6 +1214,13 @@ int Parser::TryFloorRef(std::size_t i, Item& item) {
     item.ref = RefType::kMiddle;
     return 2;
   }
+  // "Middle: living room, office" (a heading between "Ground:" and "Top:"; not "In the middle: ..." of a
+  // single floor's wings).
+  if (In(t, {"middle", "mid"}) && i + 1 < tokens_.size() && (tokens_[i + 1].punct == ':' || tokens_[i + 1].punct == '=') &&
+      (i == 0 || tokens_[i - 1].punct || tokens_[i - 1].sentence != t.sentence)) {
+    item.ref = RefType::kMiddle;
+    return 1;
+  }
   if (In(t, {"each", "every", "all", "both", "per"}) && floor_at(i + 1)) {
     item.ref = RefType::kEach;
     return 2;
@@ -1218,8 +1262,11 @@ int Parser::TryShape(std::size_t i, Item& item) {
   };
   int len = 0;
   // "Footprint: L", "Shape: U-shaped" (spec style): the letter after the heading.
-  const bool headed = i >= 2 && tokens_[i - 1].punct == ':' && In(tokens_[i - 2], {"footprint", "shape", "outline", "plan"}) &&
-                      tokens_[i - 2].sentence == t.sentence;
+  const bool headed = (i >= 2 && tokens_[i - 1].punct == ':' && In(tokens_[i - 2], {"footprint", "shape", "outline", "plan"}) &&
+                       tokens_[i - 2].sentence == t.sentence) ||
+                      // "shaped like a T", "in the shape of an L"
+                      (i >= 3 && In(tokens_[i - 1], {"a", "an"}) && In(tokens_[i - 2], {"like", "of"}) &&
+                       In(tokens_[i - 3], {"shaped", "shape"}) && tokens_[i - 3].sentence == t.sentence);
   if (t.word.size() == 1 && std::isalpha(static_cast<unsigned char>(t.word[0])) && (shape_word(i + 1) || (headed && In(t, {"l", "u", "t", "h"})))) {
     char c = t.word[0];
     len = 2;
@@ -1350,6 +1397,13 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   if (i + best < tokens_.size() && !tokens_[i + best].punct && !(i > 0 && Cardinal(tokens_[i - 1])) &&
       In(tokens_[i + best], {"villa", "house", "building", "bungalow", "home", "cottage", "block"})) {
     for (int k = 0; k < best; ++k) tokens_[i + k].consumed = true;
+    return 0;
+  }
+  // "a building that doubles as home and office", "Home+office, 2 flrs": what the building is, not a room.
+  if (best == 1 && t.word == "office" && i >= 2 && (In(tokens_[i - 1], {"and"}) || tokens_[i - 1].punct == '+' ||
+                                                    tokens_[i - 1].punct == '&' || tokens_[i - 1].punct == '/') &&
+      In(tokens_[i - 2], {"home", "house", "residence", "dwelling"}) && !(i + 1 < tokens_.size() && In(tokens_[i + 1], {"room", "space"}))) {
+    tokens_[i].consumed = true;
     return 0;
   }
   if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
@@ -1806,14 +1860,21 @@ void Parser::Quantify(Mention& m) {
       return std::pair{std::stoi(next.word.substr(1)), after};
     if (next.punct == '(' && after + 2 < size && Cardinal(tokens_[after + 1]) && tokens_[after + 2].punct == ')')
       return std::pair{*Cardinal(tokens_[after + 1]), after + 2};
-    if ((next.punct == ':' || next.word == "x" || next.punct == '*' || next.punct == '-') && after + 1 < size &&
+    if ((next.punct == ':' || next.word == "x" || next.punct == '*' || next.punct == '-' || next.punct == '=') && after + 1 < size &&
         Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
         !(after + 2 < size && IsFloorNoun(tokens_[after + 2])))
       return std::pair{*Cardinal(tokens_[after + 1]), after + 1};
+    // "bedroom count = 4", "bathrooms total: 2", "number = 3" (spec sheets and forms).
+    if (In(next, {"count", "total", "number", "qty", "quantity"}) && after + 2 < size &&
+        (tokens_[after + 1].punct == ':' || tokens_[after + 1].punct == '=' || tokens_[after + 1].punct == '-') &&
+        Cardinal(tokens_[after + 2]) && tokens_[after + 2].sentence == sentence)
+      return std::pair{*Cardinal(tokens_[after + 2]), after + 2};
     // "Study: no", "Kitchen - yes" (spec sheets).
+    // ("living room - no dining room": the "no" is the dining room's, after a dash.)
     if ((next.punct == ':' || next.punct == '-') && after + 1 < size && tokens_[after + 1].sentence == sentence &&
         In(tokens_[after + 1], {"no", "none", "yes"}) &&
-        (after + 2 >= size || tokens_[after + 2].punct || tokens_[after + 2].sentence != sentence || tokens_[after + 2].item >= 0))
+        (after + 2 >= size || tokens_[after + 2].punct || tokens_[after + 2].sentence != sentence ||
+         (tokens_[after + 2].item >= 0 && next.punct == ':')))
       return std::pair{tokens_[after + 1].word == "yes" ? 1 : 0, after + 1};
     return std::nullopt;
   };
@@ -2600,9 +2661,18 @@ void Parser::Finish(Brief& brief) {
       floors_min_ = std::max(floors_min_, item.floors);
       continue;
     }
-    if (!floors_) {
+    // "on three floors - wait, two floors is plenty": a second thought between two counts, the later holds.
+    auto second_thought = [&](int from, int to) {
+      for (int k = from; k < to; ++k)
+        if (In(tokens_[k], {"wait", "actually", "sorry", "correction", "rather", "instead"}) ||
+            (In(tokens_[k], {"make", "change"}) && k + 1 < to && In(tokens_[k + 1], {"that", "it"})))
+          return true;
+      return false;
+    };
+    if (!floors_ || (*floors_ != item.floors && second_thought(floors_source_last_, item.first))) {
       floors_ = item.floors;
       floors_source_ = Span(item.first, item.last);
+      floors_source_last_ = item.last;
     } else if (*floors_ != item.floors) {
       conflicts_.push_back("the text gives both " + std::to_string(*floors_) + " and " + std::to_string(item.floors) +
                            " floors; using " + std::to_string(*floors_));
@@ -3043,12 +3113,19 @@ void Parser::Corrections() {
   const int size = static_cast<int>(tokens_.size());
   // Where "make that", "make it", "change that to" ends, for each such phrase.
   std::vector<int> cues;
-  for (int i = 0; i + 1 < size; ++i)
+  for (int i = 0; i + 1 < size; ++i) {
     if (In(tokens_[i], {"make", "change"}) && In(tokens_[i + 1], {"that", "it", "them", "this"})) {
       int end = i + 1;
       if (end + 1 < size && tokens_[end + 1].word == "to") ++end;
       cues.push_back(end);
     }
+    // "a kitchen-diner - well, a kitchen and a separate dining room actually", "two bathrooms, or rather
+    // three bathrooms": a restatement after a dash or comma and "well," / "or rather" / "I mean".
+    const bool dash_before = i > 0 && (tokens_[i - 1].punct == '-' || tokens_[i - 1].punct == ',');
+    if (dash_before && tokens_[i].word == "well" && tokens_[i + 1].punct == ',') cues.push_back(i + 1);
+    if (tokens_[i].word == "or" && tokens_[i + 1].word == "rather") cues.push_back(i + 1);
+    if (dash_before && tokens_[i].word == "i" && tokens_[i + 1].word == "mean") cues.push_back(i + 1);
+  }
   for (int cue : cues) {
     // "make it three": a bare count for the rooms named last before the cue.
     if (const int n = cue + 1; n < size && tokens_[n].item < 0 && Cardinal(tokens_[n]) &&

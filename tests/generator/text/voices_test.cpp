@@ -1,4 +1,4 @@
-// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 318 requests in eight
+// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 405 requests in eight
 // voices (terse lists, long emails, British and American floor naming, spec sheets, "each"/"per"
 // distributions, ordinals, negations), numbers in words and digits, each with what it asks: floors, the
 // footprint when named, the rooms of each kind (utility rooms aside) and, where pinned, per floor. One table:
@@ -48,11 +48,14 @@ const std::map<std::string, std::string>& KnownGaps() {
       // FORMAT.md's floors and rooms a floor are here, storage rooms left out of the counts, a star read as
       // the cross class); first reading 84.0 % of their requirements and 4 false "met"; after the fixes of
       // that stop 95.2 %, 1.
-      {"voices-323", "'Home+office, 2 flrs' (the building's kind) read as an office of its own"},
-      {"voices-326", "a correction inside an email ('four bedrooms... wait, actually ... make that two children's rooms'): floors lost"},
       {"voices-330", "'a box room for storage' read as a bedroom"},
       {"voices-334", "'two-up two-down: lounge and kitchen on the ground floor, two bedrooms on the first floor'"},
       {"voices-341", "spec 'Levels: ground + 1 upper'; 'master bed' as a bedroom"},
+      // 358-405: the fourth unseen set (a helper that saw nothing of the project wrote 48 within FORMAT.md,
+      // six in each voice); first reading 97.4 % of their stated requirements (96.2 % counting each kind
+      // the layout adds unasked as a miss), 1 false "met"; after the fixes of this stop 99.8 % (98.6 %).
+      {"voices-395", "'half a dozen bedrooms ..., plus a kitchen and a lounge': the planner completes the house with rooms not named"},
+      {"voices-401", "a single floor of bedrooms, a bathroom and a kitchen: the planner adds the living room not named"},
   };
   return gaps;
 }
@@ -60,7 +63,9 @@ const std::map<std::string, std::string>& KnownGaps() {
 // Known gaps whose report still says "met" (the count check does not catch them: it reads the most a kind
 // is named, never a sum).
 const std::set<std::string>& KnownFalseMet() {
-  static const std::set<std::string> ids = {"voices-323"};
+  // 395, 401: "met" for every room named, with rooms added that the text does not name (the strict count
+  // of this table calls any kind added unasked a miss).
+  static const std::set<std::string> ids = {"voices-395", "voices-401"};
   return ids;
 }
 
