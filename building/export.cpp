@@ -224,10 +224,13 @@ PartPrimitives SplitPart(const MeshPart& part) {
 // names; each name once (a second look under a name already taken is "glass-2").
 class MaterialTable {
  public:
-  int Of(const PartMaterial& given) {
+  // `open`: the part is a sheet, not a closed solid (a leaf, a curtain, a picture's face): its back faces
+  // are drawn too, else it vanishes from behind (issue 31); closed solids keep back-face culling.
+  int Of(const PartMaterial& given, bool open = false) {
     const PartMaterial m = PbrByName(given);
     const std::string key = m.name + "|" + std::to_string(m.color.r) + "," + std::to_string(m.color.g) + "," +
-                            std::to_string(m.color.b) + "," + std::to_string(m.alpha) + "," + std::to_string(m.roughness);
+                            std::to_string(m.color.b) + "," + std::to_string(m.alpha) + "," + std::to_string(m.roughness) +
+                            (open ? "|open" : "");
     auto [it, added] = index_.emplace(key, static_cast<int>(materials_.size()));
     if (added) {
       gltf::Material g;
@@ -237,7 +240,7 @@ class MaterialTable {
       g.roughness = m.roughness;
       g.metallic = m.metallic;
       g.blend = m.alpha < 1.0;
-      g.double_sided = m.alpha < 1.0;  // glass is seen from both sides
+      g.double_sided = m.alpha < 1.0 || open;  // glass is seen from both sides
       materials_.push_back(g);
     }
     return it->second;
@@ -301,7 +304,7 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
       for (const ExportAssetMesh::Part& part : asset.parts) {
         if (!part.mesh || part.mesh->triangles.empty()) continue;
         gltf::Primitive p = ShadedPrimitive(*part.mesh, kFurnitureCreaseDeg);
-        p.material = materials.Of(part.material);
+        p.material = materials.Of(part.material, !CheckSolid(*part.mesh, 1e-6).closed);
         mesh.primitives.push_back(std::move(p));
       }
       asset_mesh.push_back(mesh.primitives.empty() ? -1 : static_cast<int>(doc.meshes.size()));

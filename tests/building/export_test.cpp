@@ -385,3 +385,25 @@ TEST_CASE("issue 31: every mesh carries vertex normals: furniture curves shade s
   }
   CHECK(shade_meshes == 1);
 }
+
+TEST_CASE("issue 31: a sheet of an asset (no closed solid) is drawn from both sides, a closed solid culls its back faces") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  TriangleMesh sheet;  // a picture's face: two triangles, open
+  for (const Vec3& v : {Vec3{0, 0, 0}, Vec3{0.5, 0, 0}, Vec3{0.5, 0, 0.4}, Vec3{0, 0, 0.4}}) sheet.vertices.push_back(v);
+  sheet.AddTriangle(0, 1, 2);
+  sheet.AddTriangle(0, 2, 3);
+  TriangleMesh cube;
+  for (int k = 0; k < 8; ++k) cube.vertices.push_back({k & 1 ? 0.1 : -0.1, k & 2 ? 0.1 : -0.1, k & 4 ? 0.2 : 0.0});
+  for (const auto& f : std::vector<std::array<int, 3>>{{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}})
+    cube.AddTriangle(f[0], f[1], f[2]);
+  auto double_sided = [&](const TriangleMesh& mesh) {
+    const auto json = GlbJson(GlbWithObject(b, mesh, {PartMaterial{"canvas", {0.9, 0.88, 0.8}, 1.0, 0.9}}, "living-room_0/0/painting-0"));
+    for (const auto& m : json["materials"])
+      if (m["name"] == "canvas") return m.value("doubleSided", false);
+    FAIL("no canvas material");
+    return false;
+  };
+  CHECK(double_sided(sheet));
+  CHECK_FALSE(double_sided(cube));
+}
