@@ -189,13 +189,14 @@ gltf::Primitive ShadedPrimitive(const TriangleMesh& mesh, double crease_deg) {
 struct PartPrimitives {
   gltf::Primitive main;
   gltf::Primitive edges;
-  gltf::Primitive below;  // a floor slab's underside: the ceiling of the room below
+  gltf::Primitive below;   // a floor slab's underside: the ceiling of the room below
+  gltf::Primitive treads;  // a stair's walking faces (up-facing), in the floor's wood
 };
 PartPrimitives SplitPart(const MeshPart& part) {
   const bool slab = part.kind == PartKind::kFloor || part.kind == PartKind::kTerrace;
-  TriangleMesh main, edges, below;
+  TriangleMesh main, edges, below, treads;
   std::vector<int> main_index(part.mesh.vertices.size(), -1), edge_index(part.mesh.vertices.size(), -1),
-      below_index(part.mesh.vertices.size(), -1);
+      below_index(part.mesh.vertices.size(), -1), tread_index(part.mesh.vertices.size(), -1);
   auto add = [&](TriangleMesh& m, std::vector<int>& index, int v) {
     if (index[v] < 0) {
       index[v] = static_cast<int>(m.vertices.size());
@@ -209,14 +210,16 @@ PartPrimitives SplitPart(const MeshPart& part) {
     const double len = Norm(n);
     const bool steep = slab && len > 0.0 && std::abs(n.z) < 0.5 * len;
     const bool down = part.kind == PartKind::kFloor && !steep && n.z < 0.0;
-    TriangleMesh& m = steep ? edges : down ? below : main;
-    std::vector<int>& index = steep ? edge_index : down ? below_index : main_index;
+    const bool tread = part.kind == PartKind::kStair && len > 0.0 && n.z > 0.9 * len;
+    TriangleMesh& m = steep ? edges : down ? below : tread ? treads : main;
+    std::vector<int>& index = steep ? edge_index : down ? below_index : tread ? tread_index : main_index;
     m.AddTriangle(add(m, index, t[0]), add(m, index, t[1]), add(m, index, t[2]));
   }
   PartPrimitives out;
   if (!main.triangles.empty()) out.main = ShadedPrimitive(main, kBuildingCreaseDeg);
   if (!edges.triangles.empty()) out.edges = ShadedPrimitive(edges, kBuildingCreaseDeg);
   if (!below.triangles.empty()) out.below = ShadedPrimitive(below, kBuildingCreaseDeg);
+  if (!treads.triangles.empty()) out.treads = ShadedPrimitive(treads, kBuildingCreaseDeg);
   return out;
 }
 
@@ -289,6 +292,10 @@ Result<std::string> BuildingToGlb(const BuildingMesh& building, const ExportFurn
     if (!split.below.indices.empty()) {
       split.below.material = materials.Of(CeilingMaterial());
       mesh.primitives.push_back(std::move(split.below));
+    }
+    if (!split.treads.indices.empty()) {
+      split.treads.material = materials.Of(StairTreadMaterial(building.style));
+      mesh.primitives.push_back(std::move(split.treads));
     }
     if (mesh.primitives.empty()) continue;
     part_mesh[i] = static_cast<int>(doc.meshes.size());

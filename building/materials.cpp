@@ -84,6 +84,11 @@ PartMaterial MaterialOf(const MeshPart& part, std::string_view style) {
 
 PartMaterial CeilingMaterial() { return {"ceiling", {0.96, 0.96, 0.94}, 1.0, 0.95}; }
 
+PartMaterial StairTreadMaterial(std::string_view style) {
+  const auto& wood = PaletteOf(style).floors[static_cast<size_t>(FloorFinish::kWood)];
+  return {"stair-tread", wood.second, 1.0, kFinishRoughness[static_cast<size_t>(FloorFinish::kWood)]};
+}
+
 PartMaterial PbrByName(PartMaterial m) {
   const std::string_view name = m.name;
   auto has = [&](std::string_view w) { return name.find(w) != std::string_view::npos; };

@@ -28,6 +28,9 @@ FloorFinish FinishOf(Category category, std::string_view style);
 PartMaterial MaterialOf(const MeshPart& part, std::string_view style = "");
 // The underside of a floor slab (issue 31): one white ceiling for every room, whatever the room above.
 PartMaterial CeilingMaterial();
+// A stair's treads (its up-facing faces; issue 31: the stairs were grey blocks): the style's wood floor,
+// named "stair-tread"; risers, strings and soffit stay `stair`.
+PartMaterial StairTreadMaterial(std::string_view style = "");
 // A material as what it is made of, read from its name: bare metals ("chrome", "stainless-steel", "brass",
 // "copper", "wrought-iron", "...-metal") metallic, polished ones smoother; a mirror a smooth metal; painted,
 // lacquered and enamelled finishes and fabrics ("gold-brocade") stay dielectric. Other fields unchanged.

@@ -407,3 +407,33 @@ TEST_CASE("issue 31: a sheet of an asset (no closed solid) is drawn from both si
   CHECK(double_sided(sheet));
   CHECK_FALSE(double_sided(cube));
 }
+
+TEST_CASE("issue 31: a stair's treads are the villa's wood, its risers and soffit the stair's grey") {
+  const BuildingMesh& b = ThreeFloorBuilding();
+  auto bytes = BuildingToGlb(b);
+  REQUIRE(bytes);
+  auto scene = ReadSceneInfoFromMemory(*bytes, "glb");
+  REQUIRE(scene);
+  int tread = -1, stair = -1;
+  for (size_t k = 0; k < scene->materials.size(); ++k) {
+    if (scene->materials[k].name == "stair-tread") tread = static_cast<int>(k);
+    if (scene->materials[k].name == "stair") stair = static_cast<int>(k);
+  }
+  REQUIRE(tread >= 0);
+  REQUIRE(stair >= 0);
+  CHECK(StairTreadMaterial(b.style).color.r == MaterialOf(MeshPart{.kind = PartKind::kFloor, .category = Category::kLivingRoom}, b.style).color.r);
+  int tread_meshes = 0;
+  for (const SceneMeshInfo& m : scene->meshes) {
+    if (m.material != tread) continue;
+    ++tread_meshes;
+    // glTF is +Y up: every tread faces up.
+    for (const auto& t : m.mesh.triangles) {
+      const Vec3 n = Cross(m.mesh.vertices[t[1]] - m.mesh.vertices[t[0]], m.mesh.vertices[t[2]] - m.mesh.vertices[t[0]]);
+      if (Norm(n) > 1e-6) CHECK(n.y > 0.9 * Norm(n));
+    }
+  }
+  int stairs = 0;
+  for (const MeshPart& p : b.parts) stairs += p.kind == PartKind::kStair;
+  CHECK(stairs > 0);
+  CHECK(tread_meshes == stairs);
+}
