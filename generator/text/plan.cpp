@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "generator/text/backends.h"
@@ -99,7 +100,26 @@ PlanSummary PlanLayout(const std::string& text, const PlanOptions& options) {
     summary.outcome = PlanOutcome::kFailed;
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.added = AddedRooms(summary);
   return summary;
+}
+
+std::vector<std::pair<Category, int>> AddedRooms(const PlanSummary& s) {
+  std::vector<std::pair<Category, int>> out;
+  if (!s.layout || s.brief.rooms.empty()) return out;
+  std::map<Category, int> has, most;  // rooms of each kind; the most the brief allows (-1: no most)
+  for (const Room& r : s.layout->rooms)
+    if (r.category != Category::kUtilityRoom) ++has[r.category];
+  for (const BriefRooms& b : s.brief.rooms) {
+    int& m = most[b.category];
+    if (m >= 0) m = b.max < 0 ? -1 : m + b.max;
+  }
+  for (const auto& [category, n] : has) {
+    const auto it = most.find(category);
+    const int allowed = it == most.end() ? 0 : it->second;
+    if (allowed >= 0 && n > allowed) out.push_back({category, n - allowed});
+  }
+  return out;
 }
 
 std::string PlanSummary::BriefReport() const {
@@ -123,6 +143,11 @@ std::string PlanSummary::BriefReport() const {
   for (const auto& c : brief.conflicts) out << "conflict: " << c << "\n";
   for (const auto& u : unmet) out << "unmet: " << u.requirement << (u.detail.empty() ? "" : " (" + u.detail + ")") << "\n";
   for (const auto& r : recount) out << "count check: " << r.Message() << "\n";
+  if (!added.empty()) {
+    out << "added beyond the brief (the floors' area is filled with rooms):";
+    for (size_t k = 0; k < added.size(); ++k) out << (k ? ", " : " ") << added[k].second << " " << CategoryName(added[k].first);
+    out << "\n";
+  }
   const std::size_t shown = std::min<std::size_t>(violations.size(), 10);
   for (std::size_t i = 0; i < shown; ++i)
     out << "violation: rule " << violations[i].rule << ": " << violations[i].message << "\n";
@@ -162,6 +187,9 @@ nlohmann::ordered_json PlanReportJson(const PlanSummary& s) {
     recount.push_back(Json{{"category", std::string(CategoryName(r.category))}, {"asked", r.asked}, {"has", r.has},
                            {"phrase", r.phrase}, {"message", r.Message()}});
   j["count_check"] = recount;
+  Json added = Json::array();
+  for (const auto& [category, n] : s.added) added.push_back(Json{{"category", std::string(CategoryName(category))}, {"count", n}});
+  j["added"] = added;
   Json violations = Json::array();
   for (const auto& v : s.violations)
     violations.push_back(Json{{"rule", v.rule}, {"elements", v.elements}, {"message", v.message}, {"figure", v.figure}});

@@ -90,6 +90,9 @@ struct PlanSummary {
   std::vector<RequirementResult> unmet;     // check.unmet(), plus the brief's unsupported shape if any
   // The second reading (recount.h): room kinds of which the layout has fewer than the text may ask for.
   std::vector<RecountDisagreement> recount;
+  // Rooms the layout has beyond what the brief asks (kinds it does not name, or more than the most it
+  // names): the planner fills the floors' area with rooms; reported, never counted against the brief.
+  std::vector<std::pair<Category, int>> added;
   LayoutMetrics metrics;                    // FSR / RR / VCR ingredients of `layout`
   std::optional<std::string> shape_class;   // footprint class of `layout` (partitioner's or classified)
   std::vector<PlanRound> rounds;            // llm: one per exchange; procedural: one summarising the search
@@ -104,6 +107,10 @@ struct PlanSummary {
 };
 
 PlanSummary PlanLayout(const std::string& text, const PlanOptions& options);
+
+// The rooms of `summary.layout` beyond what its brief asks, by kind (the staircase's utility rooms aside);
+// empty when the brief names no room.
+std::vector<std::pair<Category, int>> AddedRooms(const PlanSummary& summary);
 
 // The report written beside the layout (layout.report.json): text, backend, outcome, brief, checks,
 // unmet requirements, violations, metrics (FSR, RR, VCR), rounds, attempts, time, shape class.

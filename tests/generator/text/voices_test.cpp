@@ -159,3 +159,34 @@ TEST_CASE("Requests in eight voices: every one off the known-gaps list is planne
 }
 
 }  // namespace villa
+
+namespace villa {
+namespace {
+
+TEST_CASE("A plan reports the rooms it adds beyond the brief, and only those", "[generator][corpus]") {
+  // voices-395: six bedrooms, a kitchen and a lounge on three floors; the planner fills the floors with more.
+  PlanOptions options;
+  options.seed = 1;
+  const PlanSummary plan = PlanLayout("half a dozen bedrooms across three floors, plus a kitchen and a lounge on the ground floor.", options);
+  REQUIRE(plan.layout);
+  INFO(plan.BriefReport());
+  REQUIRE_FALSE(plan.added.empty());
+  int added = 0;
+  for (const auto& [category, n] : plan.added) {
+    CHECK(n > 0);
+    CHECK(category != Category::kBedroom);  // as many as asked
+    CHECK(category != Category::kKitchen);
+    CHECK(category != Category::kUtilityRoom);
+    added += n;
+  }
+  int rooms = 0;
+  for (const Room& r : plan.layout->rooms) rooms += r.category != Category::kUtilityRoom;
+  CHECK(rooms == 6 + 1 + 1 + added);
+  CHECK(PlanReportJson(plan)["added"].size() == plan.added.size());
+  CHECK(plan.BriefReport().find("added beyond the brief") != std::string::npos);
+  // A brief that names no room adds nothing to report.
+  CHECK(PlanLayout("a two-storey house", options).added.empty());
+}
+
+}  // namespace
+}  // namespace villa
