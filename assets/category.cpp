@@ -33,7 +33,7 @@ std::vector<CategoryInfo> MakeTable() {
       // ---- tables and desks
       {"coffee-table", {"cocktail table", "low table"}, P::kFloor, {0.8, 0.45, 0.35}, {1.3, 0.8, 0.48}, kConPro, true, false, std::nullopt, false, "table"},
       {"side-table", {"end table", "lamp table", "occasional table"}, P::kFloor, {0.35, 0.35, 0.45}, {0.6, 0.6, 0.7}, kConPro, true, false, std::nullopt, false, "table"},
-      {"dining-table", {"table", "kitchen table", "dinner table", "round table"}, P::kFloor, {0.9, 0.75, 0.72}, {2.4, 1.1, 0.78}, kConPro, true, false, std::nullopt, false, "table"},
+      {"dining-table", {"table", "tbl", "kitchen table", "dinner table", "round table"}, P::kFloor, {0.9, 0.75, 0.72}, {2.4, 1.1, 0.78}, kConPro, true, false, std::nullopt, false, "table"},
       {"conference-table", {"meeting table", "boardroom table"}, P::kFloor, {1.4, 0.9, 0.72}, {4.0, 1.4, 0.78}, kConPro, true, false, std::nullopt, false, "table"},
       {"desk", {"writing desk", "computer desk", "study desk", "work table", "desk table"}, P::kFloor, {1.0, 0.55, 0.72}, {1.8, 0.8, 0.78}, kAll, true, false, Front(0.6), true, "desk"},
       {"play-table", {"kids table", "children table", "activity table"}, P::kFloor, {0.6, 0.5, 0.45}, {1.0, 0.7, 0.55}, kConPro, true, false, std::nullopt, false, "table"},

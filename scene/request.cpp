@@ -56,7 +56,7 @@ struct RoomWord {
 
 // Enough room names to bind furniture to rooms (the generator's brief parser has the full lexicon for
 // layouts; scene/ sits below it and keeps its own short list).
-constexpr std::array<RoomWord, 54> kRoomWords = {{
+constexpr RoomWord kRoomWords[] = {
     {"library", Category::kOffice},             {"studio", Category::kOffice},   {"workroom", Category::kOffice},
     {"master bed", Category::kBedroom},         {"guest bed", Category::kBedroom},
     // Rooms whose names are also fixtures' ("a WC", "a downstairs loo", "a half bath"): rooms, not wishes.
@@ -85,7 +85,18 @@ constexpr std::array<RoomWord, 54> kRoomWords = {{
     {"staircase room", Category::kUtilityRoom}, {"stair room", Category::kUtilityRoom},
     {"balcony", Category::kBalcony},            {"terrace", Category::kBalcony},
     {"veranda", Category::kBalcony},            {"patio", Category::kBalcony},
-}};
+    // British names and the short forms of notes ("Piano in living rm", "a piano in the front room").
+    {"front room", Category::kLivingRoom},      {"reception room", Category::kLivingRoom},
+    {"drawing room", Category::kLivingRoom},    {"snug", Category::kLivingRoom},
+    {"parlour", Category::kLivingRoom},         {"parlor", Category::kLivingRoom},
+    {"tv room", Category::kLivingRoom},         {"media room", Category::kLivingRoom},
+    {"living rm", Category::kLivingRoom},       {"family rm", Category::kLivingRoom},
+    {"sitting rm", Category::kLivingRoom},      {"dining rm", Category::kDiningRoom},
+    {"kids rm", Category::kChildrenRoom},       {"kid rm", Category::kChildrenRoom},
+    {"bdrm", Category::kBedroom},               {"bedrm", Category::kBedroom},
+    {"bthrm", Category::kBathroom},             {"bathrm", Category::kBathroom},
+    {"meeting rm", Category::kMeetingRoom},
+};
 
 // Vocabulary words too common in prose to mean the object alone ("a range of plants", "seats four").
 constexpr std::array<std::string_view, 7> kAmbiguous = {"range", "display", "seat", "seats", "screen", "frame", "trunk"};
@@ -404,6 +415,16 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     if (!bound[k]) {
       bound[k] = carried;
       bound_one[k] = carried_one;
+      // "TV in lounge. Dining tbl + 6 chairs.": a dining table in a sentence that names no room is the dining
+      // room's, not the room spoken of before, and what follows it in its sentence goes with it.
+      const bool room_in_sentence = std::any_of(mentions.begin(), mentions.end(), [&](const Mention& x) {
+        return x.room && tokens[x.begin].sentence == tokens[m.begin].sentence;
+      });
+      if (!room_in_sentence && m.category->name == "dining-table" && carried && *carried != Category::kDiningRoom &&
+          *carried != Category::kKitchen) {
+        bound[k] = carried = Category::kDiningRoom;
+        bound_one[k] = carried_one = false;
+      }
     }
     // A fixture of another kind of room is not carried into one by nearness alone: a bed named on a line
     // after "... guest WC" is no bathroom's ("a bed in the lounge" still is the lounge's).

@@ -1399,6 +1399,30 @@ int Parser::TryRoom(std::size_t i, Item& item) {
     for (int k = 0; k < best; ++k) tokens_[i + k].consumed = true;
     return 0;
   }
+  // "Bath not shower", "a bath, not just a shower", "bathtub + shower", "with bath and shower": the fixtures
+  // set against each other, not rooms.
+  if (best == 1 && In(t, {"bath", "shower", "bathtub", "tub"})) {
+    const std::size_t size = tokens_.size();
+    auto fixture = [&](std::size_t k) {
+      return k < size && !tokens_[k].punct && tokens_[k].sentence == t.sentence && In(tokens_[k], {"bath", "shower", "bathtub", "tub"}) &&
+             tokens_[k].word != t.word && !(k + 1 < size && In(tokens_[k + 1], {"room", "rooms"}));
+    };
+    auto link = [&](const Token& x) {
+      return x.punct == '+' || x.punct == ',' || x.punct == '/' || x.punct == '&' ||
+             In(x, {"not", "rather", "than", "instead", "of", "over", "and", "or", "plus", "just", "a", "an", "only", "no",
+                    "one", "with", "the", "other"});
+    };
+    bool against = false;
+    for (std::size_t k = i + 1, steps = 0; k < size && steps < 6 && !against; ++k, ++steps) {
+      if (fixture(k)) against = steps > 0;
+      else if (tokens_[k].sentence != t.sentence || !link(tokens_[k])) break;
+    }
+    for (std::size_t k = i, steps = 0; k-- > 0 && steps < 6 && !against; ++steps) {
+      if (fixture(k)) against = steps > 0;
+      else if (tokens_[k].sentence != t.sentence || !link(tokens_[k])) break;
+    }
+    if (against && !(i + 1 < size && In(tokens_[i + 1], {"room", "rooms"}))) return 0;
+  }
   // "a building that doubles as home and office", "Home+office, 2 flrs": what the building is, not a room.
   if (best == 1 && t.word == "office" && i >= 2 && (In(tokens_[i - 1], {"and"}) || tokens_[i - 1].punct == '+' ||
                                                     tokens_[i - 1].punct == '&' || tokens_[i - 1].punct == '/') &&

@@ -242,3 +242,29 @@ TEST_CASE("a fixture is not carried by nearness into a room of another kind", "[
   CHECK(Named(ParseRoomRequest("A bathroom upstairs. Put a single bed in the lounge too.", Category::kLivingRoom), "bed") != nullptr);
   CHECK(Named(ParseRoomRequest("a single bed by the window", Category::kLivingRoom), "bed") != nullptr);
 }
+
+TEST_CASE("rooms in notes and British names bind their furniture; a dining table takes its sentence to the dining room",
+          "[scene][request]") {
+  // Unseen requests of issue 32: the piano went to the balcony named before "living rm", and to the kitchen
+  // named after "the front room"; the six chairs after "Dining tbl" went to the lounge of the sentence before.
+  const std::string notes = "3 flr townhouse. G: kitchen, dining. 2: master bed, kids rm, bath, balcony. Piano in living rm. 2 beds in kids rm.";
+  CHECK(Named(ParseRoomRequest(notes, Category::kLivingRoom), "piano") != nullptr);
+  CHECK(Named(ParseRoomRequest(notes, Category::kBalcony), "piano") == nullptr);
+  const RoomRequest kids = ParseRoomRequest(notes, Category::kChildrenRoom);
+  const Wish* beds = Named(kids, "bed");
+  REQUIRE(beds != nullptr);
+  CHECK(beds->count == 2);
+  const std::string british = "Ground: front room, kitchen, dining room. A piano in the front room please, and a fridge in the kitchen.";
+  CHECK(Named(ParseRoomRequest(british, Category::kLivingRoom), "piano") != nullptr);
+  CHECK(Named(ParseRoomRequest(british, Category::kKitchen), "piano") == nullptr);
+  const std::string dining = "GF: lounge, kitchen, dining rm, wc. TV in lounge. Dining tbl + 6 chairs.";
+  const RoomRequest room = ParseRoomRequest(dining, Category::kDiningRoom);
+  CHECK(Named(room, "dining-table") != nullptr);
+  const Wish* chairs = Named(room, "chair");
+  REQUIRE(chairs != nullptr);
+  CHECK(chairs->count == 6);
+  const RoomRequest lounge = ParseRoomRequest(dining, Category::kLivingRoom);
+  CHECK(Named(lounge, "tv") != nullptr);
+  CHECK(Named(lounge, "chair") == nullptr);
+  CHECK(Named(lounge, "dining-table") == nullptr);
+}

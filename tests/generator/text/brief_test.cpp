@@ -877,4 +877,38 @@ TEST_CASE("a total first and its floors after: the floors' rooms are part of it,
   CHECK(beds == 1);
 }
 
+TEST_CASE("the fourth unseen set: forms, headings, second thoughts, fixtures set against each other", "[issue32]") {
+  // "bedroom count = 4": a count after "count ="; "Floors ... 1": a form's dot leaders.
+  const Brief form = ParseBrief("Requirements:\n- storeys = 2\n- bedroom count = 4\n- bathroom count = 2\n- kitchen = 1");
+  INFO(BriefToJson(form).dump(1));
+  CHECK(Exact(form, Category::kBedroom) == 4);
+  CHECK(Exact(form, Category::kBathroom) == 2);
+  CHECK(ParseBrief("Spec:\nFloors ... 1\nShape ... octagon\nRooms ... bedroom, bathroom, kitchen").floors == 1);
+  // A "Middle:" heading between "Ground:" and "Top:"; not "In the middle:" of one floor's wings.
+  const Brief middle = ParseBrief("Three-storey house. Ground: kitchen, dining. Middle: living room, office. Top: three bedrooms.");
+  INFO(BriefToJson(middle).dump(1));
+  CHECK(Exact(middle, Category::kLivingRoom, 1) == 1);
+  CHECK(ParseBrief("A single-storey H-shaped home. In the middle: a big kitchen and living room.").floors == 1);
+  // A second thought on the floors: the later count holds.
+  CHECK(ParseBrief("An L-shaped house on three floors - wait, two floors is plenty. Kitchen and lounge.").floors == 2);
+  // "well, ... actually": the restatement replaces the kitchen-diner.
+  const Brief well = ParseBrief("On the ground floor, a kitchen-diner - well, a kitchen and a separate dining room actually - and a WC.");
+  INFO(BriefToJson(well).dump(1));
+  int kitchens = 0;
+  for (const BriefRooms& r : well.rooms) kitchens += r.category == Category::kKitchen ? r.min : 0;
+  CHECK(kitchens == 1);
+  // The "no" after a dash is the next room's; "doubles as home and office" is what the building is.
+  const Brief dash = ParseBrief("Two storeys, three bedrooms, kitchen, living room - no dining room, we eat in the kitchen.");
+  CHECK(Exact(dash, Category::kLivingRoom) == 1);
+  const Brief home = ParseBrief("A building that doubles as home and office, three levels. Ground: a meeting room, an office and a bathroom.");
+  CHECK(Exact(home, Category::kOffice, 0) == 1);
+  CHECK(Exact(home, Category::kOffice) == -100);  // no second office anywhere
+  // Fixtures set against each other are no rooms.
+  const Brief bath = ParseBrief("Bungalow: kitchen, living rm, 2 bedrms, bathrm, study. Bath not shower.");
+  INFO(BriefToJson(bath).dump(1));
+  CHECK(Exact(bath, Category::kBathroom) == 1);
+  CHECK(Exact(ParseBrief("two bathrooms, one with a bath and one with a shower"), Category::kBathroom) == 2);
+  CHECK(Exact(ParseBrief("4 bed, 2 bath, shower room"), Category::kBathroom) == 3);
+}
+
 }  // namespace villa
