@@ -243,7 +243,7 @@ TEST_CASE("a fixture is not carried by nearness into a room of another kind", "[
   CHECK(Named(ParseRoomRequest("a single bed by the window", Category::kLivingRoom), "bed") != nullptr);
 }
 
-TEST_CASE("rooms in notes and British names bind their furniture; a dining table takes its sentence to the dining room",
+TEST_CASE("rooms in notes and British names bind their furniture, and a dining table takes its sentence to the dining room",
           "[scene][request]") {
   // Unseen requests of issue 32: the piano went to the balcony named before "living rm", and to the kitchen
   // named after "the front room"; the six chairs after "Dining tbl" went to the lounge of the sentence before.
