@@ -365,6 +365,8 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       return b >= back && tokens[b - back].sentence == tokens[b].sentence ? tokens[b - back].word : kNone;
     };
     if (IsOneOf(word(1), {"a", "an", "one", "either", "another"})) return true;
+    // "the master bedroom", "the main bedroom": one of the bedrooms (the first), not each.
+    if (IsOneOf(tokens[b].word, {"master", "main", "principal"}) || IsOneOf(word(1), {"master", "main", "principal"})) return true;
     return IsOneOf(word(1), {"the", "our", "my", "their", "your"}) && word(2) == "of" && IsOneOf(word(3), {"one", "any"});
   };
 
