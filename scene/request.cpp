@@ -438,6 +438,30 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     if (!bound[k]) bound[k] = room;
   }
 
+  // Second thoughts: "a desk in the bedroom - actually no, put the desk in the study", "two sofas ... but one
+  // sofa is plenty": a later mention of the same thing after "actually", "instead", "rather", "on second
+  // thought" or "make that", or one that "is plenty" / "is enough", replaces the earlier ones (their rooms and
+  // counts).
+  for (size_t k = 0; k < mentions.size(); ++k) {
+    const Mention& m = mentions[k];
+    if (m.room) continue;
+    bool replaces = false;
+    for (size_t t = m.end; t < tokens.size() && t < m.end + 3 && tokens[t].sentence == tokens[m.begin].sentence; ++t)
+      replaces = replaces || (IsOneOf(tokens[t].word, {"is", "will", "would"}) && t + 1 < tokens.size() &&
+                              IsOneOf(tokens[t + 1].word, {"plenty", "enough", "fine", "sufficient"}));
+    for (size_t j = k; j-- > 0 && !replaces;) {
+      if (mentions[j].room || mentions[j].category != m.category) continue;
+      for (size_t t = mentions[j].end; t < m.begin && !replaces; ++t)
+        replaces = IsOneOf(tokens[t].word, {"actually", "instead", "rather", "scratch"}) ||
+                   (tokens[t].word == "second" && t + 1 < m.begin && IsOneOf(tokens[t + 1].word, {"thought", "thoughts"})) ||
+                   (tokens[t].word == "make" && t + 1 < m.begin && tokens[t + 1].word == "that");
+      break;  // only the nearest earlier mention of the thing is looked back from
+    }
+    if (!replaces) continue;
+    for (size_t j = 0; j < k; ++j)
+      if (!mentions[j].room && mentions[j].category == m.category) bound[j].reset();
+  }
+
   // Wishes for this room, and how they relate.
   std::vector<int> wish_of(mentions.size(), -1);
   size_t floor = 0;  // counts are not read across an earlier mention

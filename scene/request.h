@@ -46,7 +46,9 @@ struct RoomRequest {
 
 // The wishes of `text` for a room of category `room`, the `ordinal`-th of its category in the layout (0:
 // the first). A wish bound to one room of several ("a TV in one of the bedrooms", "a desk in a bedroom",
-// "one bedroom needs a TV") goes to the first of them only; the others note it in other_rooms. A wish for
+// "one bedroom needs a TV", "the master bedroom") goes to the first of them only; the others note it in
+// other_rooms. A second thought ("a desk in the bedroom - actually, the desk in the study", "two sofas, but
+// one sofa is plenty") replaces the earlier mentions of the piece. A wish for
 // "each" / "every" / "both" / "all" the rooms, or for "the bedroom(s)", goes to every one of them.
 // Seats asked of a room or its table ("a dining room that can seat eight people", "seating for ten", "a
 // table for six", "an eight-seat table", "a meeting room for twelve") give that room's table (a

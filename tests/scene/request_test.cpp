@@ -269,3 +269,17 @@ TEST_CASE("rooms in notes and British names bind their furniture, and a dining t
   CHECK(Named(lounge, "chair") == nullptr);
   CHECK(Named(lounge, "dining-table") == nullptr);
 }
+
+TEST_CASE("a second thought about a piece replaces the first: its room and its count", "[scene][request]") {
+  const std::string moved = "A desk in the bedroom - actually no, put the desk in the study.";
+  CHECK(Named(ParseRoomRequest(moved, Category::kBedroom), "desk") == nullptr);
+  CHECK(Named(ParseRoomRequest(moved, Category::kOffice), "desk") != nullptr);
+  const RoomRequest lounge = ParseRoomRequest("Two sofas in the lounge, but one sofa is plenty if space is tight.", Category::kLivingRoom);
+  const Wish* sofa = Named(lounge, "sofa");
+  REQUIRE(sofa != nullptr);
+  int sofas = 0;
+  for (const Wish& w : lounge.wishes) sofas += w.category == sofa->category ? w.count : 0;
+  CHECK(sofas == 1);
+  // Two mentions without a second thought both stand: "a desk in the study and a desk in the bedroom".
+  CHECK(Named(ParseRoomRequest("A desk in the study and a desk in the bedroom.", Category::kBedroom), "desk") != nullptr);
+}
