@@ -1648,18 +1648,9 @@ struct RoomSolver::Impl {
         if (CostAt(k).hard > kHairline) continue;
         const size_t logged = summary.actions.size();
         if (!FaceTv(state.Find(sofa_id), k, why, /*slides=*/false, trouble)) continue;
-        // The stand's move logged before the sofa's.
-        const RoomState placed = state;
-        ActionResult r;
-        r.action.kind = ActionKind::kUpdatePose;
-        r.action.id = stand_id;
-        r.action.pose = to;
-        r.action.reason = "the sofa cannot face its TV where it stands (" + why + "): the TV stand to another wall, the sofa before it";
-        r.status = ActionStatus::kApplied;
-        r.message = "done";
-        r.final_pose = to;
-        summary.actions.insert(summary.actions.begin() + static_cast<long>(logged), r);
-        state = placed;
+        // The stand's move, logged before the sofa's.
+        LogMove(stand_id, to, "the sofa cannot face its TV where it stands (" + why + "): the TV stand to another wall, the sofa before it");
+        std::rotate(summary.actions.begin() + static_cast<long>(logged), summary.actions.end() - 1, summary.actions.end());
         return true;
       }
     }
