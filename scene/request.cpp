@@ -96,6 +96,11 @@ constexpr RoomWord kRoomWords[] = {
     {"bdrm", Category::kBedroom},               {"bedrm", Category::kBedroom},
     {"bthrm", Category::kBathroom},             {"bathrm", Category::kBathroom},
     {"meeting rm", Category::kMeetingRoom},
+    {"lvg rm", Category::kLivingRoom},          {"liv rm", Category::kLivingRoom},
+    {"din rm", Category::kDiningRoom},          {"mtg rm", Category::kMeetingRoom},
+    {"kit", Category::kKitchen},                {"powder rm", Category::kBathroom},
+    {"childrens bedroom", Category::kChildrenRoom}, {"children bedroom", Category::kChildrenRoom},
+    {"kids bedroom", Category::kChildrenRoom},  {"kid bedroom", Category::kChildrenRoom},
 };
 
 // Vocabulary words too common in prose to mean the object alone ("a range of plants", "seats four").
@@ -127,6 +132,15 @@ bool FitsRoom(std::string_view category, Category room) {
   if (is({"toilet", "bathtub", "shower", "washbasin", "towel-rack"})) return room == Category::kBathroom;
   if (is({"cooker", "counter", "range-hood", "dishwasher", "island"})) return room == Category::kKitchen;
   return true;
+}
+
+// Pieces no bathroom or utility room is furnished with: a "... in the bathroom" after them binds something
+// else ("Dining table with 4 chairs, and one mirror in each of the 2 bathrooms").
+bool OutOfPlace(std::string_view category, Category room) {
+  if (room != Category::kBathroom && room != Category::kUtilityRoom) return false;
+  static constexpr std::array<std::string_view, 12> kLiving = {"dining-table", "chair", "sofa", "armchair", "bed", "child-bed",
+                                                               "desk", "piano", "coffee-table", "tv-stand", "conference-table", "bookcase"};
+  return std::find(kLiving.begin(), kLiving.end(), category) != kLiving.end();
 }
 
 // "3 bed, 1 bath", "a four-bed house": a count of rooms, the singular after a number (two beds are
@@ -351,9 +365,35 @@ void Capacities(const std::vector<Token>& tokens, const std::vector<Mention>& me
 
 }  // namespace
 
+// A bare count that corrects the one before it: "Dining table for four... make that six", "six chairs...
+// sorry, eight", "two armchairs - no, three": the earlier count (the last number in the twelve words before
+// the cue) is rewritten, and the cue's words dropped.
+std::vector<Token> BareCorrections(std::vector<Token> tokens) {
+  for (size_t i = 0; i + 1 < tokens.size(); ++i) {
+    size_t n = 0;  // the new count's token
+    if (IsOneOf(tokens[i].word, {"make", "change"}) && IsOneOf(tokens[i + 1].word, {"that", "it"})) n = i + 2 + (i + 2 < tokens.size() && tokens[i + 2].word == "to");
+    else if (IsOneOf(tokens[i].word, {"sorry", "no", "wait", "oops"}) && (i == 0 || tokens[i - 1].sentence != tokens[i].sentence || !NumberWord(tokens[i - 1].word)))
+      n = i + 1;
+    if (n == 0 || n >= tokens.size() || tokens[n].sentence != tokens[i].sentence || !NumberWord(tokens[n].word) || *NumberWord(tokens[n].word) <= 0)
+      continue;
+    // A bare count: nothing named after it in its sentence.
+    if (n + 1 < tokens.size() && tokens[n + 1].sentence == tokens[n].sentence && !IsOneOf(tokens[n + 1].word, {"please", "thanks", "actually", "then"}))
+      continue;
+    for (size_t j = i; j-- > 0;) {
+      if (j + 12 < i) break;  // ("..." ends three sentences: the distance is counted in words)
+      if (NumberWord(tokens[j].word) && *NumberWord(tokens[j].word) > 0) {
+        tokens[j].word = tokens[n].word;
+        tokens.erase(tokens.begin() + static_cast<std::ptrdiff_t>(i), tokens.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+        break;
+      }
+    }
+  }
+  return tokens;
+}
+
 RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) {
   RoomRequest out;
-  std::vector<Token> tokens = Tokenise(text);
+  std::vector<Token> tokens = BareCorrections(Tokenise(text));
   std::vector<Mention> mentions = FindMentions(tokens);
   const bool names_rooms = std::any_of(mentions.begin(), mentions.end(), [](const Mention& m) { return m.room; });
   // A room mention that names one room of several: "one of the bedrooms", "a bedroom", "one bedroom",
@@ -387,17 +427,31 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       bound[k] = room;
       continue;
     }
-    // "... in / for / into the <room>" after the object, before any other room is named.
+    // "... in / for / into the <room>" after the object, before any other room is named. Not across a
+    // clause that names another piece when a room was named before the object in its sentence: "Each of
+    // the children's bedrooms should have a bookcase, and a big rug for the living room" (the bookcase is
+    // the children's rooms').
+    const bool room_before = std::any_of(mentions.begin(), mentions.begin() + static_cast<std::ptrdiff_t>(k), [&](const Mention& x) {
+      return x.room && tokens[x.begin].sentence == tokens[m.begin].sentence;
+    });
+    bool clause = false;  // "and" / "plus" / "put" since the object, then another piece
     for (size_t j = k + 1; j < mentions.size(); ++j) {
       if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
-      if (!mentions[j].room) continue;
+      if (!mentions[j].room) {
+        for (size_t t = mentions[j - 1].end; t < mentions[j].begin && !clause; ++t)
+          clause = IsOneOf(tokens[t].word, {"and", "plus", "also", "put", "add"});
+        if (clause && room_before) break;
+        continue;
+      }
       size_t p = mentions[j].begin;
       while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their", "your", "one", "either",
                                                         "another", "each", "every", "both", "all", "any", "other"}))
         --p;
       // "in one of the bedrooms": the determiners before the room, then "one of".
-      while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any"})) p -= 2;
-      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) {
+      // ("in 1 of the bthrms", "in each of the 2 bathrooms" too.)
+      if (p > m.end + 1 && NumberWord(tokens[p - 1].word) && IsOneOf(tokens[p - 2].word, {"the", "our", "my"})) p -= 2;
+      while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any", "1", "each", "both", "all"})) p -= 2;
+      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"}) && !OutOfPlace(m.category->name, mentions[j].room_category)) {
         bound[k] = mentions[j].room_category;
         bound_one[k] = names_one(mentions[j]);
         named[k] = true;
@@ -427,6 +481,13 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
         bound[k] = carried = Category::kDiningRoom;
         bound_one[k] = carried_one = false;
       }
+    }
+    // Nor is a dining table an office's or a bathroom's by nearness: "The office gets three bookcases, and we
+    // want a dining table for six" (the chairs after it go with it).
+    if (bound[k] && !named[k] && m.category->name == "dining-table" && *bound[k] != Category::kDiningRoom &&
+        *bound[k] != Category::kKitchen && *bound[k] != Category::kLivingRoom) {
+      bound[k] = carried = Category::kDiningRoom;
+      bound_one[k] = carried_one = false;
     }
     // A fixture of another kind of room is not carried into one by nearness alone: a bed named on a line
     // after "... guest WC" is no bathroom's ("a bed in the lounge" still is the lounge's).

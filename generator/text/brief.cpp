@@ -456,7 +456,8 @@ const std::vector<RoomWord>& RoomLexicon() {
     add(C::kUtilityRoom, {"utility room", "utility", "staircase room", "stair room", "stairwell room",
                           "stair hall", "stairway room", "staircase-room", "utility-room", "stair core",
                           "stairs room", "utility area", "service room", "laundry room", "laundry", "laundry area",
-                          "pantry", "mudroom", "mud room", "boot room", "scullery", "storage room", "store room"});
+                          "pantry", "mudroom", "mud room", "boot room", "scullery", "storage room", "store room", "storage", "store",
+                          "storeroom"});
     add(C::kBalcony, {"balcony", "terrace", "veranda", "verandah", "loggia", "deck", "sun deck",
                       "roof terrace", "balconette"});
     return out;
@@ -663,7 +664,8 @@ const std::unordered_map<std::string, std::vector<std::string>>& Shorthand() {
       {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
       {"din", {"dining"}}, {"fam", {"family"}}, {"liv", {"living"}}, {"lvg", {"living"}}, {"conf", {"conference"}},
       {"mstr", {"master"}}, {"gf", {"ground", "floor"}}, {"ff", {"first", "floor"}}, {"sf", {"second", "floor"}}, {"1f", {"1st", "floor"}}, {"2f", {"2nd", "floor"}},
-      {"3f", {"3rd", "floor"}}, {"incl", {"including"}}, {"inc", {"including"}}};
+      {"3f", {"3rd", "floor"}}, {"incl", {"including"}}, {"inc", {"including"}}, {"mtg", {"meeting"}}, {"pls", {"please"}},
+      {"plz", {"please"}}};
   return words;
 }
 
@@ -698,6 +700,16 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     if (t.punct == '(' && i + 2 < tokens.size() && tokens[i + 1].number && tokens[i + 2].punct == ')' && !out.empty() &&
         Cardinal(out.back()) && *Cardinal(out.back()) == tokens[i + 1].value) {
       i += 2;
+      continue;
+    }
+    // "2x kids rm" (notes): two.
+    if (!t.punct && t.word.size() >= 2 && t.word.back() == 'x' && t.word.size() <= 3 &&
+        std::all_of(t.word.begin(), t.word.end() - 1, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+      Token n = t;
+      n.word = n.stem = t.word.substr(0, t.word.size() - 1);
+      n.number = true;
+      n.value = std::stoi(n.word);
+      out.push_back(n);
       continue;
     }
     if (t.word == "half" && i + 2 < tokens.size() && tokens[i + 1].word == "a" && tokens[i + 2].word == "dozen") {
@@ -736,6 +748,10 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     // (Words of their own are no misspellings: "double" beside the plural "doubles", "single".)
     if (t.punct || t.number || t.word.size() < 5 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
         Cardinal(t) || IsAdjective(t) || IsFiller(t))
+      continue;
+    // Common words one letter from a room's name: "no matter" is no master bedroom.
+    if (In(t, {"matter", "matters", "latter", "batter", "hatter", "faster", "plaster", "mister", "sister", "sisters",
+               "loom", "boom", "broom", "zoom", "doom", "gloom"}))
       continue;
     // One category among the names it is one edit from (it may be near two spellings of one room:
     // "bathrom" is near "bathroom" and "bathrm"), the first such name taken.
@@ -921,6 +937,8 @@ class Parser {
   int TryCue(std::size_t i, Item& item);
   int TryPanoramic(std::size_t i, Item& item);
   int TryFurniture(std::size_t i, Item& item);
+  // "no first floor", "without a second floor" (at the end of its clause): a floor denied, not a heading.
+  bool NegatedFloor(std::size_t i) const;
   int TryCapacity(std::size_t i, Item& item);
   int TryEntrance(std::size_t i, Item& item);
   int TrySide(std::size_t i, Item& item);
@@ -1112,9 +1130,22 @@ bool Parser::ElidedFloor(std::size_t i) const {
   return std::any_of(tokens_.begin(), tokens_.end(), [](const Token& t) { return IsFloorNoun(t); });
 }
 
+bool Parser::NegatedFloor(std::size_t i) const {
+  const bool denied = i > 0 && (In(tokens_[i - 1], {"no", "without"}) ||
+                                (i > 1 && In(tokens_[i - 1], {"a", "any"}) && In(tokens_[i - 2], {"no", "without"})));
+  return denied && i + 1 < tokens_.size() && Ordinal(tokens_[i]) &&
+         IsFloorNoun(tokens_[i + 1]) && !(i + 2 < tokens_.size() && tokens_[i + 2].sentence == tokens_[i].sentence && !tokens_[i + 2].punct &&
+                                          !In(tokens_[i + 2], {"at", "please", "thanks"}));
+}
+
 int Parser::TryFloorRef(std::size_t i, Item& item) {
   const Token& t = tokens_[i];
   if (t.punct) return 0;
+  // "a bungalow - no first floor at all": a floor the building does not have, no heading.
+  if (NegatedFloor(i)) {
+    tokens_[i].consumed = tokens_[i + 1].consumed = true;
+    return 0;
+  }
   if (ElidedFloor(i)) {
     item.ref = RefType::kOrdinal;
     item.n = *Ordinal(t);
@@ -1356,6 +1387,8 @@ bool Parser::IsBedroomCount(std::size_t i) const {
   if (!n || tokens_[i - 1].word == "single" || tokens_[i - 1].word == "double" || tokens_[i - 1].word == "triple")
     return false;
   if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "into", "inside", "for", "per"})) return false;
+  // "Both kids' rooms with one bed and 1 desk each": furniture of the rooms named.
+  if (i >= 2 && In(tokens_[i - 2], {"with", "has", "have", "gets", "get", "needs", "need", "wants"})) return false;
   return true;
 }
 
@@ -1430,6 +1463,53 @@ int Parser::TryRoom(std::size_t i, Item& item) {
     tokens_[i].consumed = true;
     return 0;
   }
+  // "storage" and "store" alone name a room only as an item of a list ("GF: kit, din, WC, store."), not in
+  // "plenty of storage", "somewhere to store bikes".
+  if (best == 1 && In(t, {"storage", "store"})) {
+    const bool before = i == 0 || tokens_[i - 1].sentence != t.sentence || In(tokens_[i - 1], {"and", "a", "some", "plus", "one", "1"}) ||
+                        tokens_[i - 1].punct == ',' || tokens_[i - 1].punct == ':' || tokens_[i - 1].punct == ';' || tokens_[i - 1].punct == '+';
+    const bool after = i + 1 == tokens_.size() || tokens_[i + 1].sentence != t.sentence || In(tokens_[i + 1], {"and", "plus"}) ||
+                       (tokens_[i + 1].punct && tokens_[i + 1].punct != '-');
+    if (!before || !after) return 0;
+  }
+  // "a walk-in shower in the en-suite", "the downstairs bathroom gets a shower instead", "Both bathrooms
+  // with a bathtub": a fixture of a bathroom named beside it, not a room.
+  if (best == 1 && In(t, {"shower", "bath"}) && !(i + 1 < tokens_.size() && In(tokens_[i + 1], {"room", "rooms"}))) {
+    const std::size_t size = tokens_.size();
+    auto bathroom_at = [&](std::size_t k) {
+      if (k >= size || tokens_[k].sentence != t.sentence) return false;
+      if (tokens_[k].item >= 0)  // read already (the rooms before it)
+        return items_[tokens_[k].item].kind == ItemKind::kRoom && items_[tokens_[k].item].category == Category::kBathroom &&
+               !In(tokens_[k], {"shower", "bath"});
+      for (const auto& w : RoomLexicon())
+        if (w.category == Category::kBathroom && MatchPhrase(tokens_, k, w.words) > 0 && !In(tokens_[k], {"shower", "bath"})) return true;
+      return false;
+    };
+    // "... in / inside the <bathroom>" right after it.
+    std::size_t k = i + 1;
+    if (k < size && In(tokens_[k], {"in", "inside", "for"})) {
+      ++k;
+      while (k < size && In(tokens_[k], {"the", "a", "an", "each", "every", "both", "our", "my", "upstairs", "downstairs", "main",
+                                         "master", "family", "guest"}))
+        ++k;
+      if (bathroom_at(k)) return 0;
+    }
+    // A verb or "with" before it (past its article and adjectives) whose subject is a bathroom.
+    std::size_t b = i;
+    while (b > 0 && tokens_[b - 1].sentence == t.sentence &&
+           In(tokens_[b - 1], {"a", "an", "the", "walk", "in", "big", "large", "separate", "rain", "corner", "double", "proper",
+                               "freestanding", "free", "standing", "deep", "roll", "top", "only", "just"}))
+      --b;
+    if (b > 0 && In(tokens_[b - 1], {"with", "gets", "get", "has", "have", "wants", "want", "needs", "need", "getting"})) {
+      for (std::size_t q = b - 1; q-- > 0 && q + 8 > b && tokens_[q].sentence == t.sentence;)
+        if (bathroom_at(q)) return 0;
+    }
+    if (i > 0 && tokens_[i - 1].word == "walk") return 0;  // "walk-in shower": a fixture whatever follows
+  }
+  // "Bathtub in one of the bathrooms, the other shower only": what the other one holds, not a room.
+  if (best == 1 && In(t, {"shower", "bath"}) &&
+      ((i + 1 < tokens_.size() && tokens_[i + 1].word == "only") || (i > 0 && tokens_[i - 1].word == "other")))
+    return 0;
   if (best == 1 && (t.word == "shower" || t.word == "bath") && i > 0 && In(tokens_[i - 1], {"a", "the"}) &&
       i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "inside"}))
     return 0;  // "a shower in the bathroom": furniture
@@ -1590,7 +1670,7 @@ void Parser::MatchAll() {
                                         (i + 3 < tokens_.size() && tokens_[i + 1].word == "and" && Ordinal(tokens_[i + 2]) == 1 &&
                                          IsFloorNoun(tokens_[i + 3]))))
       ground = true;
-    if (Ordinal(tokens_[i]) == 1 && (IsFloorNoun(tokens_[i + 1]) || ElidedFloor(i))) {
+    if (Ordinal(tokens_[i]) == 1 && (IsFloorNoun(tokens_[i + 1]) || ElidedFloor(i)) && !NegatedFloor(i)) {
       // "1st floor (ground level)": the first floor is the ground floor (American).
       // ("1st floor (that's ground level)", "(i.e. street level)": a few words may come first.)
       std::size_t g = i + 3;
@@ -1908,6 +1988,27 @@ void Parser::Quantify(Mention& m) {
     Consume(after, count->second);
     m.last = count->second;
     determined = true;
+  }
+  // "Kids rm: desk.", "Lvg rm: big sectional + TV", "Mtg rm w/ 6 chairs", "Kit needs fridge & dishwasher":
+  // a bare room noun heading a clause of furniture (and no room) after rooms of its kind were counted is
+  // one of them, named for its furnishing (terse notes), not one more.
+  if (!determined && after < size && tokens_[after].sentence == sentence &&
+      (tokens_[after].punct == ':' || tokens_[after].punct == '-' || (tokens_[after].word == "w" && after + 1 < size && tokens_[after + 1].punct == '/') ||
+       In(tokens_[after], {"with", "needs", "need", "gets", "get", "has", "wants", "should"}))) {
+    bool furniture = false, room = false;
+    for (int q = after + 1; q < size && tokens_[q].sentence == sentence; ++q) {
+      const int it = tokens_[q].item;
+      if (it < 0 || it == m.item) continue;
+      furniture = furniture || items_[it].kind == ItemKind::kFurniture;
+      room = room || items_[it].kind == ItemKind::kRoom;
+    }
+    const bool counted = std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {
+      return o.category == item.category && o.counting && o.max != 0;
+    });
+    if (furniture && !room && counted) {
+      m.definite = true;
+      determined = true;
+    }
   }
   // "4 bedrooms (2 of them are kids' rooms)", "two bedrooms, one of them a guest bedroom": part of a count
   // before it in the sentence, not more rooms. Kids' rooms out of bedrooms are taken from the bedrooms.
@@ -2675,7 +2776,7 @@ void Parser::Attach() {
 }
 
 // Utility rooms that are no staircase room (Finish).
-constexpr std::string_view kServiceRooms[] = {"laundry", "pantry", "mudroom", "mud room", "boot room", "scullery", "storage", "store room"};
+constexpr std::string_view kServiceRooms[] = {"laundry", "pantry", "mudroom", "mud room", "boot room", "scullery", "storage", "store"};
 
 void Parser::Finish(Brief& brief) {
   // Floors.
@@ -3149,6 +3250,15 @@ void Parser::Corrections() {
     if (dash_before && tokens_[i].word == "well" && tokens_[i + 1].punct == ',') cues.push_back(i + 1);
     if (tokens_[i].word == "or" && tokens_[i + 1].word == "rather") cues.push_back(i + 1);
     if (dash_before && tokens_[i].word == "i" && tokens_[i + 1].word == "mean") cues.push_back(i + 1);
+    // "two kids' rooms - no, three", "six chairs... sorry, eight", "three floors, no wait, two": a bare
+    // count right after "no" / "sorry" / "wait" that follows a break.
+    const bool broken = i > 0 && (tokens_[i - 1].punct == '-' || tokens_[i - 1].punct == ',' || tokens_[i - 1].punct == '.' ||
+                                  tokens_[i - 1].punct == ';' || tokens_[i - 1].sentence != tokens_[i].sentence);
+    if (broken && In(tokens_[i], {"no", "sorry", "wait", "oops"})) {
+      int c = i;
+      while (c + 1 < size && (tokens_[c + 1].punct == ',' || In(tokens_[c + 1], {"wait", "sorry", "actually"}))) ++c;
+      if (c + 1 < size && tokens_[c + 1].item < 0 && Cardinal(tokens_[c + 1])) cues.push_back(c);
+    }
   }
   for (int cue : cues) {
     // "make it three": a bare count for the rooms named last before the cue.
@@ -3158,6 +3268,11 @@ void Parser::Corrections() {
       for (Mention& p : mentions_)
         if (p.last < cue && p.counting) last = &p;
       if (!last) continue;
+      // "Dining table for four... make that six": the piece named since is what the count is for.
+      bool piece = false;
+      for (int k = last->last + 1; k < cue; ++k)
+        piece = piece || (tokens_[k].item >= 0 && items_[tokens_[k].item].kind == ItemKind::kFurniture);
+      if (piece) continue;
       last->min = last->max = *Cardinal(tokens_[n]);
       Consume(cue - 1 - (tokens_[cue].word == "to"), n);
       continue;
@@ -3185,6 +3300,30 @@ void Parser::Corrections() {
       any = true;
     }
     if (any) Consume(cue - 1 - (tokens_[cue].word == "to"), cue);
+  }
+  // "an office - hmm, no, turn the office into a meeting room": the room named before becomes the other
+  // (one fewer of its kind; the meeting room is counted where it is named).
+  for (int i = 0; i + 3 < size; ++i) {
+    if (!In(tokens_[i], {"turn", "convert", "change", "make"})) continue;
+    int k = i + 1;
+    while (k < size && In(tokens_[k], {"the", "that", "this", "my", "our"})) ++k;
+    if (k >= size || tokens_[k].item < 0 || items_[tokens_[k].item].kind != ItemKind::kRoom) continue;
+    const int from = MentionOfItem(tokens_[k].item);
+    int j = items_[tokens_[k].item].last + 1;
+    if (from < 0 || j >= size || !In(tokens_[j], {"into", "to"})) continue;
+    int y = j + 1;
+    while (y < size && In(tokens_[y], {"a", "an"})) ++y;
+    if (y >= size || tokens_[y].item < 0 || items_[tokens_[y].item].kind != ItemKind::kRoom ||
+        items_[tokens_[y].item].category == mentions_[from].category)
+      continue;
+    Mention* old = nullptr;
+    for (Mention& p : mentions_)
+      if (p.last < i && p.counting && p.category == mentions_[from].category && p.max > 0) old = &p;
+    if (!old) continue;
+    old->min = std::max(0, old->min - 1);
+    old->max = std::max(0, old->max - 1);
+    Consume(i, i);
+    Consume(j, j);
   }
   // "No, scratch the meeting room", "forget the balcony": a room named before, taken back.
   for (Mention& m : mentions_) {

@@ -11,6 +11,9 @@
 #include "layout/geometry.h"
 #include "layout/validate.h"
 #include "util/hash.h"
+#ifdef VILLA_HAVE_SCENE_REQUEST
+#include "scene/request.h"
+#endif
 
 namespace villa {
 namespace {
@@ -269,6 +272,43 @@ PartitionOptions PartitionOptionsForBrief(const Brief& brief, int floors, bool o
   return o;
 }
 
+// The people the request seats at a table of a room kind ("a dining table for six", "Dining table with 4
+// chairs", "a meeting room that seats ten"), read by the furnishing's own request reader; 0 when it says
+// nothing.
+int SeatsAsked(const Brief& brief, Category room) {
+#ifdef VILLA_HAVE_SCENE_REQUEST
+  const scene::RoomRequest request = scene::ParseRoomRequest(brief.text, room);
+  int seats = 0;
+  for (const scene::Wish& w : request.wishes) {
+    if (w.category->name == "dining-table" || w.category->name == "conference-table") seats = std::max(seats, w.seats);
+    if (w.category->name == "chair") seats = std::max(seats, w.count);
+  }
+  return seats;
+#else
+  (void)brief;
+  (void)room;
+  return 0;
+#endif
+}
+
+// Rooms of `room`'s kind in `layout` too small for a table seating `seats` with 0.75 m behind every chair
+// (the furnishing's rule, issue 27): a table 0.9 m deep and 0.6 m a place along, chairs on both long
+// sides (0.05 m gap, 0.5 m chair, 0.75 m clear each), 0.2 m of wall; ends left free.
+int RoomsTooSmallToSeat(const Layout& layout, Category room, int seats) {
+  if (seats < 3) return 0;
+  const double length = 0.6 * std::ceil(seats / 2.0), need_across = 0.9 + 2.0 * 1.3 + 0.2, need_along = length + 0.6;
+  int short_of = 0;
+  for (const Room& r : layout.rooms) {
+    if (r.category != room || r.polygon.empty()) continue;
+    const Box2 b = BoundingBox(r.polygon);
+    const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
+    const bool fits = (std::min(w, h) >= need_across && std::max(w, h) >= need_along) ||
+                      (w >= need_across && h >= need_along) || (h >= need_across && w >= need_along);
+    short_of += !fits;
+  }
+  return short_of;
+}
+
 void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary& summary) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -287,7 +327,13 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
   for (int l = 0; l < stated_floors; ++l) every_floor_listed &= listed_levels.count(l) > 0;
   const bool prefer_only_required = exact_categories >= 4 || every_floor_listed;
 
+  // Tables the request sizes for its people want rooms that can seat them.
+  const int dining_seats = SeatsAsked(brief, Category::kDiningRoom), meeting_seats = SeatsAsked(brief, Category::kMeetingRoom);
+  auto unseated = [&](const Layout& layout) {
+    return RoomsTooSmallToSeat(layout, Category::kDiningRoom, dining_seats) + RoomsTooSmallToSeat(layout, Category::kMeetingRoom, meeting_seats);
+  };
   int best_met = -1;
+  int best_unseated = 0;
   int best_extras = 0;
   int best_stairs = 0;  // UnservableStairRooms of the best layout
   std::optional<Layout> best;
@@ -331,15 +377,19 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
     const int met = check.met();
     const int extras = extras_of(ps.layout);
     const int stairs = UnservableStairRooms(ps.layout);
-    if (met > best_met || (met == best_met && (stairs < best_stairs || (stairs == best_stairs && extras < best_extras)))) {
+    const int short_of = unseated(ps.layout);
+    if (met > best_met ||
+        (met == best_met && (stairs < best_stairs ||
+                             (stairs == best_stairs && (short_of < best_unseated || (short_of == best_unseated && extras < best_extras)))))) {
       best_met = met;
+      best_unseated = short_of;
       best_extras = extras;
       best_stairs = stairs;
       best = std::move(ps.layout);
       best_shape = ps.shape;
     }
     if (best_met == goal && since_goal < 0) since_goal = 0;
-    if (best_met == goal && best_extras == 0 && best_stairs == 0) break;
+    if (best_met == goal && best_extras == 0 && best_stairs == 0 && best_unseated == 0) break;
   }
   PlanRound round;
   round.round = 0;

@@ -25,3 +25,9 @@ if(TARGET villa_assets)
   target_link_libraries(villa_generator PUBLIC villa_assets)
   target_compile_definitions(villa_generator PRIVATE VILLA_HAVE_ASSET_VOCABULARY=1)
 endif()
+# The furnishing's request reader (scene/request.h) tells the procedural backend how many people a
+# dining or meeting table is to seat, so that it prefers layouts whose room can hold them.
+if(TARGET villa_scene)
+  target_link_libraries(villa_generator PUBLIC villa_scene)
+  target_compile_definitions(villa_generator PRIVATE VILLA_HAVE_SCENE_REQUEST=1)
+endif()

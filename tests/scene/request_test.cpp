@@ -283,3 +283,42 @@ TEST_CASE("a second thought about a piece replaces the first: its room and its c
   // Two mentions without a second thought both stand: "a desk in the study and a desk in the bedroom".
   CHECK(Named(ParseRoomRequest("A desk in the study and a desk in the bedroom.", Category::kBedroom), "desk") != nullptr);
 }
+
+TEST_CASE("a fifth unseen set: clauses, bare corrections, tables out of place, short room names", "[scene][request]") {
+  // "..., and a big rug for the living room" binds the rug, not the bookcase of the clause before it.
+  const std::string clause = "Each of the children's bedrooms should have a bookcase, and a big rug for the living room please.";
+  CHECK(Named(ParseRoomRequest(clause, Category::kChildrenRoom), "bookcase") != nullptr);
+  CHECK(Named(ParseRoomRequest(clause, Category::kLivingRoom), "bookcase") == nullptr);
+  CHECK(Named(ParseRoomRequest(clause, Category::kLivingRoom), "rug") != nullptr);
+  const std::string tv = "Every bedroom gets its own TV, and put a floor lamp in the den.";
+  CHECK(Named(ParseRoomRequest(tv, Category::kBedroom, 2), "tv") != nullptr);
+  CHECK(Named(ParseRoomRequest(tv, Category::kLivingRoom), "tv") == nullptr);
+  // Without a room before it, a list still goes to the room after it.
+  CHECK(Named(ParseRoomRequest("A sofa and a TV in the lounge.", Category::kLivingRoom), "sofa") != nullptr);
+  // A bare count corrects the count before it.
+  const RoomRequest six_seats = ParseRoomRequest("GF: kitchen, dining room. Dining table for four... make that six.", Category::kDiningRoom);
+  const Wish* seats = Named(six_seats, "chair");
+  REQUIRE(seats != nullptr);
+  CHECK(seats->count == 6);
+  const RoomRequest eight = ParseRoomRequest("Meeting room with six chairs... sorry, eight.", Category::kMeetingRoom);
+  const Wish* meeting = Named(eight, "chair");
+  REQUIRE(meeting != nullptr);
+  CHECK(meeting->count == 8);
+  // A dining table is no office's or bathroom's by nearness; its chairs follow it.
+  const std::string office = "Ground: office, kitchen, dining room. The office gets three bookcases, and we want a dining table for six.";
+  CHECK(Named(ParseRoomRequest(office, Category::kOffice), "dining-table") == nullptr);
+  const RoomRequest dining_six = ParseRoomRequest(office, Category::kDiningRoom);
+  const Wish* six = Named(dining_six, "chair");
+  REQUIRE(six != nullptr);
+  CHECK(six->count == 6);
+  const std::string baths = "Downstairs: kitchen, dining room. Dining table with 4 chairs, and one mirror in each of the 2 bathrooms.";
+  const RoomRequest dining_four = ParseRoomRequest(baths, Category::kDiningRoom);
+  const Wish* four = Named(dining_four, "chair");
+  REQUIRE(four != nullptr);
+  CHECK(four->count == 4);
+  CHECK(Named(ParseRoomRequest(baths, Category::kBathroom), "dining-table") == nullptr);
+  CHECK(Named(ParseRoomRequest(baths, Category::kBathroom, 1), "mirror") != nullptr);
+  // Short names of notes: "Kit needs fridge & dishwasher", "Bathtub in 1 of the bthrms".
+  CHECK(Named(ParseRoomRequest("Single lvl. Lounge, kit, 2 bdrm. Kit needs fridge & dishwasher.", Category::kKitchen), "dishwasher") != nullptr);
+  CHECK(Named(ParseRoomRequest("Kit, 2 bthrm. Bathtub in 1 of the bthrms.", Category::kBathroom), "bathtub") != nullptr);
+}

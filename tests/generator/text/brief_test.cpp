@@ -911,4 +911,63 @@ TEST_CASE("the fourth unseen set: forms, headings, second thoughts, fixtures set
   CHECK(Exact(ParseBrief("4 bed, 2 bath, shower room"), Category::kBathroom) == 3);
 }
 
+TEST_CASE("the fifth unseen set: notes that furnish a room named before, storage, negated floors, corrections", "[issue32]") {
+  // "Lvg rm: big sectional + TV. Study: desk.": the rooms of the list, furnished, not two more.
+  const Brief notes = ParseBrief("2-flr villa pls. GF: lvg rm, kit, din rm, WC, terrace. 1F: 3 bdrm, 2 bath, study. "
+                                 "Lvg rm: big sectional + TV. Study: desk.");
+  INFO(BriefToJson(notes).dump(1));
+  CHECK(Exact(notes, Category::kLivingRoom, 0) == 1);
+  CHECK(Exact(notes, Category::kLivingRoom) == -100);  // no second one, anywhere
+  CHECK(Exact(notes, Category::kOffice, 1) == 1);
+  CHECK(Exact(notes, Category::kOffice) == -100);
+  const Brief kids = ParseBrief("Single lvl. Lounge, kit, 2 bdrm, kids rm, 1 bath. Kit needs fridge & dishwasher. Kids rm: desk.");
+  INFO(BriefToJson(kids).dump(1));
+  CHECK(Exact(kids, Category::kChildrenRoom) == 1);
+  CHECK(Exact(kids, Category::kKitchen) == 1);
+  // Without a room of its kind before, a heading still names a room.
+  CHECK(Exact(ParseBrief("Kitchen, bedroom. Study: desk."), Category::kOffice) == 1);
+  // "2x kids rm", "mtg rm", "store" in a list.
+  const Brief terse = ParseBrief("3 floors. GF: kit, din, lvg, WC, store. 1F: 2 bdrm, bath, 2x kids rm. 2F: home office, mtg rm, terrace. "
+                                 "Mtg rm w/ 6 chairs.");
+  INFO(BriefToJson(terse).dump(1));
+  CHECK(Exact(terse, Category::kChildrenRoom, 1) == 2);
+  CHECK(Exact(terse, Category::kMeetingRoom, 2) == 1);
+  CHECK(Exact(terse, Category::kMeetingRoom) == -100);
+  // The store is understood: a separate one cannot be made where the utility room holds the stairs.
+  CHECK(Exact(terse, Category::kUtilityRoom, 0) == -100);
+  CHECK(std::any_of(terse.conflicts.begin(), terse.conflicts.end(), [](const std::string& c) { return c.find("\"store\"") == 0; }));
+  CHECK(Exact(ParseBrief("Bungalow: kitchen, lounge, bedroom, bathroom, store."), Category::kUtilityRoom) == 1);
+  CHECK(Exact(ParseBrief("A kitchen with plenty of storage and a bedroom."), Category::kUtilityRoom) == -100);
+  // "the other shower only": what the other bathroom holds.
+  CHECK(Exact(ParseBrief("Bungalow: kit, 3 bdrm, 2 bthrm. Bathtub in 1 of the bthrms, the other shower only."), Category::kBathroom) == 2);
+  // "no first floor at all": no heading, and no British numbering.
+  const Brief bungalow = ParseBrief("Just a ground floor for us, it's a bungalow - no first floor at all. Lounge, kitchen, two bedrooms and a shower room.");
+  INFO(BriefToJson(bungalow).dump(1));
+  CHECK(bungalow.floors == 1);
+  CHECK(Exact(bungalow, Category::kBedroom, 0) == 2);
+  // Corrections: "two kids' rooms - no, three"; "make that six" after a table is the table's.
+  const Brief three = ParseBrief("Two-storey. Ground floor: living room, kitchen, WC. First floor: our bedroom, two kids' rooms - no, three, "
+                                 "we're optimists - and a bathroom. Dining table for four... make that six.");
+  INFO(BriefToJson(three).dump(1));
+  CHECK(Exact(three, Category::kChildrenRoom, 1) == 3);
+  CHECK(Exact(three, Category::kBathroom, 1) == 1);
+  // "turn the office into a meeting room": one room, not both.
+  const Brief turned = ParseBrief("One storey. Lounge, kitchen, two bedrooms, a bathroom, an office - hmm, no, turn the office into a meeting room.");
+  INFO(BriefToJson(turned).dump(1));
+  CHECK(Exact(turned, Category::kOffice) == 0);
+  CHECK(Exact(turned, Category::kMeetingRoom) == 1);
+  // "No matter" is no master bedroom taken back.
+  const Brief matter = ParseBrief("Two storeys: downstairs a living room and a kitchen, upstairs two bedrooms. No matter, we can wait.");
+  CHECK(Exact(matter, Category::kBedroom, 1) == 2);
+  CHECK(Exact(matter, Category::kBedroom) == -100);
+  // Showers and baths of a bathroom named beside them are fixtures; "one bed ... each" furniture.
+  CHECK(Exact(ParseBrief("First floor: main bedroom with en-suite and a bathroom. I'd like a walk-in shower in the en-suite."),
+              Category::kBathroom, 0) == 2);  // (American: the first floor is the ground)
+  CHECK(Exact(ParseBrief("Two bathrooms. The downstairs bathroom gets a shower."), Category::kBathroom) == 2);
+  CHECK(Exact(ParseBrief("A house with a kitchen, two bedrooms and a bath."), Category::kBathroom) == 1);
+  const Brief beds = ParseBrief("Level 2 has 2 kids' rooms, one bedroom and two bathrooms. Both kids' rooms with one bed and 1 desk each.");
+  INFO(BriefToJson(beds).dump(1));
+  CHECK(Exact(beds, Category::kBedroom) == -100);
+}
+
 }  // namespace villa
