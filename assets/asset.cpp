@@ -265,6 +265,7 @@ nlohmann::ordered_json AssetToJson(const AssetRecord& a) {
   mesh["triangles"] = a.mesh.triangles;
   mesh["watertight"] = a.mesh.watertight;
   mesh["manifold_edges"] = Round4(a.mesh.manifold_edges);
+  if (!a.mesh.full_file.empty()) mesh["full"] = {{"file", a.mesh.full_file}, {"triangles", a.mesh.full_triangles}};
   j["mesh"] = mesh;
   return j;
 }
@@ -408,6 +409,19 @@ Result<AssetRecord> AssetFromJson(const nlohmann::json& j, const std::string& wh
       m.Integer("triangles", &a.mesh.triangles, &error);
       m.Bool("watertight", &a.mesh.watertight, &error);
       m.Number("manifold_edges", &a.mesh.manifold_edges, &error, false);
+      if (const json* f = m.Find("full")) {
+        Reader full(*f, where, "mesh.full");
+        if (!full.IsObject()) {
+          if (error.empty()) error = m.Fail("full", "expected an object, got " + m.Got(*f));
+        } else {
+          full.String("file", &a.mesh.full_file, &error);
+          full.Integer("triangles", &a.mesh.full_triangles, &error);
+          full.NoUnknownKeys(&error);
+          if (error.empty() && (a.mesh.full_file.empty() || a.mesh.full_triangles < a.mesh.triangles))
+            error = m.Fail("full", "expected the source's mesh file and its triangles (at least the mesh's " +
+                                       std::to_string(a.mesh.triangles) + ")");
+        }
+      }
       m.NoUnknownKeys(&error);
     }
   }

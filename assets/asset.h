@@ -84,6 +84,10 @@ struct AssetMeshInfo {
   int triangles = 0;
   bool watertight = false;
   double manifold_edges = 0.0;  // share of edges used by exactly two triangles, [0, 1]
+  // The model as its source had it, when `file` holds it decimated to its category's triangle budget
+  // (issue 31; "" when `file` is the source's own).
+  std::string full_file;
+  int full_triangles = 0;
 };
 
 struct AssetRecord {

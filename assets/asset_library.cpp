@@ -146,6 +146,8 @@ Status LibraryStaging::Commit(const std::vector<AssetRecord>& records, const std
       if (r.source.kind == replaced_kind || ids.count(r.id)) continue;
       if (!r.mesh.file.empty() && fs::exists(dir_ / r.mesh.file, ec))
         if (Status s = CopyInto(dir_ / r.mesh.file, staging_ / r.mesh.file); !s.ok()) return s;
+      if (!r.mesh.full_file.empty() && fs::exists(dir_ / r.mesh.full_file, ec))
+        if (Status s = CopyInto(dir_ / r.mesh.full_file, staging_ / r.mesh.full_file); !s.ok()) return s;
       all.push_back(r);
     }
     std::set<std::string> owned = {std::string(kLibraryRecordsFile), std::string(kImportReportFile), std::string(kLibraryMeshFolder)};

@@ -160,6 +160,13 @@ const std::vector<CategoryInfo>& Categories() {
   return table;
 }
 
+int CategoryTriangleBudget(std::string_view category) {
+  const CategoryInfo* info = FindCategory(category);
+  if (!info) return 4000;
+  const double largest = std::max({info->size_max.x, info->size_max.y, info->size_max.z});
+  return largest >= 1.5 ? 8000 : largest >= 0.6 ? 4000 : 1500;
+}
+
 const CategoryInfo* FindCategory(std::string_view name) {
   for (const CategoryInfo& c : Categories())
     if (c.name == name) return &c;

@@ -35,6 +35,11 @@ inline constexpr double kRugThickness = 0.002;
 // Every category, in a fixed order (the order of the table in category.cpp).
 const std::vector<CategoryInfo>& Categories();
 // By exact name; nullptr when unknown.
+// Issue 31: the most triangles an imported model of `category` keeps (the importer decimates it to this,
+// keeping the source's mesh beside it; not for a category others stand on or in), by the category's
+// largest size: 8,000 for pieces 1.5 m or more, 4,000 from 0.6 m (chairs, toilets, appliances), 1,500 for
+// small things (a teapot, a toilet-roll holder); 4,000 for a category the vocabulary lacks.
+int CategoryTriangleBudget(std::string_view category);
 const CategoryInfo* FindCategory(std::string_view name);
 // The category a free-text noun names ("couch" -> sofa, "bookshelves" -> bookcase, "TV" -> tv): exact
 // names first, then words, singular or plural, case-insensitive; nullptr when nothing matches.

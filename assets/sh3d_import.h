@@ -30,6 +30,10 @@ struct Sh3dImportOptions {
   // 4,300 triangles, the largest about 200,000.
   int max_triangles = 50000;
   bool decimate = true;
+  // Issue 31: a model over its category's budget (CategoryTriangleBudget) is decimated to it too, and its
+  // source mesh kept beside it (the record's mesh.full), so that a furnished villa stays near 300,000
+  // triangles. Off: only max_triangles applies.
+  bool category_budgets = true;
   // Worker threads for the models of all archives; 0 = the hardware's count. Output does not depend on it.
   int threads = 0;
   // "sweethome3d-furniture <version>" in every record's source; empty: read from dpkg's status when
@@ -47,6 +51,7 @@ struct Sh3dPieceImport {
   std::string reason;             // why it was skipped or failed; for a decimated model, what was done
   std::optional<AssetRecord> record;
   AssetMesh mesh;                 // asset frame; empty unless imported
+  AssetMesh full_mesh;            // the source's mesh when `mesh` is it decimated (record->mesh.full_file); else empty
   int source_triangles = 0;       // triangles in the OBJ (after triangulating its polygons)
   bool decimated = false;
 };

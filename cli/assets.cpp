@@ -55,12 +55,14 @@ struct ImportCommand {
   std::string from;
   std::string library;
   bool skip_over_budget = false;
+  bool no_category_budgets = false;
   Sh3dImportOptions options;
 };
 
 void RunImport(ImportCommand& command) {
   if (std::string problem = command.options.Check(); !problem.empty()) throw UsageError("assets import: " + problem);
   command.options.decimate = !command.skip_over_budget;
+  command.options.category_budgets = !command.no_category_budgets;
   std::filesystem::path from = command.from.empty() ? DefaultSh3dFurnitureDir() : std::filesystem::path(command.from);
   if (!std::filesystem::exists(from)) {
     throw UsageError("assets import: " + from.string() +
@@ -201,6 +203,8 @@ void RunShow(const ShowCommand& command) {
   table.AddRow({"mesh", r->mesh.file + ", " + std::to_string(r->mesh.triangles) + " triangles, " +
                             (r->mesh.watertight ? "watertight" : "not watertight") + ", manifold edges " +
                             FormatPercent(r->mesh.manifold_edges, 1.0)});
+  if (!r->mesh.full_file.empty())
+    table.AddRow({"source mesh", r->mesh.full_file + ", " + std::to_string(r->mesh.full_triangles) + " triangles (the mesh above is it decimated)"});
   if (!r->front_decided_by.empty()) table.AddRow({"front decided by", r->front_decided_by});
   std::cout << table.Render();
   if (!command.render.empty()) {
@@ -393,6 +397,9 @@ Registration registration{70, [](CLI::App& app) {
                   "triangle budget per model (default 50000): larger meshes are decimated")
       ->transform(WholeIn(1, 100000000));
   sub->add_flag("--skip-over-budget", import->skip_over_budget, "skip models over the budget instead of decimating them");
+  sub->add_flag("--no-category-budgets", import->no_category_budgets,
+                "keep every model under --max-triangles as its source has it (default: decimate each to its category's budget, "
+                "8,000 / 4,000 / 1,500 triangles by size, the source mesh kept beside it as the record's mesh.full; not tables, shelves, beds and the like)");
   sub->add_option("-j,--threads", import->options.threads, "worker threads (default: all cores)")->transform(WholeIn(0, 1024));
   sub->callback([import] { RunImport(*import); });
 

@@ -54,9 +54,9 @@ TEST_CASE("villa assets import writes the library under HOME and prints its summ
   Run run = box.Villa("assets import --from " + box.Quoted("from") + " -j 2");
   INFO(run.err);
   REQUIRE(run.code == 0);
-  CHECK(run.out.find("archives: 1, models read: 11, imported: 7, skipped: 4 (2 unreadable), decimated: 0") != std::string::npos);
+  CHECK(run.out.find("archives: 1, models read: 12, imported: 8, skipped: 4 (2 unreadable), decimated: 1") != std::string::npos);
   CHECK(run.out.find("skipped, door or window: 1") != std::string::npos);
-  CHECK(run.out.find("watertight: 5 of 7 (71.4%)") != std::string::npos);
+  CHECK(run.out.find("watertight: 5 of 8 (62.5%)") != std::string::npos);
   const auto library = box.dir() / ".local" / "share" / "villa" / "assets";
   CHECK(std::filesystem::exists(library / "assets.jsonl"));
   CHECK(std::filesystem::exists(library / "import-report.json"));
@@ -64,7 +64,7 @@ TEST_CASE("villa assets import writes the library under HOME and prints its summ
   Run list = box.Villa("assets list --category bookcase");
   REQUIRE(list.code == 0);
   CHECK(list.out.find("sh3d:TestLib#bookcase") != std::string::npos);
-  CHECK(list.out.find("1 of 7 assets") != std::string::npos);
+  CHECK(list.out.find("1 of 8 assets") != std::string::npos);
   Run json = box.Villa("assets list --room-type bathroom --json");
   REQUIRE(json.code == 0);
   // Assets for any room (lights, here) and none made for other rooms only.

@@ -157,5 +157,69 @@ TEST_CASE("Affordance options are checked", "[assets][mesh]") {
   CHECK(import.Check() == "max_triangles must be > 0, got 0");
 }
 
+TEST_CASE("Decimation keeps solid pieces apart and keeps a thin piece it would erase", "[assets][mesh][issue31]") {
+  // A 1 m cube of 60 x 60 quads a face (a table's top) and, 2 cm below it and apart from it, a thin
+  // rod 1 cm across and 1 m long of 400 segments (a tube frame): separate pieces of one material.
+  AssetMeshPart part{{"steel", 0.7, 0.7, 0.7, 1.0}, {}};
+  TriangleMesh& m = part.mesh;
+  const int n = 60;
+  for (int face = 0; face < 6; ++face) {
+    const int axis = face / 2, side = face % 2;
+    const int base = static_cast<int>(m.vertices.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        double c[3];
+        c[axis] = side;
+        c[(axis + 1) % 3] = static_cast<double>(i) / n;
+        c[(axis + 2) % 3] = static_cast<double>(j) / n;
+        m.vertices.push_back({c[0] - 0.5, c[1] - 0.5, c[2] + 0.2});
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = base + j * (n + 1) + i;
+        if (side) {
+          m.AddTriangle(a, a + n + 2, a + n + 1);
+          m.AddTriangle(a, a + 1, a + n + 2);
+        } else {
+          m.AddTriangle(a, a + n + 1, a + n + 2);
+          m.AddTriangle(a, a + n + 2, a + 1);
+        }
+      }
+  }
+  const int rod_first = static_cast<int>(m.vertices.size());
+  const int segments = 400;
+  for (int s = 0; s <= segments; ++s)
+    for (int k = 0; k < 3; ++k) {
+      const double a = 2.0 * M_PI * k / 3.0;
+      m.vertices.push_back({-0.5 + static_cast<double>(s) / segments, 0.005 * std::cos(a), 0.005 * std::sin(a) + 0.1});
+    }
+  for (int s = 0; s < segments; ++s)
+    for (int k = 0; k < 3; ++k) {
+      const int a = rod_first + 3 * s + k, b = rod_first + 3 * s + (k + 1) % 3;
+      m.AddTriangle(a, b, b + 3);
+      m.AddTriangle(a, b + 3, a + 3);
+    }
+  AssetMesh mesh;
+  mesh.parts.push_back(part);
+  const int rod = 6 * segments, cube = 6 * 2 * n * n;
+  REQUIRE(mesh.TriangleCount() == cube + rod);
+  const std::vector<std::vector<std::uint32_t>> pieces = SolidPieceIds(mesh);
+  CHECK(pieces[0][0] != pieces[0][rod_first]);
+  auto simple = DecimateToBudget(mesh, 4000, /*best_effort=*/true);
+  REQUIRE(simple.ok());
+  CHECK(simple->TriangleCount() <= 4000);
+  const Box3 box = simple->Bounds();
+  CHECK(box.min.z == Approx(0.1 - 0.005 * std::sqrt(0.75)).margin(1e-6));  // the rod is still there, at its height
+  int low = 0;  // triangles of the rod (below the cube)
+  for (const auto& t : simple->parts[0].mesh.triangles)
+    low += simple->parts[0].mesh.vertices[t[0]].z < 0.15 && simple->parts[0].mesh.vertices[t[1]].z < 0.15;
+  CHECK(low == rod);
+  // Shared cubes (the paper's filter alone, no pieces) erase the rod.
+  const AssetMesh shared = ClusterVertices(mesh, 0.05);
+  int left = 0;
+  for (const auto& t : shared.parts[0].mesh.triangles) left += shared.parts[0].mesh.vertices[t[0]].z < 0.15;
+  CHECK(left < rod / 10);
+}
+
 }  // namespace
 }  // namespace villa

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "assets/asset_mesh.h"
+#include "assets/category.h"
 #include "assets/asset_library.h"
 #include "assets/java_properties.h"
 #include "assets/sh3d_import.h"
@@ -45,7 +47,7 @@ TEST_CASE("The catalog reads names across continued lines, escapes, Latin-1, the
   Sh3dCatalog catalog = FixtureCatalogRead();
   CHECK(catalog.library_id == "Test#Library");
   CHECK(catalog.license == "CC-BY-3.0");
-  CHECK(catalog.pieces.size() == 10);
+  CHECK(catalog.pieces.size() == 11);
   CHECK(PieceNamed(catalog, "Test#bookcase").name == "Bookcase");
   CHECK(PieceNamed(catalog, "Test#bookcase").tags == std::vector<std::string>{"Shelves", "Bookshelf"});
   CHECK(PieceNamed(catalog, "Test#mug").name == "Caf\xC3\xA9 mug");
@@ -243,6 +245,45 @@ TEST_CASE("The complexity filter decimates a model over the triangle budget, or 
   CHECK(ImportFixturePiece("Test#rug").outcome == Sh3dPieceImport::Outcome::kImported);  // default budget 50,000
 }
 
+TEST_CASE("A model over its category's budget is decimated to it, keeps its box, and keeps its source", "[assets][sh3d][issue31]") {
+  CHECK(CategoryTriangleBudget("bed") == 8000);
+  CHECK(CategoryTriangleBudget("office-chair") == 4000);
+  CHECK(CategoryTriangleBudget("vase") == 1500);
+  CHECK(CategoryTriangleBudget("no-such-thing") == 4000);
+  Sh3dPieceImport vase = ImportFixturePiece("Test#vase");
+  REQUIRE(vase.outcome == Sh3dPieceImport::Outcome::kImported);
+  REQUIRE(vase.record->category == "vase");
+  CHECK(vase.decimated);
+  CHECK(vase.reason.rfind("decimated to the vase budget: 3,200 triangles > 1,500, now ", 0) == 0);
+  CHECK(vase.mesh.TriangleCount() <= 1500);
+  CHECK(vase.mesh.TriangleCount() > 300);
+  CHECK(vase.full_mesh.TriangleCount() == 3200);
+  CHECK(vase.record->mesh.full_triangles == 3200);
+  CHECK(vase.record->mesh.full_file == "meshes/TestLib/vase.full.vmesh");
+  // The clustered mesh stands in the source's box (a cluster's mean vertex pulled the sides in before).
+  const Box3 a = vase.mesh.Bounds(), b = vase.full_mesh.Bounds();
+  CHECK(a.min.x == Approx(b.min.x).margin(1e-9));
+  CHECK(a.max.x == Approx(b.max.x).margin(1e-9));
+  CHECK(a.min.y == Approx(b.min.y).margin(1e-9));
+  CHECK(a.max.z == Approx(b.max.z).margin(1e-9));
+  CHECK(a.min.z == Approx(b.min.z).margin(1e-9));
+  // The record round-trips its source mesh; off, the source is kept as it is.
+  const nlohmann::json json = AssetToJson(*vase.record);
+  CHECK(json["mesh"]["full"]["triangles"] == 3200);
+  const Result<AssetRecord> back = AssetFromJson(json, "vase");
+  REQUIRE(back.ok());
+  CHECK(back->mesh.full_file == vase.record->mesh.full_file);
+  nlohmann::json bad = json;
+  bad["mesh"]["full"]["triangles"] = 10;  // fewer than the decimated mesh: no source of it
+  CHECK_FALSE(AssetFromJson(bad, "vase").ok());
+  Sh3dImportOptions whole;
+  whole.category_budgets = false;
+  Sh3dPieceImport kept = ImportFixturePiece("Test#vase", whole);
+  CHECK_FALSE(kept.decimated);
+  CHECK(kept.record->mesh.triangles == 3200);
+  CHECK(kept.record->mesh.full_file.empty());
+}
+
 TEST_CASE("Importing a folder writes the library, the report, and does it again identically", "[assets][sh3d]") {
   auto dir = FreshDir("import");
   WriteFixtureLibrary(dir / "from", false);  // stored entries this time
@@ -251,8 +292,8 @@ TEST_CASE("Importing a folder writes the library, the report, and does it again 
   auto summary = ImportSh3dLibraries(dir / "from", dir / "lib", options);
   REQUIRE(summary.ok());
   CHECK(summary->archives == 1);
-  CHECK(summary->models_read == 11);
-  CHECK(summary->imported == 7);
+  CHECK(summary->models_read == 12);
+  CHECK(summary->imported == 8);
   CHECK(summary->skipped == 4);
   CHECK(summary->failed == 2);
   CHECK(summary->skip_reasons == std::map<std::string, int>{{"door or window", 1}, {"staircase", 1},
@@ -262,7 +303,7 @@ TEST_CASE("Importing a folder writes the library, the report, and does it again 
 
   auto library = AssetLibrary::Open(dir / "lib");
   REQUIRE(library.ok());
-  REQUIRE(library->records().size() == 7);
+  REQUIRE(library->records().size() == 8);
   CHECK(library->records()[0].id == "sh3d:TestLib#chest");  // catalog order
   for (const AssetRecord& r : library->records()) {
     INFO(r.id);
@@ -270,11 +311,20 @@ TEST_CASE("Importing a folder writes the library, the report, and does it again 
     auto mesh = library->Mesh(r.id);
     REQUIRE(mesh.ok());
     CHECK((*mesh)->TriangleCount() == r.mesh.triangles);
+    // The vase was decimated to its category's budget; its source mesh is kept beside it.
+    CHECK(r.mesh.full_file.empty() == (r.id != "sh3d:TestLib#vase"));
+    if (!r.mesh.full_file.empty()) {
+      auto full = ReadAssetMesh(dir / "lib" / r.mesh.full_file);
+      REQUIRE(full.ok());
+      CHECK(full->TriangleCount() == r.mesh.full_triangles);
+      CHECK(r.mesh.full_triangles == 3200);
+      CHECK(r.mesh.triangles <= CategoryTriangleBudget(r.category));
+    }
   }
   auto report = nlohmann::json::parse(*ReadFile(dir / "lib" / "import-report.json"));
   CHECK(report["format"] == "villa-import-report/1");
-  CHECK(report["summary"]["imported"] == 7);
-  CHECK(report["models"].size() == 11);
+  CHECK(report["summary"]["imported"] == 8);
+  CHECK(report["models"].size() == 12);
   bool broken_named = false;
   for (const auto& m : report["models"])
     if (m.value("entry", "") == "testlib/broken/broken.obj")

@@ -188,7 +188,10 @@ inline std::string FixtureCatalog() {
          "id#10=Test#noWidth\nname#10=Table\ncategory#10=Living room\nmodel#10=/testlib/cube/cube.obj\n"
          "depth#10=80\nheight#10=75\n"
          "id#11=Test#rotated\nname#11=Side table\ncategory#11=Living room\nmodel#11=/testlib/zup/zup.obj\n"
-         "width#11=40\ndepth#11=60\nheight#11=50\nmodelRotation#11=1 0 0 0 0 1 0 -1 0\ncreator#11=Jane Doe\n";
+         "width#11=40\ndepth#11=60\nheight#11=50\nmodelRotation#11=1 0 0 0 0 1 0 -1 0\ncreator#11=Jane Doe\n"
+         // A small thing of many triangles: over its category's budget (issue 31).
+         "id#12=Test#vase\nname#12=Vase\ncategory#12=Living room\nmodel#12=/testlib/rug/rug.obj\n"
+         "width#12=30\ndepth#12=30\nheight#12=1\ncreator#12=Jane Doe\n";
 }
 
 inline ZipEntries FixtureEntries() {
