@@ -259,8 +259,8 @@ Sh3dPieceImport ImportSh3dPiece(const ZipArchive& archive, const std::string& ar
   // piece others stand on or in (a table, a shelf, a bed, a counter): clustered, its tops and shelves moved
   // and what stood on them moved in the physics check (the rooms bench's pieces taken out for moving went
   // from 280 to 527, and the mean NO from 24.7 to 24.1, with every category decimated).
-  const CategoryInfo* kind = FindCategory(mapping.category);
-  const bool holds_things = kind && (kind->has_surface || kind->has_cavity);
+  const CategoryInfo* info = FindCategory(mapping.category);
+  const bool holds_things = info && (info->has_surface || info->has_cavity);
   if (const int budget = CategoryTriangleBudget(mapping.category);
       options.category_budgets && options.decimate && !holds_things && mesh.TriangleCount() > budget) {
     if (Result<AssetMesh> simpler = DecimateToBudget(mesh, budget, /*best_effort=*/true); simpler.ok() && simpler->TriangleCount() < mesh.TriangleCount()) {
@@ -273,7 +273,6 @@ Sh3dPieceImport ImportSh3dPiece(const ZipArchive& archive, const std::string& ar
     }
   }
 
-  const CategoryInfo* info = FindCategory(mapping.category);
   AssetRecord r;
   std::string key = piece.id.substr(piece.id.find('#') + 1);
   if (piece.id.find('#') == std::string::npos || key.empty()) key = "piece" + std::to_string(piece.index);

@@ -302,8 +302,7 @@ int RoomsTooSmallToSeat(const Layout& layout, Category room, int seats) {
     if (r.category != room || r.polygon.empty()) continue;
     const Box2 b = BoundingBox(r.polygon);
     const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
-    const bool fits = (std::min(w, h) >= need_across && std::max(w, h) >= need_along) ||
-                      (w >= need_across && h >= need_along) || (h >= need_across && w >= need_along);
+    const bool fits = (w >= need_across && h >= need_along) || (h >= need_across && w >= need_along);
     short_of += !fits;
   }
   return short_of;
