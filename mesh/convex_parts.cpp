@@ -207,33 +207,85 @@ TriangleMesh WeldedByPosition(const TriangleMesh& mesh) {
   return out;
 }
 
-// Closed as its indices say (every edge once each way): CheckSolid's weld by position is a map lookup per
-// vertex, and this runs on every piece of every body of every settle. A piece closed only by position
-// (corners repeated) counts as open here and is welded with the open ones, which comes to the same.
 namespace {
-bool ClosedByIndex(const TriangleMesh& piece) {
-  std::unordered_map<uint64_t, int> directed;
-  directed.reserve(piece.triangles.size() * 3);
-  auto edge = [](int a, int b) { return static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32 | static_cast<uint32_t>(b); };
-  for (const auto& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (++directed[edge(t[k], t[(k + 1) % 3])] > 1) return false;
-  for (const auto& [e, count] : directed)
-    if (directed.find(edge(static_cast<int>(e & 0xffffffffu), static_cast<int>(e >> 32))) == directed.end()) return false;
-  return !piece.triangles.empty();
+int Root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
 }
 }  // namespace
 
 std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh) {
-  std::vector<TriangleMesh> out, open;
-  for (TriangleMesh& piece : SplitPieces(mesh)) (ClosedByIndex(piece) ? out : open).push_back(std::move(piece));
-  if (open.size() < 2) {
-    for (TriangleMesh& piece : open) out.push_back(std::move(piece));
-    return out;
+  // Welded first: a file with vertex normals repeats a corner for each face that meets there at a crease,
+  // so that by index a box is six loose faces, and a shading weld may join two solids at a shared corner.
+  const TriangleMesh welded = WeldedByPosition(mesh);
+  const size_t n = welded.triangles.size();
+  auto edge = [](int a, int b) { return static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32 | static_cast<uint32_t>(b); };
+  // Each directed edge's triangle, or -2 where more than one triangle runs along it that way.
+  std::unordered_map<uint64_t, int> along;
+  along.reserve(3 * n);
+  for (size_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      auto [it, added] = along.emplace(edge(welded.triangles[t][k], welded.triangles[t][(k + 1) % 3]), static_cast<int>(t));
+      if (!added) it->second = -2;
+    }
+  // Triangles joined across an edge that exactly one triangle runs each way (two solids touching along an
+  // edge run it twice each way, and stay apart).
+  std::vector<int> parent(n);
+  for (size_t t = 0; t < n; ++t) parent[t] = static_cast<int>(t);
+  std::vector<std::array<int, 3>> loose;  // (triangle, a, b) of an edge without a single twin
+  for (size_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = welded.triangles[t][k], b = welded.triangles[t][(k + 1) % 3];
+      const auto it = along.find(edge(a, b)), back = along.find(edge(b, a));
+      if (it->second < 0 || back == along.end() || back->second < 0)
+        loose.push_back({static_cast<int>(t), a, b});
+      else
+        parent[Root(parent, static_cast<int>(t))] = Root(parent, back->second);
+    }
+  // A piece is closed when each edge of it is run once each way by its own triangles (an edge that two
+  // stacked boxes share is run once each way in each box); the others are joined with what they meet at
+  // the same positions (an imported tray's open shell and its glass sheet are one solid).
+  std::map<std::array<int, 3>, int> runs;  // (piece, a, b) -> triangles of the piece running a to b
+  for (const auto& [t, a, b] : loose) ++runs[{Root(parent, t), a, b}];
+  std::vector<bool> open_piece(n, false);
+  for (const auto& [e, count] : runs) {
+    const auto back = runs.find({e[0], e[2], e[1]});
+    if (count != 1 || back == runs.end() || back->second != 1) open_piece[e[0]] = true;
   }
-  TriangleMesh joined;
-  for (const TriangleMesh& piece : open) joined.Append(piece);
-  for (TriangleMesh& piece : SplitPieces(WeldedByPosition(joined))) out.push_back(std::move(piece));
+  // Triangles by piece (closed pieces in the order they first appear, then the open ones together).
+  std::vector<int> piece_of(n, -1), order(n);
+  int pieces = 0;
+  for (size_t t = 0; t < n; ++t) {
+    const int r = Root(parent, static_cast<int>(t));
+    if (open_piece[r]) continue;
+    if (piece_of[r] < 0) piece_of[r] = pieces++;
+  }
+  std::vector<int> key(n);
+  for (size_t t = 0; t < n; ++t) {
+    const int r = Root(parent, static_cast<int>(t));
+    key[t] = open_piece[r] ? pieces : piece_of[r];
+    order[t] = static_cast<int>(t);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return key[x] < key[y]; });
+  std::vector<TriangleMesh> out(pieces);
+  TriangleMesh open;
+  std::vector<int> index(welded.vertices.size(), -1), stamp(welded.vertices.size(), -1);
+  for (int t : order) {
+    const int p = key[t];
+    TriangleMesh& target = p < pieces ? out[p] : open;
+    std::array<int, 3> v;
+    for (int k = 0; k < 3; ++k) {
+      const int w = welded.triangles[t][k];
+      if (stamp[w] != p) {  // a corner two stacked boxes share is a vertex of each
+        stamp[w] = p;
+        index[w] = static_cast<int>(target.vertices.size());
+        target.vertices.push_back(welded.vertices[w]);
+      }
+      v[k] = index[w];
+    }
+    target.triangles.push_back(v);
+  }
+  for (TriangleMesh& piece : SplitPieces(open)) out.push_back(std::move(piece));
   return out;
 }
 

@@ -29,8 +29,10 @@ std::optional<std::vector<TriangleMesh>> ConvexPrismParts(const TriangleMesh& pi
 // The slack for imported models: 3 degrees, 2 mm, 2 % of the volume.
 inline constexpr PrismTolerance kModelTolerance{0.05, 0.002, 0.02};
 
-// A body's mesh as solids: its connected pieces (shared vertex indices), with the pieces that are not
-// closed joined with the others they meet at the same positions (to 0.1 um): an imported model's tray top
+// A body's mesh as solids. Vertices at one position (to 0.1 um) are one, whatever their indices (a file
+// with vertex normals repeats a box's corner for each face); triangles are of one piece across an edge that
+// one triangle runs each way, so that two boxes stacked or touching at an edge stay two solids. Pieces that
+// are not closed are joined with the others they meet at the same positions: an imported model's tray top
 // is an open shell over a separate glass sheet, and one solid together.
 std::vector<TriangleMesh> SolidPiecesOf(const TriangleMesh& mesh);
 // `mesh` with the vertices at one position (to 0.1 um) made one, and triangles that collapse dropped.

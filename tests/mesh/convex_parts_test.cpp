@@ -1,8 +1,11 @@
 // mesh/convex_parts.h: a building's solids cut into convex prisms, whose union is the solid (volume) and
 // which leave its openings open (a doorway's centre in no part).
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include "mesh/convex_parts.h"
+#include "mesh/mesh.h"
 #include "mesh/solids.h"
 
 using namespace villa;
@@ -123,6 +126,32 @@ TEST_CASE("An imported tray (an open shell over a separate glass sheet, its rim 
   CHECK(PartsHolding(*parts, {0.0, 0.0, 0.02}) == 1);    // under it
   CHECK(PartsHolding(*parts, {0.0, -0.185, 0.048}) == 1);  // in the rim
   CHECK(Volume(*parts) == Approx(solids[0].SignedVolume()).epsilon(0.02));
+}
+
+TEST_CASE("Solids as a file with vertex normals writes them: each box is one closed solid, stacked boxes stay two") {
+  // A bookcase's side and a shelf on it (touching along a face and at its edges) and a book apart.
+  TriangleMesh boxes = ExtrudePlan({{0, 0}, {0.02, 0}, {0.02, 0.3}, {0, 0.3}}, {}, 0.0, 1.0);
+  boxes.Append(ExtrudePlan({{0.02, 0}, {0.8, 0}, {0.8, 0.3}, {0.02, 0.3}}, {}, 0.0, 0.02));
+  boxes.Append(ExtrudePlan({{0.1, 0.05}, {0.13, 0.05}, {0.13, 0.25}, {0.1, 0.25}}, {}, 0.02, 0.25));
+  // As the .glb holds them: corners repeated for each face at a crease, one weld over the whole primitive.
+  const ShadedMesh shaded = ShadeSmooth(boxes, 40.0);
+  TriangleMesh file;
+  file.vertices = shaded.vertices;
+  file.triangles = shaded.triangles;
+  REQUIRE(SplitPieces(file).size() > 3);  // by index, loose faces
+  const std::vector<TriangleMesh> solids = SolidPiecesOf(file);
+  REQUIRE(solids.size() == 3);
+  std::vector<double> volumes;
+  for (const TriangleMesh& solid : solids) {
+    CHECK(CheckSolid(solid).closed);
+    volumes.push_back(solid.SignedVolume());
+  }
+  std::sort(volumes.begin(), volumes.end());
+  CHECK(volumes[0] == Approx(0.03 * 0.2 * 0.23));
+  CHECK(volumes[1] == Approx(0.78 * 0.3 * 0.02));
+  CHECK(volumes[2] == Approx(0.02 * 0.3 * 1.0));
+  // The same boxes as written (closed by index) give the same three.
+  CHECK(SolidPiecesOf(boxes).size() == 3);
 }
 
 TEST_CASE("A solid with slanted faces is no stack of prisms") {
