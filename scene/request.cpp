@@ -5,6 +5,8 @@
 #include <cctype>
 #include <optional>
 
+#include "util/spelling.h"
+
 namespace villa::scene {
 namespace {
 
@@ -64,6 +66,9 @@ constexpr RoomWord kRoomWords[] = {
     {"powder room", Category::kBathroom},       {"cloakroom", Category::kBathroom},
     {"en suite", Category::kBathroom},          {"ensuite", Category::kBathroom},
     {"half bath", Category::kBathroom},         {"full bath", Category::kBathroom},
+    {"master bath", Category::kBathroom},       {"guest bath", Category::kBathroom},
+    {"family bath", Category::kBathroom},       {"main bath", Category::kBathroom},
+    {"wet room", Category::kBathroom},          {"wetroom", Category::kBathroom},
     {"den", Category::kLivingRoom},             {"great room", Category::kLivingRoom},
     {"study room", Category::kOffice},
     {"living room", Category::kLivingRoom},     {"lounge", Category::kLivingRoom},
@@ -116,6 +121,52 @@ std::optional<Category> RoomOf(const std::string& phrase) {
   return std::nullopt;
 }
 
+// A misspelt piece or room ("dishwaser", "wardorbe", "bookcaes", "dinning table"): a word of seven
+// letters or more that names nothing, one edit from exactly one word (six letters or more) of the names
+// of the categories and rooms (or its plural), read as that word. Verb forms are left alone ("dressed" is
+// no dresser).
+std::vector<Token> Misspellings(std::vector<Token> tokens) {
+  // The words of the categories' names and of the rooms' ("dinning table", "dinning room").
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    auto add = [&](std::string_view phrase) {
+      size_t begin = 0;
+      while (begin < phrase.size()) {
+        size_t end = phrase.find_first_of(" -", begin);
+        if (end == std::string_view::npos) end = phrase.size();
+        const std::string word(phrase.substr(begin, end - begin));
+        if (word.size() >= 6 && std::find(out.begin(), out.end(), word) == out.end()) out.push_back(word);
+        begin = end + 1;
+      }
+    };
+    for (const CategoryInfo& c : Categories()) {
+      add(c.name);
+      for (std::string_view w : c.words) add(w);
+    }
+    for (const RoomWord& r : kRoomWords) add(r.words);
+    return out;
+  }();
+  auto ends = [](const std::string& w, std::string_view tail) {
+    return w.size() > tail.size() && w.compare(w.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  for (Token& t : tokens) {
+    if (t.word.size() < 7 || ends(t.word, "ed") || ends(t.word, "ing") || CategoryForWord(t.word) || RoomOf(t.word)) continue;
+    std::string match;
+    int near = 0;
+    bool plural = false;
+    for (const std::string& name : names) {
+      const bool one = OneEditApart(t.word, name), many = OneEditApart(t.word, name + "s");
+      if ((one || many) && name != match) {
+        match = name;
+        plural = many && (!one || t.word.back() == 's');  // "bookcaes": one edit from both, the plural meant
+        ++near;
+      }
+    }
+    if (near == 1) t.word = plural ? match + "s" : match;
+  }
+  return tokens;
+}
+
 struct Mention {
   bool room = false;
   size_t begin = 0, end = 0;  // token range
@@ -124,6 +175,7 @@ struct Mention {
 };
 
 std::optional<int> NumberWord(const std::string& w);
+bool IsOneOf(const std::string& w, std::initializer_list<std::string_view> words);
 
 // Fixtures that belong to one kind of room: a bed to a bedroom, a toilet to a bathroom, a cooker to a kitchen.
 bool FitsRoom(std::string_view category, Category room) {
@@ -152,6 +204,10 @@ std::optional<Category> RoomCount(const std::vector<Token>& tokens, size_t i, co
   const std::optional<int> n = NumberWord(before);
   const bool digits = !before.empty() && std::isdigit(static_cast<unsigned char>(before[0]));
   if (!n || (*n < 2 && !digits && !after_room)) return std::nullopt;
+  // "Both children's rooms get 1 bed and 1 desk each", "a room with 2 beds": furniture.
+  if (i >= 2 && tokens[i - 2].sentence == tokens[i].sentence &&
+      IsOneOf(tokens[i - 2].word, {"get", "gets", "has", "have", "with", "needs", "need", "wants", "want", "each", "per"}))
+    return std::nullopt;
   return phrase == "bed" ? Category::kBedroom : Category::kBathroom;
 }
 
@@ -166,7 +222,10 @@ std::vector<Mention> FindMentions(const std::vector<Token>& tokens) {
       std::string phrase = Join(tokens, i, i + n);
       const bool after_room = !out.empty() && out.back().room && out.back().end + 2 >= i &&
                               tokens[out.back().begin].sentence == tokens[i].sentence;
-      if (auto room = RoomOf(phrase); room || (n == 1 && (room = RoomCount(tokens, i, phrase, after_room)))) {
+      // ("Both children's rooms: 1 bed and 1 desk each": right after a room named in words, a piece.)
+      const bool note = !out.empty() && out.back().room && out.back().end == i - 1 &&
+                        !IsOneOf(tokens[out.back().begin].word, {"bed", "bath", "beds", "baths"});
+      if (auto room = RoomOf(phrase); room || (n == 1 && !note && (room = RoomCount(tokens, i, phrase, after_room)))) {
         out.push_back({true, i, i + n, nullptr, *room});
         found = true;
       } else if (n > 1 || std::find(kAmbiguous.begin(), kAmbiguous.end(), phrase) == kAmbiguous.end()) {
@@ -374,10 +433,14 @@ std::vector<Token> BareCorrections(std::vector<Token> tokens) {
     if (IsOneOf(tokens[i].word, {"make", "change"}) && IsOneOf(tokens[i + 1].word, {"that", "it"})) n = i + 2 + (i + 2 < tokens.size() && tokens[i + 2].word == "to");
     else if (IsOneOf(tokens[i].word, {"sorry", "no", "wait", "oops"}) && (i == 0 || tokens[i - 1].sentence != tokens[i].sentence || !NumberWord(tokens[i - 1].word)))
       n = i + 1;
+    // "for six - no wait, for eight"
+    while (n > 0 && n + 1 < tokens.size() && IsOneOf(tokens[n].word, {"wait", "sorry", "actually", "for"})) ++n;
     if (n == 0 || n >= tokens.size() || tokens[n].sentence != tokens[i].sentence || !NumberWord(tokens[n].word) || *NumberWord(tokens[n].word) <= 0)
       continue;
-    // A bare count: nothing named after it in its sentence.
-    if (n + 1 < tokens.size() && tokens[n + 1].sentence == tokens[n].sentence && !IsOneOf(tokens[n + 1].word, {"please", "thanks", "actually", "then"}))
+    // A bare count: no piece or room named right after it ("make that two, by the fire" is bare).
+    if (n + 1 < tokens.size() && tokens[n + 1].sentence == tokens[n].sentence &&
+        (CategoryForWord(tokens[n + 1].word) || RoomOf(tokens[n + 1].word) ||
+         (n + 2 < tokens.size() && (CategoryForWord(Join(tokens, n + 1, n + 3)) || RoomOf(Join(tokens, n + 1, n + 3))))))
       continue;
     for (size_t j = i; j-- > 0;) {
       if (j + 12 < i) break;  // ("..." ends three sentences: the distance is counted in words)
@@ -391,9 +454,27 @@ std::vector<Token> BareCorrections(std::vector<Token> tokens) {
   return tokens;
 }
 
+// "I wanted a TV in the living room, but actually put it in the office": the piece named last before the
+// pronoun, moved.
+std::vector<Token> PiecePronouns(std::vector<Token> tokens) {
+  for (size_t i = 1; i + 1 < tokens.size(); ++i) {
+    if (!IsOneOf(tokens[i].word, {"it", "them"}) || !IsOneOf(tokens[i - 1].word, {"put", "move", "place", "stick", "putting", "moving"}) ||
+        !IsOneOf(tokens[i + 1].word, {"in", "into", "to"}))
+      continue;
+    for (size_t j = i - 1; j-- > 0 && tokens[j].sentence == tokens[i].sentence;) {
+      if (RoomOf(tokens[j].word) || std::find(kAmbiguous.begin(), kAmbiguous.end(), tokens[j].word) != kAmbiguous.end()) continue;
+      if (CategoryForWord(tokens[j].word)) {
+        tokens[i].word = tokens[j].word;
+        break;
+      }
+    }
+  }
+  return tokens;
+}
+
 RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) {
   RoomRequest out;
-  std::vector<Token> tokens = BareCorrections(Tokenise(text));
+  std::vector<Token> tokens = PiecePronouns(BareCorrections(Misspellings(Tokenise(text))));
   std::vector<Mention> mentions = FindMentions(tokens);
   const bool names_rooms = std::any_of(mentions.begin(), mentions.end(), [](const Mention& m) { return m.room; });
   // A room mention that names one room of several: "one of the bedrooms", "a bedroom", "one bedroom",
@@ -434,19 +515,38 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     const bool room_before = std::any_of(mentions.begin(), mentions.begin() + static_cast<std::ptrdiff_t>(k), [&](const Mention& x) {
       return x.room && tokens[x.begin].sentence == tokens[m.begin].sentence;
     });
+    // Nor into a clause whose piece has a verb of its own before the room: "a dining table for six with
+    // matching chairs, and my daughter's upright piano has to fit in the lounge" (the table is not the
+    // lounge's).
     bool clause = false;  // "and" / "plus" / "put" since the object, then another piece
+    bool own_verb = false;
     for (size_t j = k + 1; j < mentions.size(); ++j) {
       if (tokens[mentions[j].begin].sentence != tokens[m.begin].sentence) break;
       if (!mentions[j].room) {
         for (size_t t = mentions[j - 1].end; t < mentions[j].begin && !clause; ++t)
           clause = IsOneOf(tokens[t].word, {"and", "plus", "also", "put", "add"});
         if (clause && room_before) break;
+        if (clause)
+          for (size_t t = mentions[j].end; t < tokens.size() && t < mentions[j].end + 4 && tokens[t].sentence == tokens[m.begin].sentence; ++t)
+            own_verb = own_verb || IsOneOf(tokens[t].word, {"has", "have", "goes", "go", "fit", "fits", "should", "must", "needs",
+                                                            "need", "is", "are", "stands", "belongs", "will"});
         continue;
       }
+      if (own_verb) break;
       size_t p = mentions[j].begin;
-      while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their", "your", "one", "either",
+      while (p > m.end && IsOneOf(tokens[p - 1].word, {"the", "a", "an", "my", "our", "their", "your", "his", "her", "one", "either",
                                                         "another", "each", "every", "both", "all", "any", "other"}))
         --p;
+      // "an armchair by the lounge window": by a part of the room is in it.
+      const size_t after = mentions[j].end;
+      const bool part_after = after < tokens.size() && tokens[after].sentence == tokens[m.begin].sentence &&
+                              IsOneOf(tokens[after].word, {"window", "windows", "wall", "door", "fireplace", "fire", "corner"});
+      if (part_after && p > m.end && IsOneOf(tokens[p - 1].word, {"by", "near", "beside", "at", "against"})) {
+        bound[k] = mentions[j].room_category;
+        bound_one[k] = names_one(mentions[j]);
+        named[k] = true;
+        break;
+      }
       // "in one of the bedrooms": the determiners before the room, then "one of".
       // ("in 1 of the bthrms", "in each of the 2 bathrooms" too.)
       if (p > m.end + 1 && NumberWord(tokens[p - 1].word) && IsOneOf(tokens[p - 2].word, {"the", "our", "my"})) p -= 2;
@@ -468,6 +568,8 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
         }
       }
     }
+    // An armchair after "... and a wet room." is not the bathroom's by nearness, nor any room's.
+    if (!bound[k] && carried && OutOfPlace(m.category->name, *carried)) continue;
     if (!bound[k]) {
       bound[k] = carried;
       bound_one[k] = carried_one;

@@ -15,6 +15,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "util/spelling.h"
+
 namespace villa {
 namespace {
 
@@ -341,6 +343,7 @@ const std::unordered_set<std::string>& FillerWords() {
       "particularly", "mainly", "mostly", "primarily", "primary", "important", "essential", "key",
       "nearby", "close", "near", "adjacent", "beside", "next", "side", "end", "corner", "part",
       "portion", "half", "wing", "toward", "towards", "facing", "face", "faces", "level",
+      "hmm", "um", "uh", "plenty", "holiday", "vacation", "weekend", "eat",
   };
   return words;
 }
@@ -467,18 +470,33 @@ const std::vector<RoomWord>& RoomLexicon() {
 
 // Edit distance of at most one between a and b, a transposition counting as one ("bedroms", "bathrom",
 // "balcny", "bedorom").
-bool OneEditApart(const std::string& a, const std::string& b) {
-  if (a == b) return false;
-  const std::size_t n = a.size(), m = b.size();
-  if (n + 1 < m || m + 1 < n) return false;
-  std::size_t i = 0;
-  while (i < n && i < m && a[i] == b[i]) ++i;
-  if (n == m) {
-    if (a.compare(i + 1, std::string::npos, b, i + 1, std::string::npos) == 0) return true;  // substituted
-    return i + 1 < n && a[i] == b[i + 1] && a[i + 1] == b[i] && a.compare(i + 2, std::string::npos, b, i + 2, std::string::npos) == 0;
+
+// "two rooms for the kids", "a room for the grandchildren when they come": children's rooms, written
+// as "two kids rooms" for the parser to count.
+std::vector<Token> RoomsForChildren(const std::vector<Token>& tokens) {
+  std::vector<Token> out;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    std::size_t j = i + 1;
+    if (!t.punct && In(t, {"room", "rooms"}) && j < tokens.size() && tokens[j].word == "for") {
+      ++j;
+      while (j < tokens.size() && !tokens[j].punct && (In(tokens[j], {"the", "our", "my", "his", "her", "their", "both", "all"}) || Cardinal(tokens[j])))
+        ++j;
+      if (j < tokens.size() && IsChildWord(tokens[j], false) && tokens[j].sentence == t.sentence) {
+        Token kids = tokens[j], rooms = t;
+        kids.begin = rooms.begin = t.begin;
+        kids.end = rooms.end = tokens[j].end;
+        kids.word = "kids";
+        kids.stem = "kid";
+        out.push_back(kids);
+        out.push_back(rooms);
+        i = j;
+        continue;
+      }
+    }
+    out.push_back(t);
   }
-  return n < m ? a.compare(i, std::string::npos, b, i + 1, std::string::npos) == 0   // a letter left out
-               : a.compare(i + 1, std::string::npos, b, i, std::string::npos) == 0;  // one too many
+  return out;
 }
 
 // "our three kids each want their own room", "the two boys each get their own bedroom": that many
@@ -652,6 +670,8 @@ std::vector<Token> FloorsInBrackets(const std::vector<Token>& tokens) {
   return out;
 }
 
+const std::vector<std::vector<std::string>>& FurnitureLexicon();
+
 // The tokens as the parser reads them: a count repeated in digits ("three (3) bedrooms") once; "half a
 // dozen" six, "a dozen" twelve; a misspelt room word of six letters or more one edit from exactly one
 // of the lexicon's one-word room names ("bedroms", "bathrom", "balcny") read as it.
@@ -661,7 +681,7 @@ const std::unordered_map<std::string, std::vector<std::string>>& Shorthand() {
   static const std::unordered_map<std::string, std::vector<std::string>> words = {
       {"rm", {"room"}}, {"rms", {"rooms"}}, {"tbl", {"table"}}, {"grnd", {"ground"}}, {"gnd", {"ground"}},
       {"sep", {"separate"}}, {"balc", {"balcony"}}, {"balcs", {"balconies"}}, {"bd", {"bedroom"}}, {"bds", {"bedrooms"}},
-      {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
+      {"bdrm", {"bedroom"}}, {"hse", {"house"}}, {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
       {"din", {"dining"}}, {"fam", {"family"}}, {"liv", {"living"}}, {"lvg", {"living"}}, {"conf", {"conference"}},
       {"mstr", {"master"}}, {"gf", {"ground", "floor"}}, {"ff", {"first", "floor"}}, {"sf", {"second", "floor"}}, {"1f", {"1st", "floor"}}, {"2f", {"2nd", "floor"}},
       {"3f", {"3rd", "floor"}}, {"incl", {"including"}}, {"inc", {"including"}}, {"mtg", {"meeting"}}, {"pls", {"please"}},
@@ -702,6 +722,26 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
       i += 2;
       continue;
     }
+    // "w/ ensuite" (notes): with.
+    if (t.word == "w" && i + 1 < tokens.size() && tokens[i + 1].punct == '/' && tokens[i + 1].begin == t.end) {
+      Token with = t;
+      with.word = with.stem = "with";
+      with.end = tokens[i + 1].end;
+      out.push_back(with);
+      ++i;
+      continue;
+    }
+    // "2nd lvg rm": a second living room (an ordinal before a room, not a floor's).
+    if ((t.word == "2nd" || t.word == "3rd") && i + 1 < tokens.size() && !tokens[i + 1].punct && !IsFloorNoun(tokens[i + 1]) &&
+        std::any_of(RoomLexicon().begin(), RoomLexicon().end(), [&](const RoomWord& r) {
+          return r.words[0] == tokens[i + 1].word || (Shorthand().count(tokens[i + 1].word) && Shorthand().at(tokens[i + 1].word)[0] == r.words[0]);
+        })) {
+      Token word = t;
+      word.word = word.stem = t.word == "2nd" ? "second" : "third";
+      word.ordinal = 0;
+      out.push_back(word);
+      continue;
+    }
     // "2x kids rm" (notes): two.
     if (!t.punct && t.word.size() >= 2 && t.word.back() == 'x' && t.word.size() <= 3 &&
         std::all_of(t.word.begin(), t.word.end() - 1, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
@@ -732,6 +772,7 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     out.push_back(t);
   }
   out = OwnRooms(out);
+  out = RoomsForChildren(out);
   out = FloorsInBrackets(out);
   static const std::vector<std::pair<std::string, Category>> names = [] {
     std::vector<std::pair<std::string, Category>> words;
@@ -744,6 +785,11 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     for (const auto& [w, c] : names) words.insert(w);
     return words;
   }();
+  auto known_furniture = [](const Token& t) {
+    for (const auto& words : FurnitureLexicon())
+      if (words.size() == 1 && (words[0] == t.word || words[0] == t.stem)) return true;
+    return false;
+  };
   for (Token& t : out) {
     // (Words of their own are no misspellings: "double" beside the plural "doubles", "single".)
     if (t.punct || t.number || t.word.size() < 5 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
@@ -770,6 +816,25 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
       const bool plural = !OneEditApart(t.word, match) && !OneEditApart(t.stem, match);
       t.stem = match;
       t.word = plural ? match + "s" : match;
+      continue;
+    }
+    // A piece of furniture's name ("dishwaser", "wardorbe", "bookcaes"), when one name is that near.
+    // (Seven letters or more, and no verb forms: "dressed" is no dresser.)
+    auto ends = [&](std::string_view tail) { return t.word.size() > tail.size() && t.word.compare(t.word.size() - tail.size(), tail.size(), tail) == 0; };
+    if (category || t.word.size() < 7 || ends("ed") || ends("ing")) continue;
+    std::string piece;
+    int near = 0;
+    for (const auto& words : FurnitureLexicon())
+      if (words.size() == 1 && words[0].size() >= 7 && !known_furniture(t))
+        for (const std::string& form : {t.word, t.stem})
+          if ((OneEditApart(form, words[0]) || OneEditApart(form, words[0] + "s")) && piece != words[0]) {
+            piece = words[0];
+            ++near;
+          }
+    if (near == 1) {
+      const bool plural = !OneEditApart(t.word, piece) && !OneEditApart(t.stem, piece);
+      t.stem = piece;
+      t.word = plural ? piece + "s" : piece;
     }
   }
   return out;
@@ -796,7 +861,7 @@ const std::vector<std::vector<std::string>>& FurnitureLexicon() {
                    "painting", "curtain", "vanity", "chest of drawer", "drawer", "office chair",
                    "gaming console", "console", "filing cabinet", "recliner", "sectional", "loveseat",
                    "love seat", "futon", "hammock", "bunk", "changing table", "tv stand", "tv cabinet",
-                   "counter", "worktop", "microwave", "exercise bike", "pool table", "sound system"}) {
+                   "counter", "worktop", "microwave", "exercise bike", "pool table", "sound system", "shower"}) {
       out.push_back(Split(p));
     }
     return out;
@@ -959,6 +1024,7 @@ class Parser {
   void UsedAs();
   void Corrections();
   void FloorsOfTotals();
+  void RoomTotals();
   bool ElidedFloor(std::size_t i) const;
   std::vector<int> RefLevels(int ref_item) const;
   void Connect();
@@ -1389,6 +1455,10 @@ bool Parser::IsBedroomCount(std::size_t i) const {
   if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "into", "inside", "for", "per"})) return false;
   // "Both kids' rooms with one bed and 1 desk each": furniture of the rooms named.
   if (i >= 2 && In(tokens_[i - 2], {"with", "has", "have", "gets", "get", "needs", "need", "wants"})) return false;
+  // "per bedroom: 1 bed", "guest room - 2 beds": a room's furnishing note.
+  if (i >= 3 && (tokens_[i - 2].punct == ':' || tokens_[i - 2].punct == '-') && !tokens_[i - 3].punct &&
+      In(tokens_[i - 3], {"bedroom", "bedrooms", "room", "rooms", "nursery", "suite"}))
+    return false;
   return true;
 }
 
@@ -1414,6 +1484,9 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   const Token& t = tokens_[i];
   if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
       !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
+    return 0;
+  // "nobody is living out of a suitcase": the verb, not a room.
+  if (best == 1 && t.word == "living" && i > 0 && In(tokens_[i - 1], {"is", "are", "am", "be", "been", "was", "were", "not", "start", "keep", "stop"}))
     return 0;
   // "Upstairs for living: ...", "the first floor is for living": what a floor is for, not a room.
   if (best == 1 && t.word == "living" && i > 0 && tokens_[i - 1].word == "for" &&
@@ -1566,6 +1639,12 @@ int Parser::TryPanoramic(std::size_t i, Item& item) {
 int Parser::TryFurniture(std::size_t i, Item& item) {
   int best = ObjectWordsAt(i);
   if (best == 0) return 0;
+  // "a kitchen, a shower": a shower is a room (a bathroom) unless the room reading takes it for a fixture
+  // ("the downstairs bathroom gets a shower").
+  if (best == 1 && tokens_[i].word == "shower") {
+    Item room = MakeItem(ItemKind::kRoom);
+    if (TryRoom(i, room) > 0) return 0;
+  }
   // "flat-screen TV": the first noun is a modifier of the next one.
   if (FurnitureStartsWithin(i + best, 1)) return 0;
   // "bookshelves full of books", "a cabinet filled with toys": the contents belong to the wish.
@@ -1592,6 +1671,10 @@ int Parser::TryFurniture(std::size_t i, Item& item) {
     item.item_first = k;
     --k;
   }
+  // "a walk-in shower", "a walk-in wardrobe".
+  if (k >= 1 && tokens_[k].word == "in" && tokens_[k - 1].word == "walk" && tokens_[k - 1].item < 0 &&
+      tokens_[k - 1].sentence == tokens_[i].sentence)
+    item.item_first = k - 1;
   return best;
 }
 
@@ -1945,6 +2028,21 @@ void Parser::Quantify(Mention& m) {
           m.min = m.max = 1;
         }
       }
+      // "... a loo. First floor: master bedroom with en-suite, the main bathroom": the family bathroom is
+      // neither the en-suite nor the WC named before, so one more.
+      if (t->word == "the" && item.category == Category::kBathroom && has(k, item.last, {"main", "family"})) {
+        bool others = false, all_small = true;
+        for (const Mention& o : mentions_)
+          if (o.category == Category::kBathroom && o.counting && o.max != 0) {
+            others = true;
+            all_small = all_small && (items_[o.item].ensuite || has(o.first, o.last, {"wc", "loo", "toilet", "powder", "cloakroom", "lavatory"}));
+          }
+        if (others && all_small) {
+          m.definite = false;
+          m.counting = true;
+          m.min = m.max = 1;
+        }
+      }
       // "skip the dining room", "forget the balcony", "no need for the office": none of it.
       if (negated_before(k - 1)) {
         m.definite = false;
@@ -1964,9 +2062,16 @@ void Parser::Quantify(Mention& m) {
       return std::pair{std::stoi(next.word.substr(1)), after};
     if (next.punct == '(' && after + 2 < size && Cardinal(tokens_[after + 1]) && tokens_[after + 2].punct == ')')
       return std::pair{*Cardinal(tokens_[after + 1]), after + 2};
+    // ("Lvg rm: 2 armchairs", "dining room: 1 table, 4 chairs", "bdrms: 2x single beds each": the count
+    // is the furniture's.)
+    auto furniture_at = [&](int k) {
+      for (int q = k; q < size && q < k + 3 && !tokens_[q].punct && tokens_[q].sentence == sentence; ++q)
+        if (tokens_[q].item >= 0) return items_[tokens_[q].item].kind == ItemKind::kFurniture;
+      return false;
+    };
     if ((next.punct == ':' || next.word == "x" || next.punct == '*' || next.punct == '-' || next.punct == '=') && after + 1 < size &&
         Cardinal(tokens_[after + 1]) && tokens_[after + 1].sentence == sentence &&
-        !(after + 2 < size && IsFloorNoun(tokens_[after + 2])))
+        !(after + 2 < size && IsFloorNoun(tokens_[after + 2])) && !furniture_at(after + 2))
       return std::pair{*Cardinal(tokens_[after + 1]), after + 1};
     // "bedroom count = 4", "bathrooms total: 2", "number = 3" (spec sheets and forms).
     if (In(next, {"count", "total", "number", "qty", "quantity"}) && after + 2 < size &&
@@ -1993,7 +2098,7 @@ void Parser::Quantify(Mention& m) {
   // a bare room noun heading a clause of furniture (and no room) after rooms of its kind were counted is
   // one of them, named for its furnishing (terse notes), not one more.
   if (!determined && after < size && tokens_[after].sentence == sentence &&
-      (tokens_[after].punct == ':' || tokens_[after].punct == '-' || (tokens_[after].word == "w" && after + 1 < size && tokens_[after + 1].punct == '/') ||
+      (tokens_[after].punct == ':' || tokens_[after].punct == '-' ||
        In(tokens_[after], {"with", "needs", "need", "gets", "get", "has", "wants", "should"}))) {
     bool furniture = false, room = false;
     for (int q = after + 1; q < size && tokens_[q].sentence == sentence; ++q) {
@@ -2006,6 +2111,25 @@ void Parser::Quantify(Mention& m) {
       return o.category == item.category && o.counting && o.max != 0;
     });
     if (furniture && !room && counted) {
+      m.definite = true;
+      determined = true;
+    }
+  }
+  // "piano in GF lvg rm", "2 plants on balc" (notes without articles): a piece put in a room of a kind
+  // counted before is put in one of them, not in one more.
+  if (!determined && m.first >= 2) {
+    int b = m.first - 1;
+    while (b >= 0 && tokens_[b].sentence == sentence && !tokens_[b].punct &&
+           (In(tokens_[b], {"ground", "floor", "first", "second", "third", "top", "upstairs", "downstairs", "upper", "lower"}) ||
+            tokens_[b].ordinal > 0))
+      --b;
+    bool furniture_before = false;
+    for (int q = b - 1; q >= 0 && tokens_[q].sentence == sentence; --q)
+      furniture_before = furniture_before || (tokens_[q].item >= 0 && items_[tokens_[q].item].kind == ItemKind::kFurniture);
+    const bool counted = std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {
+      return o.category == item.category && o.counting && o.max != 0;
+    });
+    if (b >= 1 && tokens_[b].sentence == sentence && In(tokens_[b], {"in", "on", "into", "onto"}) && furniture_before && counted) {
       m.definite = true;
       determined = true;
     }
@@ -2790,7 +2914,9 @@ void Parser::Finish(Brief& brief) {
     auto second_thought = [&](int from, int to) {
       for (int k = from; k < to; ++k)
         if (In(tokens_[k], {"wait", "actually", "sorry", "correction", "rather", "instead"}) ||
-            (In(tokens_[k], {"make", "change"}) && k + 1 < to && In(tokens_[k + 1], {"that", "it"})))
+            (In(tokens_[k], {"make", "change"}) && k + 1 < to && In(tokens_[k + 1], {"that", "it"})) ||
+            // "Let's do three floors. Hmm, no, two floors is plenty."
+            (tokens_[k].word == "no" && k + 1 < to && tokens_[k + 1].punct == ',' && k > 0 && tokens_[k - 1].punct))
           return true;
       return false;
     };
@@ -3257,6 +3383,7 @@ void Parser::Corrections() {
     if (broken && In(tokens_[i], {"no", "sorry", "wait", "oops"})) {
       int c = i;
       while (c + 1 < size && (tokens_[c + 1].punct == ',' || In(tokens_[c + 1], {"wait", "sorry", "actually"}))) ++c;
+      if (c + 2 < size && tokens_[c + 1].word == "for" && Cardinal(tokens_[c + 2])) ++c;  // "for six - no wait, for eight"
       if (c + 1 < size && tokens_[c + 1].item < 0 && Cardinal(tokens_[c + 1])) cues.push_back(c);
     }
   }
@@ -3272,7 +3399,10 @@ void Parser::Corrections() {
       bool piece = false;
       for (int k = last->last + 1; k < cue; ++k)
         piece = piece || (tokens_[k].item >= 0 && items_[tokens_[k].item].kind == ItemKind::kFurniture);
-      if (piece) continue;
+      if (piece) {  // the furnishing's to read
+        Consume(cue - 1 - (tokens_[cue].word == "to"), n);
+        continue;
+      }
       last->min = last->max = *Cardinal(tokens_[n]);
       Consume(cue - 1 - (tokens_[cue].word == "to"), n);
       continue;
@@ -3325,6 +3455,32 @@ void Parser::Corrections() {
     Consume(i, i);
     Consume(j, j);
   }
+  // "the meeting room goes on the ground floor instead", "the office moves up to the top floor": the one
+  // room of its kind named before, on the floor named now (not one more there).
+  for (Mention& m : mentions_) {
+    if (m.counting || !m.definite) continue;
+    int verb = -1;
+    for (int k = m.last + 1; k < size && k <= m.last + 2 && tokens_[k].item < 0 && !tokens_[k].punct; ++k)
+      if (In(tokens_[k], {"goes", "go", "moves", "move", "moved", "belongs", "shifts", "shift"})) verb = k;
+    if (verb < 0) continue;
+    // The floor named right after the verb ("moves up to the top floor").
+    int ref = -1;
+    for (int k = verb + 1; k < size && k <= verb + 4 && !tokens_[k].punct && ref < 0; ++k)
+      if (tokens_[k].item >= 0 && items_[tokens_[k].item].kind == ItemKind::kFloorRef) ref = tokens_[k].item;
+    if (ref < 0) continue;
+    m.ref = ref;
+    Mention* old = nullptr;
+    int olds = 0;
+    for (Mention& p : mentions_)
+      if (&p != &m && p.last < m.first && p.counting && p.category == m.category && p.max > 0) {
+        old = &p;
+        ++olds;
+      }
+    if (olds != 1 || old->min != 1 || old->max != 1 || old->ref == m.ref) continue;
+    old->ref = m.ref;
+    m.ref = -1;
+    Consume(verb, verb);
+  }
   // "No, scratch the meeting room", "forget the balcony": a room named before, taken back.
   for (Mention& m : mentions_) {
     if (!m.counting || m.max != 0) continue;
@@ -3342,6 +3498,51 @@ void Parser::Corrections() {
     if (In(tokens_[i], {"actually", "wait", "sorry", "scratch", "correction"}) && i + 1 < size &&
         (tokens_[i + 1].consumed || tokens_[i + 1].punct) && !cues.empty())
       tokens_[i].consumed = true;
+  // Words that only mark a second thought, whatever it is about (a piece of furniture's, read by the
+  // furnishing): "actually no, put it in the office", "on second thought", "a shower instead."
+  for (int i = 0; i < size; ++i) {
+    const Token& t = tokens_[i];
+    const bool ends = i + 1 == size || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence;
+    if ((In(t, {"actually", "wait", "sorry"}) && i + 1 < size && tokens_[i + 1].word == "no") ||
+        (In(t, {"thought", "thoughts"}) && i > 0 && tokens_[i - 1].word == "second") ||
+        (t.word == "after" && i + 1 < size && tokens_[i + 1].word == "all" && (i + 2 == size || tokens_[i + 2].punct)) || (t.word == "instead" && (ends || (i + 1 < size && tokens_[i + 1].word == "of"))))
+      tokens_[i].consumed = true;
+  }
+}
+
+// Counts of the rooms listed, said again: "one floor, six rooms: 2 bedrooms, 1 bathroom, ...", "3 per
+// floor", "2 bedrooms + 1 bathroom + 1 balcony (4)". Understood (they ask for nothing more) where they
+// agree with the rooms counted; left as words not understood where they do not.
+void Parser::RoomTotals() {
+  const int size = static_cast<int>(tokens_.size());
+  // "one floor, six rooms: 2 bedrooms, 1 bathroom, ...": a total the rooms listed make up.
+  // ("..., 3 per floor" likewise, over the floors.)
+  int listed = 0;
+  for (const Mention& m : mentions_)
+    if (m.counting && m.min == m.max && m.min > 0) listed += m.min;
+  for (int i = 0; i + 1 < size; ++i) {
+    const std::optional<int> n = Cardinal(tokens_[i]);
+    if (!n || tokens_[i].consumed || tokens_[i].item >= 0) continue;
+    const bool per_floor = i + 2 < size && In(tokens_[i + 1], {"per", "a", "each", "every"}) && IsFloorNoun(tokens_[i + 2]);
+    int floors = 0;  // (floors_ is set when the brief is finished)
+    for (const Item& it : items_)
+      if (it.kind == ItemKind::kFloorCount) floors = std::max(floors, it.floors);
+    if ((In(tokens_[i + 1], {"rooms"}) && listed == *n) || (per_floor && listed == *n * floors))
+      tokens_[i].consumed = true;
+  }
+  // "1st floor: 2 bedrooms + 1 bathroom + 1 balcony (4)": the rooms of the list counted in brackets.
+  for (int i = 1; i + 1 < size; ++i) {
+    const std::optional<int> n = Cardinal(tokens_[i]);
+    if (!n || tokens_[i].consumed || tokens_[i - 1].punct != '(' || tokens_[i + 1].punct != ')') continue;
+    int in_list = 0;
+    for (const Mention& m : mentions_) {
+      if (m.last >= i || !m.counting || m.min != m.max || tokens_[m.first].sentence != tokens_[i].sentence) continue;
+      bool heading_between = false;
+      for (int k = m.last + 1; k < i; ++k) heading_between = heading_between || tokens_[k].punct == ':';
+      if (!heading_between) in_list += m.min;
+    }
+    if (in_list == *n) tokens_[i].consumed = true;
+  }
 }
 
 // A total first, its floors after: "Bedrooms x4 ... Top floor: 2 bedrooms + 1 bathroom only": the two are
@@ -3349,6 +3550,23 @@ void Parser::Corrections() {
 // room named before is no total, and en-suites are rooms of their own).
 void Parser::FloorsOfTotals() {
   const int size = static_cast<int>(tokens_.size());
+  // The floors first, the total after: "1st floor: ... 1 balcony. 2nd floor: ... 1 balcony. That's 2
+  // balconies total": the rooms placed on the floors, counted again, not two more.
+  for (Mention& m : mentions_) {
+    if (!m.counting || m.ref >= 0 || m.min != m.max || m.min <= 0 || m.per_level >= 0) continue;
+    const int sentence = tokens_[m.first].sentence;
+    auto word = [&](int k, std::initializer_list<std::string_view> ws) { return k >= 0 && k < size && tokens_[k].sentence == sentence && In(tokens_[k], ws); };
+    const bool total = word(m.last + 1, {"total", "altogether"}) || (word(m.last + 1, {"in"}) && word(m.last + 2, {"total", "all"})) ||
+                       word(m.first - 1, {"thats", "makes", "totals"}) || (word(m.first - 1, {"is"}) && word(m.first - 2, {"that"}));
+    if (!total) continue;
+    int placed = 0;
+    for (const Mention& p : mentions_)
+      if (&p != &m && p.last < m.first && p.counting && p.category == m.category && p.ref >= 0 && p.min == p.max) placed += p.min;
+    if (placed != m.min) continue;
+    m.counting = false;
+    m.definite = true;
+    for (int k = m.last + 1; k <= m.last + 2 && word(k, {"total", "altogether", "in", "all"}); ++k) Consume(k, k);
+  }
   for (Mention& m : mentions_) {
     if (!m.counting || m.ref < 0 || m.min != m.max || m.min <= 0 || m.per_level >= 0 || items_[m.ref].each) continue;
     const int sentence = tokens_[m.first].sentence;
@@ -3394,6 +3612,7 @@ Brief Parser::Run() {
   PlaceLevels();
   Corrections();
   FloorsOfTotals();
+  RoomTotals();
   Distribute();
   Connect();
   Attach();

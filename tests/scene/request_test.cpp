@@ -322,3 +322,49 @@ TEST_CASE("a fifth unseen set: clauses, bare corrections, tables out of place, s
   CHECK(Named(ParseRoomRequest("Single lvl. Lounge, kit, 2 bdrm. Kit needs fridge & dishwasher.", Category::kKitchen), "dishwasher") != nullptr);
   CHECK(Named(ParseRoomRequest("Kit, 2 bthrm. Bathtub in 1 of the bthrms.", Category::kBathroom), "bathtub") != nullptr);
 }
+
+TEST_CASE("a sixth unseen set: misspelt pieces, rooms of notes, pieces moved by a pronoun, clauses with verbs of their own",
+          "[scene][request]") {
+  // Misspelt pieces and rooms; "a couple of bookcaes" is two.
+  CHECK(Named(ParseRoomRequest("3 bdrm, kit, lvg rm. kit needs dishwaser.", Category::kKitchen), "dishwasher") != nullptr);
+  CHECK(Named(ParseRoomRequest("Each bedroom should have its own wardorbe.", Category::kBedroom, 1), "wardrobe") != nullptr);
+  const RoomRequest couple = ParseRoomRequest("A home office. The office gets a couple of bookcaes.", Category::kOffice);
+  const Wish* bookcases = Named(couple, "bookcase");
+  REQUIRE(bookcases != nullptr);
+  CHECK(bookcases->count == 2);
+  CHECK(Named(ParseRoomRequest("A dining room. We'd like a dinning table for six.", Category::kDiningRoom), "dining-table") != nullptr);
+  CHECK(Named(ParseRoomRequest("No dressed-up rooms, a bedroom dressed in white.", Category::kBedroom), "dresser") == nullptr);
+  // A clause whose piece has its own verb keeps its room: the table is not the lounge's.
+  const std::string piano = "A lounge and a dining room. We'd like a dining table for six with matching chairs, and my daughter's "
+                            "upright piano has to fit in the lounge somewhere.";
+  CHECK(Named(ParseRoomRequest(piano, Category::kLivingRoom), "dining-table") == nullptr);
+  CHECK(Named(ParseRoomRequest(piano, Category::kLivingRoom), "piano") != nullptr);
+  CHECK(Named(ParseRoomRequest(piano, Category::kDiningRoom), "dining-table") != nullptr);
+  // "by the lounge window"; "a wet room"; no armchair carried into the bathroom named last.
+  const std::string mum = "She needs a lounge, a kitchen, two bedrooms and a wet room. A comfy armchair by the lounge window, a walk-in "
+                          "shower in the wet room, and a mirrored wardrobe in her bedroom would be lovely.";
+  CHECK(Named(ParseRoomRequest(mum, Category::kLivingRoom), "armchair") != nullptr);
+  CHECK(Named(ParseRoomRequest(mum, Category::kBathroom), "armchair") == nullptr);
+  CHECK(Named(ParseRoomRequest(mum, Category::kBathroom), "shower") != nullptr);
+  CHECK(Named(ParseRoomRequest(mum, Category::kBathroom), "wardrobe") == nullptr);
+  CHECK(Named(ParseRoomRequest(mum, Category::kBedroom), "wardrobe") != nullptr);
+  CHECK(Named(ParseRoomRequest("Second floor: master bedroom with its own bathroom. In the master bath, a soaking tub.", Category::kBathroom),
+              "bathtub") != nullptr);
+  // Bare corrections: "make that two, by the fire"; "for six - no wait, for eight".
+  const RoomRequest two = ParseRoomRequest("One armchair in the living room - actually make that two, by the fire.", Category::kLivingRoom);
+  const Wish* armchairs = Named(two, "armchair");
+  REQUIRE(armchairs != nullptr);
+  CHECK(armchairs->count == 2);
+  const RoomRequest eight = ParseRoomRequest("A dining room. Dining table for six - no wait, for eight, the in-laws visit a lot.", Category::kDiningRoom);
+  const Wish* chairs = Named(eight, "chair");
+  REQUIRE(chairs != nullptr);
+  CHECK(chairs->count == 8);
+  // "put it in the office": the TV named before moves.
+  const std::string tv = "Kitchen, living room, an office. I wanted a TV in the living room, but actually put it in the office.";
+  CHECK(Named(ParseRoomRequest(tv, Category::kOffice), "tv") != nullptr);
+  CHECK(Named(ParseRoomRequest(tv, Category::kLivingRoom), "tv") == nullptr);
+  // "Both children's rooms: 1 bed and 1 desk each": pieces of the rooms, not a bedroom counted.
+  const std::string kids = "Top floor: two children's rooms, an office. Both children's rooms: 1 bed and 1 desk each.";
+  CHECK(Named(ParseRoomRequest(kids, Category::kChildrenRoom, 2), "desk") != nullptr);
+  CHECK(Named(ParseRoomRequest(kids, Category::kBedroom), "desk") == nullptr);
+}

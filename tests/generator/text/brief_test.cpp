@@ -970,4 +970,67 @@ TEST_CASE("the fifth unseen set: notes that furnish a room named before, storage
   CHECK(Exact(beds, Category::kBedroom) == -100);
 }
 
+TEST_CASE("the sixth unseen set: furnishing counts after a heading, rooms for the kids, moves, totals said again", "[issue32]") {
+  // "lvg rm: 2 armchairs", "per bedroom: 1 bed", "dining room: 1 table, 4 chairs": the furniture's counts,
+  // not more rooms.
+  const Brief notes = ParseBrief("one floor, six rooms: 2 bedrooms, 1 bathroom, 1 kitchen, 1 living room, 1 dining room. "
+                                 "per bedroom: 1 bed. dining room: 1 table, 4 chairs. lvg rm: 2 armchairs.");
+  INFO(BriefToJson(notes).dump(1));
+  CHECK(Exact(notes, Category::kBedroom) == 2);
+  CHECK(Exact(notes, Category::kDiningRoom) == 1);
+  CHECK(Exact(notes, Category::kLivingRoom) == 1);
+  CHECK(notes.conflicts.empty());
+  CHECK(notes.unparsed.empty());  // "six rooms" is the sum of the list
+  // Rooms for the children, written as rooms for people.
+  const Brief kids = ParseBrief("Two storeys. Downstairs: kitchen, living room. Upstairs: our bedroom, two rooms for the kids "
+                                "and a bathroom. A room for the grandchildren too.");
+  INFO(BriefToJson(kids).dump(1));
+  CHECK(Exact(kids, Category::kChildrenRoom, 1) == 2);
+  CHECK(Exact(kids, Category::kChildrenRoom) == 3);  // the grandchildren's besides the two
+  // Notes: "w/ ensuite", "2nd lvg rm", "piano in GF lvg rm" (the one listed), "2 plants on balc".
+  const Brief terse = ParseBrief("3 flrs. GF: kit, din rm, lvg rm, guest WC. 1F: master bdrm w/ ensuite, 2x kids rm, family bath. "
+                                 "2F: study, 2nd lvg rm, balc. piano in GF lvg rm. 2 plants on balc.");
+  INFO(BriefToJson(terse).dump(1));
+  CHECK(Exact(terse, Category::kLivingRoom, 0) == 1);
+  CHECK(Exact(terse, Category::kLivingRoom, 2) == 1);
+  CHECK(Exact(terse, Category::kBalcony, 2) == 1);
+  CHECK(Exact(terse, Category::kBathroom, 1) == 2);
+  CHECK(terse.unparsed.empty());
+  // A room moved to another floor is that room, not one more there.
+  const Brief moved = ParseBrief("Three floors. Ground floor: kitchen, living room and an office. Middle floor: two bedrooms and a "
+                                 "bathroom. Top floor: a meeting room. No wait - the meeting room goes on the ground floor instead "
+                                 "of the office, and the office moves up to the top floor, together with a balcony.");
+  INFO(BriefToJson(moved).dump(1));
+  CHECK(Exact(moved, Category::kMeetingRoom, 0) == 1);
+  CHECK(Exact(moved, Category::kMeetingRoom, 2) == -100);
+  CHECK(Exact(moved, Category::kOffice, 2) == 1);
+  CHECK(Exact(moved, Category::kOffice, 0) == -100);
+  // A floor count taken back after "no,".
+  CHECK(ParseBrief("Let's do three floors. Hmm, no, two floors is plenty. Kitchen and a bedroom.").floors == 2);
+  // Totals said again after the floors: "That's 2 balconies total", "(4)", "10 rooms".
+  const Brief totals = ParseBrief("3 floors, 10 rooms. Ground: kitchen + living room + 1 bathroom (3). 1st floor: 2 bedrooms + 1 "
+                                  "bathroom + 1 balcony (4). 2nd floor: 1 meeting room + 1 office + 1 balcony (3). That's 2 "
+                                  "balconies total.");
+  INFO(BriefToJson(totals).dump(1));
+  CHECK(Exact(totals, Category::kBalcony) == -100);  // no requirement beside the two per floor
+  CHECK(Exact(totals, Category::kBalcony, 2) == 1);
+  CHECK(totals.unparsed.empty());
+  // The main bathroom besides a WC and an en-suite.
+  const Brief bath = ParseBrief("Two storeys. On the ground floor: kitchen, lounge and a loo. First floor: master bedroom with "
+                                "en-suite, a guest bedroom, the main bathroom.");
+  INFO(BriefToJson(bath).dump(1));
+  CHECK(Exact(bath, Category::kBathroom, 1) == 2);
+  // "living" as a verb; a misspelt piece; a bathroom's shower; "shower" in a list is a room.
+  CHECK(Exact(ParseBrief("Four bedrooms and a living room. Nobody is living out of a suitcase."), Category::kLivingRoom) == 1);
+  const Brief typo = ParseBrief("2 storeys, 3 bdrm, kit, lvg rm. kit needs dishwaser.");
+  INFO(BriefToJson(typo).dump(1));
+  CHECK(typo.unparsed.empty());
+  CHECK(Exact(typo, Category::kKitchen) == 1);
+  const Brief shower = ParseBrief("Two floors, two bathrooms. The downstairs bathroom gets a shower instead. On second thought, a kitchen.");
+  INFO(BriefToJson(shower).dump(1));
+  CHECK(shower.unparsed.empty());
+  CHECK(Exact(shower, Category::kBathroom) == 2);
+  CHECK(Exact(ParseBrief("A bungalow: bedroom, kitchen, shower."), Category::kBathroom) == 1);
+}
+
 }  // namespace villa

@@ -169,6 +169,35 @@ TEST_CASE("'upstairs' in a three-floor villa is met on the upper floors together
   CHECK(upper_bedrooms == 3);
 }
 
+TEST_CASE("a brief that cannot be met stops the search once no variant does better, not at the time budget") {
+  PlanOptions options;  // the default budget: 5 s, 4,000 attempts
+  // Nine rooms on one floor: FORMAT.md allows six.
+  PlanSummary plan = PlanLayout("Bungalow, 1 flr: liv rm, kit, din rm, 3 bdrm, 2 bthrm, office.", options);
+  INFO(plan.BriefReport());
+  REQUIRE(plan.valid());
+  CHECK(plan.outcome == PlanOutcome::kPartial);
+  CHECK_FALSE(plan.brief.conflicts.empty());
+  CHECK(plan.attempts <= 12);  // one round of variants past the best (it ran all 4,000 before)
+}
+
+TEST_CASE("rooms on a named upper floor count toward an 'upstairs' requirement of their kind") {
+  PlanOptions options;
+  options.time_budget_s = 2.0;
+  // "only the upstairs one" is the first floor's bathroom: one there, not a second one besides it.
+  PlanSummary plan = PlanLayout("Three floors. Ground: kitchen, dining room, living room, bathroom. First: two bedrooms and a "
+                                "second bathroom. Second: office and terrace. Both bathrooms with a bathtub... on second "
+                                "thought only the upstairs one; the downstairs bathroom gets a shower instead.", options);
+  INFO(plan.BriefReport());
+  REQUIRE(plan.valid());
+  CHECK(plan.outcome == PlanOutcome::kMet);
+  CHECK(plan.brief.unparsed.empty());
+  std::map<int, int> bathrooms;
+  for (const Room& r : plan.layout->rooms) bathrooms[r.level] += r.category == Category::kBathroom;
+  CHECK(bathrooms[0] == 1);
+  CHECK(bathrooms[1] == 1);
+  CHECK(bathrooms[2] == 0);
+}
+
 TEST_CASE("whole-building counts are spread over the floors without losing a room") {
   Brief brief = ParseBrief("A three-story villa with a living room, a kitchen, a dining room, four bedrooms, "
                            "two bathrooms, an office and two balconies.");
