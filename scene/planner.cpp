@@ -245,6 +245,9 @@ class Planning {
     for (const Wish& w : request.wishes)
       if (w.count == 0) excluded_.insert(std::string(w.category->name));
       else named_.insert(std::string(w.category->name));
+    // "Both children's rooms: 1 bed and 1 desk each": the bed asked for is the room's bed, not one beside
+    // the child's bed of the priors.
+    if (room_.category == Category::kChildrenRoom && named_.count("bed")) named_.insert("child-bed");
     Targets();
     Wishes(request);
     for (bool small : {false, true}) {

@@ -1000,14 +1000,21 @@ struct RoomSolver::Impl {
   std::vector<int> GiveWayPool(int i) const {
     std::vector<int> pool;
     const int p = state.parent[i];
+    // An essential (the children's room's bed) is kept before what the request names besides it (the desk
+    // asked for beside it): those give way to it too, after every unprotected piece (the order below).
+    const bool essential = state.objects[i].priority == Priority::kEssential;
+    auto keeps = [&](int k) {
+      const Priority q = state.objects[k].priority;
+      return IsProtected(q) && !(essential && q == Priority::kNamed);
+    };
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);
-      if (kk == i || IsProtected(state.objects[k].priority) || state.parent[k] != p) continue;
+      if (kk == i || keeps(kk) || state.parent[k] != p) continue;
       // Its own group goes with it, not for it (its members, its hub).
       if (GroupMembership(state, kk).hub == i || GroupMembership(state, i).hub == kk) continue;
-      // Nothing protected stands on it (the counter under the sink stays).
+      // Nothing kept stands on it (the counter under the sink stays).
       const std::vector<int> below = state.Descendants(kk);
-      if (std::any_of(below.begin(), below.end(), [&](int d) { return IsProtected(state.objects[d].priority); })) continue;
+      if (std::any_of(below.begin(), below.end(), keeps)) continue;
       pool.push_back(kk);
     }
     std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) {
