@@ -551,7 +551,9 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       // ("in 1 of the bthrms", "in each of the 2 bathrooms" too.)
       if (p > m.end + 1 && NumberWord(tokens[p - 1].word) && IsOneOf(tokens[p - 2].word, {"the", "our", "my"})) p -= 2;
       while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any", "1", "each", "both", "all"})) p -= 2;
-      if (p > m.end && IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"}) && !OutOfPlace(m.category->name, mentions[j].room_category)) {
+      // ("3 plants on the balcony", "a table on the terrace".)
+      const bool on = mentions[j].room_category == Category::kBalcony && IsOneOf(tokens[p - 1].word, {"on", "onto", "out"});
+      if (p > m.end && (on || IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) && !OutOfPlace(m.category->name, mentions[j].room_category)) {
         bound[k] = mentions[j].room_category;
         bound_one[k] = names_one(mentions[j]);
         named[k] = true;
@@ -745,6 +747,13 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     }
   }
   Capacities(tokens, mentions, bound, room, out);
+  // "a dining table big enough for all of us ..., so eight chairs around it": a table no number sizes is
+  // sized for the chairs asked with it (the planner makes it long enough for them where the room allows).
+  for (Wish& t : out.wishes) {
+    if (t.seats > 0 || (t.category->name != "dining-table" && t.category->name != "conference-table")) continue;
+    for (const Wish& c : out.wishes)
+      if (c.category->name == "chair" && c.explicit_count && c.count >= 3) t.seats = std::max(t.seats, c.count);
+  }
   return out;
 }
 

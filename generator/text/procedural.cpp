@@ -333,7 +333,8 @@ int RoomsTooSmallToSeat(const Layout& layout, Category room, int seats) {
     if (r.category != room || r.polygon.empty()) continue;
     const Box2 b = BoundingBox(r.polygon);
     const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
-    const bool fits = (w >= need_across && h >= need_along) || (h >= need_across && w >= need_along);
+    // The table's long side along the room's (as the furnishing lays it out: scene/planner.cpp SeatCap).
+    const bool fits = std::min(w, h) >= need_across && std::max(w, h) >= need_along;
     short_of += !fits;
   }
   return short_of;

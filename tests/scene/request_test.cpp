@@ -363,6 +363,12 @@ TEST_CASE("a sixth unseen set: misspelt pieces, rooms of notes, pieces moved by 
   const std::string tv = "Kitchen, living room, an office. I wanted a TV in the living room, but actually put it in the office.";
   CHECK(Named(ParseRoomRequest(tv, Category::kOffice), "tv") != nullptr);
   CHECK(Named(ParseRoomRequest(tv, Category::kLivingRoom), "tv") == nullptr);
+  // A table no number sizes is sized for the chairs asked with it.
+  const RoomRequest around = ParseRoomRequest("A dining room. We want a dining table big enough for all of us plus the grandparents, "
+                                              "so eight chairs around it please.", Category::kDiningRoom);
+  const Wish* table = Named(around, "dining-table");
+  REQUIRE(table != nullptr);
+  CHECK(table->seats == 8);
   // "Both children's rooms: 1 bed and 1 desk each": pieces of the rooms, not a bedroom counted.
   const std::string kids = "Top floor: two children's rooms, an office. Both children's rooms: 1 bed and 1 desk each.";
   CHECK(Named(ParseRoomRequest(kids, Category::kChildrenRoom, 2), "desk") != nullptr);

@@ -1,4 +1,4 @@
-// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 405 requests in eight
+// Requests as people write them (issue 32): tests/fixtures/prompts/voices.jsonl, 441 requests in eight
 // voices (terse lists, long emails, British and American floor naming, spec sheets, "each"/"per"
 // distributions, ordinals, negations), numbers in words and digits, each with what it asks: floors, the
 // footprint when named, the rooms of each kind (utility rooms aside) and, where pinned, per floor. One table:
@@ -55,6 +55,10 @@ const std::map<std::string, std::string>& KnownGaps() {
       // the layout adds unasked as a miss), 1 false "met"; after the fixes of this stop 99.8 % (98.6 %).
       {"voices-395", "'half a dozen bedrooms ..., plus a kitchen and a lounge': the planner completes the house with rooms not named"},
       {"voices-401", "a single floor of bedrooms, a bathroom and a kitchen: the planner adds the living room not named"},
+      // 406-441: the sixth unseen set (a helper that saw nothing of the project wrote 36 within FORMAT.md, six in
+      // each of six voices, with 97 furnishing wishes); first reading 92.0 % of their 450 stated requirements
+      // (counting each kind the layout adds unasked as a miss), 0 false "met"; after the fixes of that stop 100 %:
+      // none is listed.
   };
   return gaps;
 }
