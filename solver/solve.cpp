@@ -1002,10 +1002,14 @@ struct RoomSolver::Impl {
     const int p = state.parent[i];
     // An essential (the children's room's bed) is kept before what the request names besides it (the desk
     // asked for beside it): those give way to it too, after every unprotected piece (the order below).
+    // (Not a piece of its own kind or group: the two essential chairs of a table do not push out the other
+    // chairs the request asks for.)
     const bool essential = state.objects[i].priority == Priority::kEssential;
+    const int hub = GroupMembership(state, i).hub;
     auto keeps = [&](int k) {
       const Priority q = state.objects[k].priority;
-      return IsProtected(q) && !(essential && q == Priority::kNamed);
+      const bool sibling = state.objects[k].category == state.objects[i].category || (hub >= 0 && GroupMembership(state, k).hub == hub);
+      return IsProtected(q) && !(essential && q == Priority::kNamed && !sibling);
     };
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);

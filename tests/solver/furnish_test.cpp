@@ -401,6 +401,23 @@ TEST_CASE("A small children's room keeps the bed asked for, essential, before th
   CHECK(desks <= 1);
 }
 
+TEST_CASE("A table's two essential chairs do not push out the other chairs the request asks for", "[solver][furnish][issue27]") {
+  // dining_eight_chairs.json is wish34-07's layout: a 4 x 6.5 m trapezoid dining room. "so eight chairs around
+  // it": the table is sized for eight, and the chairs beyond the two essential ones are the request's; when
+  // essentials first outranked named pieces, the essential chairs had four of the others removed.
+  TempDir dir("eight");
+  const std::string text = "Downstairs a proper dining room. We also want a dining table big enough for all of us plus the "
+                           "grandparents, so eight chairs around it please.";
+  const Run run = Villa("furnish " + std::string(VILLA_FIXTURE_DIR) + "/layouts/dining_eight_chairs.json -o " + dir.path.string() +
+                        " --room dining-room_0/0 --seed 2027 --force --text \"" + text + "\"");
+  INFO(run.out);
+  REQUIRE(run.status == 0);
+  const auto objects = nlohmann::json::parse(Read(dir.path / "scene.json")).at("objects");
+  int chairs = 0;
+  for (const auto& [id, o] : objects.items()) chairs += o["category"] == "chair";
+  CHECK(chairs == 8);
+}
+
 TEST_CASE("villa furnish --no-reach skips reachability: RCH and ACC not measured, no feedback", "[solver][furnish]") {
   TempDir dir("noreach");
   Run run = Villa("furnish " + kHouse + " --procedural --seed 3 -o " + dir.path.string() + " --no-reach");
