@@ -3517,16 +3517,15 @@ void Parser::RoomTotals() {
   const int size = static_cast<int>(tokens_.size());
   // "one floor, six rooms: 2 bedrooms, 1 bathroom, ...": a total the rooms listed make up.
   // ("..., 3 per floor" likewise, over the floors.)
-  int listed = 0;
+  int listed = 0, floors = 0;  // (floors_ is set when the brief is finished)
   for (const Mention& m : mentions_)
     if (m.counting && m.min == m.max && m.min > 0) listed += m.min;
+  for (const Item& it : items_)
+    if (it.kind == ItemKind::kFloorCount) floors = std::max(floors, it.floors);
   for (int i = 0; i + 1 < size; ++i) {
     const std::optional<int> n = Cardinal(tokens_[i]);
     if (!n || tokens_[i].consumed || tokens_[i].item >= 0) continue;
     const bool per_floor = i + 2 < size && In(tokens_[i + 1], {"per", "a", "each", "every"}) && IsFloorNoun(tokens_[i + 2]);
-    int floors = 0;  // (floors_ is set when the brief is finished)
-    for (const Item& it : items_)
-      if (it.kind == ItemKind::kFloorCount) floors = std::max(floors, it.floors);
     if ((In(tokens_[i + 1], {"rooms"}) && listed == *n) || (per_floor && listed == *n * floors))
       tokens_[i].consumed = true;
   }
