@@ -150,6 +150,7 @@ std::vector<Token> Misspellings(std::vector<Token> tokens) {
     return w.size() > tail.size() && w.compare(w.size() - tail.size(), tail.size(), tail) == 0;
   };
   for (Token& t : tokens) {
+    if (t.word == "ea") t.word = "each";  // notes: "Wardrobe in ea bdrm"
     if (t.word.size() < 7 || ends(t.word, "ed") || ends(t.word, "ing") || CategoryForWord(t.word) || RoomOf(t.word)) continue;
     std::string match;
     int near = 0;
@@ -553,7 +554,10 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
       while (p > m.end + 2 && tokens[p - 1].word == "of" && IsOneOf(tokens[p - 2].word, {"one", "any", "1", "each", "both", "all"})) p -= 2;
       // ("3 plants on the balcony", "a table on the terrace".)
       const bool on = mentions[j].room_category == Category::kBalcony && IsOneOf(tokens[p - 1].word, {"on", "onto", "out"});
-      if (p > m.end && (on || IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) && !OutOfPlace(m.category->name, mentions[j].room_category)) {
+      // (Nor a fixture across another piece into a room it does not fit: "Walk-in shower rather than a bath,
+      // and a comfy armchair in the sitting room".)
+      if (p > m.end && (on || IsOneOf(tokens[p - 1].word, {"in", "for", "into", "inside", "to"})) && !OutOfPlace(m.category->name, mentions[j].room_category) &&
+          (!clause || FitsRoom(m.category->name, mentions[j].room_category))) {
         bound[k] = mentions[j].room_category;
         bound_one[k] = names_one(mentions[j]);
         named[k] = true;
@@ -597,7 +601,15 @@ RoomRequest ParseRoomRequest(std::string_view text, Category room, int ordinal) 
     // after "... guest WC" is no bathroom's ("a bed in the lounge" still is the lounge's).
     if (bound[k] && !named[k] && !FitsRoom(m.category->name, *bound[k])) {
       bound[k].reset();
-      continue;
+      // "Walk-in shower rather than a bath, please" after "... a shower room and a small study": a fixture
+      // of one kind of room is that kind's when the text names one.
+      for (Category fits : {Category::kBathroom, Category::kKitchen})
+        if (FitsRoom(m.category->name, fits) && !FitsRoom(m.category->name, Category::kLivingRoom) &&
+            std::any_of(mentions.begin(), mentions.end(), [&](const Mention& x) { return x.room && x.room_category == fits; })) {
+          bound[k] = fits;
+          bound_one[k] = false;
+        }
+      if (!bound[k]) continue;
     }
     // Named before any room: the text is meant for the room being planned.
     if (!bound[k]) bound[k] = room;

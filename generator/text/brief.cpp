@@ -343,7 +343,7 @@ const std::unordered_set<std::string>& FillerWords() {
       "particularly", "mainly", "mostly", "primarily", "primary", "important", "essential", "key",
       "nearby", "close", "near", "adjacent", "beside", "next", "side", "end", "corner", "part",
       "portion", "half", "wing", "toward", "towards", "facing", "face", "faces", "level",
-      "hmm", "um", "uh", "plenty", "holiday", "vacation", "weekend", "eat",
+      "hmm", "um", "uh", "oh", "plenty", "enough", "holiday", "vacation", "weekend", "eat",
   };
   return words;
 }
@@ -363,7 +363,8 @@ bool IsAdjective(const Token& t) {
       "decent", "proper", "sizable", "sizeable", "wide", "warm", "welcoming", "open", "plan", "own",
       "attached", "en", "suite", "ensuite", "full", "half", "dedicated", "shared", "second", "third",
       "further", "new", "more", "stylish", "calm", "peaceful", "formal", "informal", "cosy", "home",
-      "adjoining", "connected", "spare", "fully", "equipped", "well", "lit", "sized", "large-sized", "guest"};
+      "adjoining", "connected", "spare", "fully", "equipped", "well", "lit", "sized", "large-sized", "guest",
+      "family"};
   return !t.punct && (words.count(t.word) > 0 || words.count(t.stem) > 0);
 }
 
@@ -681,7 +682,7 @@ const std::unordered_map<std::string, std::vector<std::string>>& Shorthand() {
   static const std::unordered_map<std::string, std::vector<std::string>> words = {
       {"rm", {"room"}}, {"rms", {"rooms"}}, {"tbl", {"table"}}, {"grnd", {"ground"}}, {"gnd", {"ground"}},
       {"sep", {"separate"}}, {"balc", {"balcony"}}, {"balcs", {"balconies"}}, {"bd", {"bedroom"}}, {"bds", {"bedrooms"}},
-      {"bdrm", {"bedroom"}}, {"hse", {"house"}}, {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
+      {"bdrm", {"bedroom"}}, {"hse", {"house"}}, {"ea", {"each"}}, {"bdrms", {"bedrooms"}}, {"bth", {"bathroom"}}, {"bthrm", {"bathroom"}}, {"bthrms", {"bathrooms"}}, {"kit", {"kitchen"}},
       {"din", {"dining"}}, {"fam", {"family"}}, {"liv", {"living"}}, {"lvg", {"living"}}, {"conf", {"conference"}},
       {"mstr", {"master"}}, {"gf", {"ground", "floor"}}, {"ff", {"first", "floor"}}, {"sf", {"second", "floor"}}, {"1f", {"1st", "floor"}}, {"2f", {"2nd", "floor"}},
       {"3f", {"3rd", "floor"}}, {"incl", {"including"}}, {"inc", {"including"}}, {"mtg", {"meeting"}}, {"pls", {"please"}},
@@ -861,7 +862,7 @@ const std::vector<std::vector<std::string>>& FurnitureLexicon() {
                    "painting", "curtain", "vanity", "chest of drawer", "drawer", "office chair",
                    "gaming console", "console", "filing cabinet", "recliner", "sectional", "loveseat",
                    "love seat", "futon", "hammock", "bunk", "changing table", "tv stand", "tv cabinet",
-                   "counter", "worktop", "microwave", "exercise bike", "pool table", "sound system", "shower"}) {
+                   "counter", "worktop", "microwave", "exercise bike", "pool table", "sound system", "shower", "bath"}) {
       out.push_back(Split(p));
     }
     return out;
@@ -1418,6 +1419,11 @@ int Parser::TryShape(std::size_t i, Item& item) {
   } else if (In(t, {"round", "circular", "curved", "oval", "elliptical", "pentagonal", "pentagon", "triangular",
                     "triangle", "cylindrical", "dome", "domed", "spiral", "crescent", "heart", "semicircular",
                     "zigzag", "circle", "ring", "curvy", "rounded"})) {
+    // Nouns only with a shape word or a building after them ("heart-shaped", "a dome house"): "the living
+    // room is the heart of it" asks for no footprint.
+    if (In(t, {"heart", "circle", "ring", "triangle", "dome", "spiral", "crescent", "pentagon"}) &&
+        !(i + 1 < tokens_.size() && (shape_word(i + 1) || In(tokens_[i + 1], {"house", "villa", "home", "building", "footprint", "plan"}))))
+      return 0;
     item.shape.reset();
     len = 1;
   } else {
@@ -1453,6 +1459,10 @@ bool Parser::IsBedroomCount(std::size_t i) const {
   if (!n || tokens_[i - 1].word == "single" || tokens_[i - 1].word == "double" || tokens_[i - 1].word == "triple")
     return false;
   if (i + 1 < tokens_.size() && In(tokens_[i + 1], {"in", "into", "inside", "for", "per"})) return false;
+  // "Bunk beds in the kids' room, so two beds": the pieces counted, not bedrooms.
+  if (i >= 2 && In(tokens_[i - 2], {"so", "i", "e", "ie", "meaning"})) return false;
+  for (std::size_t k = i - 1; k-- > 0 && tokens_[k].sentence == t.sentence;)
+    if (tokens_[k].item >= 0 && items_[tokens_[k].item].kind == ItemKind::kFurniture) return false;
   // "Both kids' rooms with one bed and 1 desk each": furniture of the rooms named.
   if (i >= 2 && In(tokens_[i - 2], {"with", "has", "have", "gets", "get", "needs", "need", "wants"})) return false;
   // "per bedroom: 1 bed", "guest room - 2 beds": a room's furnishing note.
@@ -1641,7 +1651,7 @@ int Parser::TryFurniture(std::size_t i, Item& item) {
   if (best == 0) return 0;
   // "a kitchen, a shower": a shower is a room (a bathroom) unless the room reading takes it for a fixture
   // ("the downstairs bathroom gets a shower").
-  if (best == 1 && tokens_[i].word == "shower") {
+  if (best == 1 && (tokens_[i].stem == "shower" || tokens_[i].stem == "bath")) {
     Item room = MakeItem(ItemKind::kRoom);
     if (TryRoom(i, room) > 0) return 0;
   }
@@ -1837,6 +1847,20 @@ void Parser::Quantify(Mention& m) {
   }
   int k = item.first - 1;
   int sentence = tokens_[item.first].sentence;
+  // "1 mirror per bathroom", "two plants per balcony": the rooms counted elsewhere, each furnished.
+  if (k >= 1 && In(tokens_[k], {"per"}) && tokens_[k].sentence == sentence && tokens_[k - 1].item >= 0 &&
+      items_[tokens_[k - 1].item].kind == ItemKind::kFurniture) {
+    m.definite = true;
+    tokens_[k].consumed = true;
+    return;
+  }
+  // "master suite - bedroom plus its own bathroom": the suite's bedroom, said again.
+  if (k >= 1 && tokens_[k].punct == '-' && tokens_[k - 1].item >= 0 && tokens_[k].sentence == sentence &&
+      items_[tokens_[k - 1].item].kind == ItemKind::kRoom && items_[tokens_[k - 1].item].category == item.category &&
+      tokens_[k - 1].word == "suite") {
+    m.definite = true;
+    return;
+  }
   bool determined = false;
   auto at = [&](int j) -> const Token* {
     return j >= 0 && tokens_[j].sentence == sentence ? &tokens_[j] : nullptr;
@@ -2028,6 +2052,20 @@ void Parser::Quantify(Mention& m) {
           m.min = m.max = 1;
         }
       }
+      // "Upstairs should be our bedroom, a guest bedroom ...", "her bedroom, a spare bedroom": the bedroom of
+      // the people asking is a room of the list (none but guest rooms counted before it); after bedrooms
+      // counted, "our bedroom" is one of them.
+      if (In(*t, {"our", "my", "her", "his", "their"}) && item.category == Category::kBedroom &&
+          !has(item.first, item.last, {"guest", "spare"})) {
+        bool all_guest = true;
+        for (const Mention& o : mentions_)
+          if (o.category == Category::kBedroom && o.counting && o.max != 0) all_guest = all_guest && has(o.first, o.last, {"guest", "spare"});
+        if (all_guest) {
+          m.definite = false;
+          m.counting = true;
+          m.min = m.max = 1;
+        }
+      }
       // "... a loo. First floor: master bedroom with en-suite, the main bathroom": the family bathroom is
       // neither the en-suite nor the WC named before, so one more.
       if (t->word == "the" && item.category == Category::kBathroom && has(k, item.last, {"main", "family"})) {
@@ -2087,6 +2125,20 @@ void Parser::Quantify(Mention& m) {
       return std::pair{tokens_[after + 1].word == "yes" ? 1 : 0, after + 1};
     return std::nullopt;
   };
+  // "Level 0 (ground): kitchen, living room, dining room, bathroom - 4", "Level 1: 3 bedrooms + 1 bathroom -
+  // 4": the list's count, said after its last room, not this room's.
+  if (after + 1 < size && tokens_[after].punct == '-' && tokens_[after].sentence == sentence && Cardinal(tokens_[after + 1]) &&
+      (after + 2 >= size || tokens_[after + 2].punct || tokens_[after + 2].sentence != sentence)) {
+    int heading = m.first;
+    while (heading > 0 && tokens_[heading - 1].sentence == sentence && tokens_[heading - 1].punct != ':') --heading;
+    int in_list = determined && m.counting ? std::max(m.min, 0) : 1;
+    for (const Mention& o : mentions_)
+      if (o.first >= heading && o.last < m.first && tokens_[o.first].sentence == sentence) in_list += o.counting ? std::max(o.min, 0) : 1;
+    if (in_list >= 2 && in_list == *Cardinal(tokens_[after + 1])) {
+      Consume(after, after + 1);
+      after = size;  // no count after the noun
+    }
+  }
   if (const auto count = trailing()) {
     m.counting = true;
     m.min = m.max = count->first;
@@ -3145,7 +3197,11 @@ void Parser::Finish(Brief& brief) {
     }
     for (const auto& c : connections_)
       if ((c.a == static_cast<int>(mi) || c.b == static_cast<int>(mi)) && c.kind == LinkKind::kOpen) has_open_link = true;
-    if (item.ensuite && !has_bedroom_link && m.max != 0) {
+    // ("The en-suite only needs a shower" after "master bedroom with en-suite": that one, linked already.)
+    const bool named_before = m.definite && !m.counting && std::any_of(mentions_.begin(), mentions_.begin() + static_cast<long>(mi), [&](const Mention& o) {
+      return o.counting && o.max != 0 && items_[o.item].ensuite;
+    });
+    if (item.ensuite && !has_bedroom_link && m.max != 0 && !named_before) {
       BriefConnection bc;
       bc.level = levels.size() == 1 ? levels[0] : kAnyLevel;
       bc.every = m.every;
@@ -3362,6 +3418,20 @@ void Parser::UsedAs() {
 // keeps nothing but its floor, when the new one names none).
 void Parser::Corrections() {
   const int size = static_cast<int>(tokens_.size());
+  // "Three floors - actually two is plenty": a bare count after a second thought, right after a floor
+  // count and followed by no room, is the floors'.
+  for (int i = 0; i + 2 < size; ++i) {
+    if (!In(tokens_[i], {"actually", "wait", "sorry", "no"})) continue;
+    int n = i + 1;
+    while (n < size && (tokens_[n].punct == ',' || In(tokens_[n], {"wait", "actually"}))) ++n;
+    if (n + 1 >= size || tokens_[n].item >= 0 || !Cardinal(tokens_[n]) || !In(tokens_[n + 1], {"is", "will", "would", "should", "are"})) continue;
+    Item* floors = nullptr;
+    for (Item& it : items_)
+      if (it.kind == ItemKind::kFloorCount && it.last < i && tokens_[it.last].sentence + 1 >= tokens_[i].sentence) floors = &it;
+    if (!floors) continue;
+    floors->floors = *Cardinal(tokens_[n]);
+    Consume(i, n + 1);
+  }
   // Where "make that", "make it", "change that to" ends, for each such phrase.
   std::vector<int> cues;
   for (int i = 0; i + 1 < size; ++i) {
@@ -3376,6 +3446,9 @@ void Parser::Corrections() {
     if (dash_before && tokens_[i].word == "well" && tokens_[i + 1].punct == ',') cues.push_back(i + 1);
     if (tokens_[i].word == "or" && tokens_[i + 1].word == "rather") cues.push_back(i + 1);
     if (dash_before && tokens_[i].word == "i" && tokens_[i + 1].word == "mean") cues.push_back(i + 1);
+    // "two bedrooms, each with a balcony - hmm, actually just one shared balcony"
+    if (tokens_[i].word == "actually" && i > 0 && (tokens_[i - 1].punct == '-' || tokens_[i - 1].punct == ',' || In(tokens_[i - 1], {"hmm", "no"})))
+      cues.push_back(i);
     // "two kids' rooms - no, three", "six chairs... sorry, eight", "three floors, no wait, two": a bare
     // count right after "no" / "sorry" / "wait" that follows a break.
     const bool broken = i > 0 && (tokens_[i - 1].punct == '-' || tokens_[i - 1].punct == ',' || tokens_[i - 1].punct == '.' ||
@@ -3426,6 +3499,7 @@ void Parser::Corrections() {
       if (!old) continue;
       old->counting = false;
       old->definite = true;
+      old->spread = false;
       if (m.ref < 0) m.ref = old->ref;
       any = true;
     }
@@ -3440,8 +3514,10 @@ void Parser::Corrections() {
     if (k >= size || tokens_[k].item < 0 || items_[tokens_[k].item].kind != ItemKind::kRoom) continue;
     const int from = MentionOfItem(tokens_[k].item);
     int j = items_[tokens_[k].item].last + 1;
-    if (from < 0 || j >= size || !In(tokens_[j], {"into", "to"})) continue;
-    int y = j + 1;
+    // ("make the office a nursery instead")
+    const bool make_a = tokens_[i].word == "make" && j < size && In(tokens_[j], {"a", "an"});
+    if (from < 0 || j >= size || !(In(tokens_[j], {"into", "to"}) || make_a)) continue;
+    int y = make_a ? j : j + 1;
     while (y < size && In(tokens_[y], {"a", "an"})) ++y;
     if (y >= size || tokens_[y].item < 0 || items_[tokens_[y].item].kind != ItemKind::kRoom ||
         items_[tokens_[y].item].category == mentions_[from].category)
@@ -3505,7 +3581,10 @@ void Parser::Corrections() {
     const bool ends = i + 1 == size || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence;
     if ((In(t, {"actually", "wait", "sorry"}) && i + 1 < size && tokens_[i + 1].word == "no") ||
         (In(t, {"thought", "thoughts"}) && i > 0 && tokens_[i - 1].word == "second") ||
-        (t.word == "after" && i + 1 < size && tokens_[i + 1].word == "all" && (i + 2 == size || tokens_[i + 2].punct)) || (t.word == "instead" && (ends || (i + 1 < size && tokens_[i + 1].word == "of"))))
+        (t.word == "after" && i + 1 < size && tokens_[i + 1].word == "all" && (i + 2 == size || tokens_[i + 2].punct)) || (t.word == "instead" && (ends || (i + 1 < size && In(tokens_[i + 1], {"of", "make"})))) ||
+        // "scratch the rug": a piece taken back (the furnishing's to read)
+        (In(t, {"scratch", "forget", "drop", "skip"}) && i + 2 < size && In(tokens_[i + 1], {"the", "that"}) && tokens_[i + 2].item >= 0 &&
+         items_[tokens_[i + 2].item].kind == ItemKind::kFurniture))
       tokens_[i].consumed = true;
   }
 }
@@ -3529,6 +3608,11 @@ void Parser::RoomTotals() {
     if ((In(tokens_[i + 1], {"rooms"}) && listed == *n) || (per_floor && listed == *n * floors))
       tokens_[i].consumed = true;
   }
+  // "Each of the 3 bedrooms: 1 bed": the rooms counted before, each furnished.
+  for (int i = 3; i + 1 < size; ++i)
+    if (Cardinal(tokens_[i]) && !tokens_[i].consumed && tokens_[i - 1].word == "the" && tokens_[i - 2].word == "of" &&
+        In(tokens_[i - 3], {"each", "all", "both", "every"}) && tokens_[i + 1].item >= 0 && items_[tokens_[i + 1].item].kind == ItemKind::kRoom)
+      tokens_[i].consumed = true;
   // "1st floor: 2 bedrooms + 1 bathroom + 1 balcony (4)": the rooms of the list counted in brackets.
   for (int i = 1; i + 1 < size; ++i) {
     const std::optional<int> n = Cardinal(tokens_[i]);
@@ -3549,6 +3633,17 @@ void Parser::RoomTotals() {
 // room named before is no total, and en-suites are rooms of their own).
 void Parser::FloorsOfTotals() {
   const int size = static_cast<int>(tokens_.size());
+  // "a house with bedrooms for the two founders ... Top floor: 2 bedrooms": the plural without a number
+  // is the rooms counted after it.
+  for (Mention& m : mentions_) {
+    if (!m.counting || !m.plural || m.max != -1 || m.ref >= 0 || m.spread || Cardinal(tokens_[m.first])) continue;
+    const bool counted_after = std::any_of(mentions_.begin(), mentions_.end(), [&](const Mention& o) {
+      return &o != &m && o.first > m.last && o.counting && o.category == m.category && o.min == o.max && o.min > 0;
+    });
+    if (!counted_after) continue;
+    m.counting = false;
+    m.definite = true;
+  }
   // The floors first, the total after: "1st floor: ... 1 balcony. 2nd floor: ... 1 balcony. That's 2
   // balconies total": the rooms placed on the floors, counted again, not two more.
   for (Mention& m : mentions_) {

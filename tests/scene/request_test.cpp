@@ -374,3 +374,12 @@ TEST_CASE("a sixth unseen set: misspelt pieces, rooms of notes, pieces moved by 
   CHECK(Named(ParseRoomRequest(kids, Category::kChildrenRoom, 2), "desk") != nullptr);
   CHECK(Named(ParseRoomRequest(kids, Category::kBedroom), "desk") == nullptr);
 }
+
+TEST_CASE("a seventh unseen set: notes' each, a fixture in a sentence naming another room", "[scene][request]") {
+  CHECK(Named(ParseRoomRequest("Bungalow. 2 bdrm, kit, bath. Wardobe in ea bdrm.", Category::kBedroom, 2), "wardrobe") != nullptr);
+  // "Walk-in shower rather than a bath" in a sentence naming no room, after a study: the shower room's.
+  const std::string mum = "She needs a sitting room, a kitchen, her bedroom, a shower room and a small study. Walk-in shower rather "
+                          "than a bath, please, and a comfy armchair in the sitting room.";
+  CHECK(Named(ParseRoomRequest(mum, Category::kBathroom), "shower") != nullptr);
+  CHECK(Named(ParseRoomRequest(mum, Category::kOffice), "shower") == nullptr);
+}

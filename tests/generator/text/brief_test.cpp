@@ -1033,4 +1033,43 @@ TEST_CASE("the sixth unseen set: furnishing counts after a heading, rooms for th
   CHECK(Exact(ParseBrief("A bungalow: bedroom, kitchen, shower."), Category::kBathroom) == 1);
 }
 
+TEST_CASE("the seventh unseen set: the requester's bedroom, list totals after a dash, rooms said again, floors taken back", "[issue32]") {
+  // "our bedroom, a guest bedroom", "her bedroom, a spare bedroom": two.
+  CHECK(Exact(ParseBrief("Two floors. Downstairs: kitchen, living room. Upstairs: our bedroom, a guest bedroom, one bathroom."),
+              Category::kBedroom, 1) == 2);
+  CHECK(Exact(ParseBrief("A bungalow: a sitting room, a kitchen, her bedroom, a spare bedroom and a shower room."), Category::kBedroom) == 2);
+  // After bedrooms counted, "our bedroom" is one of them.
+  CHECK(Exact(ParseBrief("Three bedrooms and a kitchen. Our bedroom should be quiet."), Category::kBedroom) == 3);
+  // "ea", a count after a dash that is the list's, "each of the 3", "per bathroom" after a piece.
+  const Brief notes = ParseBrief("3 levels, 12 rooms. Level 0 (ground): kitchen, living room, dining room, bathroom - 4. Level 1: 3 "
+                                 "bedrooms + 1 bathroom - 4. Level 2: office, meeting room, bathroom, balcony - 4. Each of the 3 "
+                                 "bedrooms: 1 bed. 1 mirror per bathroom. Mirror in ea bath.");
+  INFO(BriefToJson(notes).dump(1));
+  CHECK(Exact(notes, Category::kBathroom, 0) == 1);
+  CHECK(Exact(notes, Category::kBalcony, 2) == 1);
+  CHECK(Exact(notes, Category::kBathroom) == -100);
+  CHECK(notes.unparsed.empty());
+  // "the family bathroom" of the list, named again; "The en-suite" of the master bedroom, not every bedroom's.
+  const Brief family = ParseBrief("Ground floor: lounge, kitchen, a downstairs loo. First floor: master bedroom with en-suite, two "
+                                  "further bedrooms and a family bathroom. Fitted wardrobe in every bedroom. The en-suite only needs a "
+                                  "shower, but the family bathroom must have a proper bath.");
+  INFO(BriefToJson(family).dump(1));
+  CHECK(Exact(family, Category::kBathroom, 1) == 2);
+  CHECK(Exact(family, Category::kBathroom) == -100);
+  CHECK(family.connections.size() == 1);
+  CHECK(family.unparsed.empty());
+  // "the heart of it" is no footprint; "so two beds" after bunk beds are pieces; "master suite - bedroom".
+  CHECK_FALSE(ParseBrief("A living room, a kitchen. The living room is the heart of it.").unsupported_shape.has_value());
+  CHECK(ParseBrief("A heart-shaped house with a kitchen.").unsupported_shape.has_value());
+  CHECK(Exact(ParseBrief("Two bedrooms and a kids' room. Bunk beds in the kids' room, so two beds."), Category::kBedroom) == 2);
+  CHECK(Exact(ParseBrief("Second floor: master suite - bedroom plus its own bathroom - and a home office."), Category::kBedroom, 1) == 1);
+  // Second thoughts: a floor count, a balcony each taken back, a plural said before its numbers.
+  CHECK(ParseBrief("Three floors - actually two is plenty. Ground floor: kitchen. Upstairs: 3 bedrooms.").floors == 2);
+  const Brief balcony = ParseBrief("Two floors. Upstairs: two bedrooms, each with a balcony - hmm, actually just one shared balcony.");
+  INFO(BriefToJson(balcony).dump(1));
+  CHECK(Exact(balcony, Category::kBalcony, 1) == 1);
+  CHECK(Exact(ParseBrief("A house with bedrooms for the two founders. 3 floors. Ground floor: kitchen. Top floor: 2 bedrooms."),
+              Category::kBedroom) == -100);
+}
+
 }  // namespace villa
