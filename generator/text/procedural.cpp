@@ -403,7 +403,7 @@ void PlanProcedural(const Brief& brief, const PlanOptions& options, PlanSummary&
   };
   for (int a = 0; a < options.max_attempts; ++a) {
     if (a > 0 && Clock::now() >= deadline) break;
-    if (since_goal >= 0 && ++since_goal > 40) break;  // a tidier layout is not worth a long search
+    if (since_goal >= 0 && ++since_goal > 12) break;  // a tidier layout is not worth a long search (issue 32: under 50 ms)
     if (best && best_met < goal && a - last_improve > stall) break;
     const int f = floors[static_cast<std::size_t>(a) % floors.size()];
     const bool only_required = ((a / static_cast<int>(floors.size())) % 2 == 0) == prefer_only_required;
