@@ -1495,6 +1495,12 @@ int Parser::TryRoom(std::size_t i, Item& item) {
   if (best == 1 && t.word == "master" && i + 1 < tokens_.size() && !tokens_[i + 1].punct &&
       !In(tokens_[i + 1], {"and", "or", "with", "on", "upstairs", "has", "is"}))
     return 0;
+  // "tired of renting office space": the space rented elsewhere, not a room of the house.
+  if (best == 1 && t.word == "office" && i + 1 < tokens_.size() && tokens_[i + 1].word == "space" && i > 0 &&
+      In(tokens_[i - 1], {"renting", "rent", "rented", "leasing", "lease", "shared", "coworking"})) {
+    tokens_[i].consumed = tokens_[i + 1].consumed = true;
+    return 0;
+  }
   // "nobody is living out of a suitcase": the verb, not a room.
   if (best == 1 && t.word == "living" && i > 0 && In(tokens_[i - 1], {"is", "are", "am", "be", "been", "was", "were", "not", "start", "keep", "stop"}))
     return 0;

@@ -1070,6 +1070,9 @@ TEST_CASE("the seventh unseen set: the requester's bedroom, list totals after a 
   CHECK(Exact(balcony, Category::kBalcony, 1) == 1);
   CHECK(Exact(ParseBrief("A house with bedrooms for the two founders. 3 floors. Ground floor: kitchen. Top floor: 2 bedrooms."),
               Category::kBedroom) == -100);
+  // Office space rented elsewhere is no room of the house.
+  CHECK(Exact(ParseBrief("We're tired of renting office space, so we want a home with an office, a kitchen and a bedroom."),
+              Category::kOffice) == 1);
 }
 
 }  // namespace villa
