@@ -146,24 +146,10 @@ std::vector<Token> Misspellings(std::vector<Token> tokens) {
     for (const RoomWord& r : kRoomWords) add(r.words);
     return out;
   }();
-  auto ends = [](const std::string& w, std::string_view tail) {
-    return w.size() > tail.size() && w.compare(w.size() - tail.size(), tail.size(), tail) == 0;
-  };
   for (Token& t : tokens) {
-    if (t.word == "ea") t.word = "each";  // notes: "Wardrobe in ea bdrm"
-    if (t.word.size() < 7 || ends(t.word, "ed") || ends(t.word, "ing") || CategoryForWord(t.word) || RoomOf(t.word)) continue;
-    std::string match;
-    int near = 0;
-    bool plural = false;
-    for (const std::string& name : names) {
-      const bool one = OneEditApart(t.word, name), many = OneEditApart(t.word, name + "s");
-      if ((one || many) && name != match) {
-        match = name;
-        plural = many && (!one || t.word.back() == 's');  // "bookcaes": one edit from both, the plural meant
-        ++near;
-      }
-    }
-    if (near == 1) t.word = plural ? match + "s" : match;
+    if (t.word == "ea") t.word = "each";  // (notes' short form: "Wardrobe in ea bdrm")
+    if (!MaybeMisspeltNoun(t.word) || CategoryForWord(t.word) || RoomOf(t.word)) continue;
+    if (std::optional<std::string> meant = OneEditFrom(t.word, names)) t.word = std::move(*meant);
   }
   return tokens;
 }

@@ -1008,8 +1008,9 @@ struct RoomSolver::Impl {
     const int hub = GroupMembership(state, i).hub;
     auto keeps = [&](int k) {
       const Priority q = state.objects[k].priority;
-      const bool sibling = state.objects[k].category == state.objects[i].category || (hub >= 0 && GroupMembership(state, k).hub == hub);
-      return IsProtected(q) && !(essential && q == Priority::kNamed && !sibling);
+      if (!IsProtected(q)) return false;
+      if (!essential || q != Priority::kNamed) return true;
+      return state.objects[k].category == state.objects[i].category || (hub >= 0 && GroupMembership(state, k).hub == hub);
     };
     for (size_t k = 0; k < state.objects.size(); ++k) {
       const int kk = static_cast<int>(k);

@@ -16,4 +16,19 @@ bool OneEditApart(std::string_view a, std::string_view b) {
                : a.substr(i + 1) == b.substr(i);  // one too many
 }
 
+bool MaybeMisspeltNoun(std::string_view word) {
+  return word.size() >= 7 && !word.ends_with("ed") && !word.ends_with("ing");
+}
+
+std::optional<std::string> OneEditFrom(std::string_view word, const std::vector<std::string>& names) {
+  std::optional<std::string> found;
+  for (const std::string& name : names) {
+    const bool one = OneEditApart(word, name), many = OneEditApart(word, name + "s");
+    if (!one && !many) continue;
+    if (found) return std::nullopt;  // near two names
+    found = many && (!one || word.ends_with('s')) ? name + "s" : name;
+  }
+  return found;
+}
+
 }  // namespace villa

@@ -469,9 +469,6 @@ const std::vector<RoomWord>& RoomLexicon() {
   return lexicon;
 }
 
-// Edit distance of at most one between a and b, a transposition counting as one ("bedroms", "bathrom",
-// "balcny", "bedorom").
-
 // "two rooms for the kids", "a room for the grandchildren when they come": children's rooms, written
 // as "two kids rooms" for the parser to count.
 std::vector<Token> RoomsForChildren(const std::vector<Token>& tokens) {
@@ -786,11 +783,19 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
     for (const auto& [w, c] : names) words.insert(w);
     return words;
   }();
-  auto known_furniture = [](const Token& t) {
-    for (const auto& words : FurnitureLexicon())
-      if (words.size() == 1 && (words[0] == t.word || words[0] == t.stem)) return true;
-    return false;
-  };
+  // The lexicon's one-word pieces a misspelling may be read as ("dishwaser", "wardorbe", "bookcaes").
+  static const std::vector<std::string> pieces = [] {
+    std::vector<std::string> words;
+    for (const auto& phrase : FurnitureLexicon())
+      if (phrase.size() == 1 && phrase[0].size() >= 7) words.push_back(phrase[0]);
+    return words;
+  }();
+  static const std::unordered_set<std::string> one_word_pieces = [] {
+    std::unordered_set<std::string> words;
+    for (const auto& phrase : FurnitureLexicon())
+      if (phrase.size() == 1) words.insert(phrase[0]);
+    return words;
+  }();
   for (Token& t : out) {
     // (Words of their own are no misspellings: "double" beside the plural "doubles", "single".)
     if (t.punct || t.number || t.word.size() < 5 || known.count(t.stem) || known.count(t.word) || known.count(t.word + "s") ||
@@ -819,23 +824,11 @@ std::vector<Token> Normalised(std::vector<Token> tokens) {
       t.word = plural ? match + "s" : match;
       continue;
     }
-    // A piece of furniture's name ("dishwaser", "wardorbe", "bookcaes"), when one name is that near.
-    // (Seven letters or more, and no verb forms: "dressed" is no dresser.)
-    auto ends = [&](std::string_view tail) { return t.word.size() > tail.size() && t.word.compare(t.word.size() - tail.size(), tail.size(), tail) == 0; };
-    if (category || t.word.size() < 7 || ends("ed") || ends("ing")) continue;
-    std::string piece;
-    int near = 0;
-    for (const auto& words : FurnitureLexicon())
-      if (words.size() == 1 && words[0].size() >= 7 && !known_furniture(t))
-        for (const std::string& form : {t.word, t.stem})
-          if ((OneEditApart(form, words[0]) || OneEditApart(form, words[0] + "s")) && piece != words[0]) {
-            piece = words[0];
-            ++near;
-          }
-    if (near == 1) {
-      const bool plural = !OneEditApart(t.word, piece) && !OneEditApart(t.stem, piece);
-      t.stem = piece;
-      t.word = plural ? piece + "s" : piece;
+    // A piece of furniture's name, when one is that near (util/spelling.h).
+    if (category || !MaybeMisspeltNoun(t.word) || one_word_pieces.count(t.word) || one_word_pieces.count(t.stem)) continue;
+    if (std::optional<std::string> meant = OneEditFrom(t.word, pieces)) {
+      t.stem = Singular(*meant);
+      t.word = std::move(*meant);
     }
   }
   return out;
@@ -2045,47 +2038,41 @@ void Parser::Quantify(Mention& m) {
           if (In(tokens_[q], words)) return true;
         return false;
       };
-      if (t->word == "the" && item.category == Category::kBedroom && has(item.first, item.last, {"master", "main", "primary", "principal"})) {
-        bool others = false, all_guest = true;
+      // Whether any room of `c` was counted before, and whether every one counted is `lesser` (a guest
+      // bedroom, a WC or an en-suite): then the named room is one more, not one of them.
+      auto only_lesser_before = [&](Category c, auto&& lesser) {
+        bool any = false, all = true;
         for (const Mention& o : mentions_)
-          if (o.category == Category::kBedroom && o.counting && o.max != 0) {
-            others = true;
-            all_guest = all_guest && has(o.first, o.last, {"guest", "spare"});
+          if (o.category == c && o.counting && o.max != 0) {
+            any = true;
+            all = all && lesser(o);
           }
-        if (others && all_guest) {
-          m.definite = false;
-          m.counting = true;
-          m.min = m.max = 1;
-        }
+        return std::pair{any, all};
+      };
+      auto guest = [&](const Mention& o) { return has(o.first, o.last, {"guest", "spare"}); };
+      auto small = [&](const Mention& o) {
+        return items_[o.item].ensuite || has(o.first, o.last, {"wc", "loo", "toilet", "powder", "cloakroom", "lavatory"});
+      };
+      bool one_more = false;
+      if (t->word == "the" && item.category == Category::kBedroom && has(item.first, item.last, {"master", "main", "primary", "principal"})) {
+        const auto [any, all] = only_lesser_before(Category::kBedroom, guest);
+        one_more = any && all;
       }
       // "Upstairs should be our bedroom, a guest bedroom ...", "her bedroom, a spare bedroom": the bedroom of
       // the people asking is a room of the list (none but guest rooms counted before it); after bedrooms
       // counted, "our bedroom" is one of them.
-      if (In(*t, {"our", "my", "her", "his", "their"}) && item.category == Category::kBedroom &&
-          !has(item.first, item.last, {"guest", "spare"})) {
-        bool all_guest = true;
-        for (const Mention& o : mentions_)
-          if (o.category == Category::kBedroom && o.counting && o.max != 0) all_guest = all_guest && has(o.first, o.last, {"guest", "spare"});
-        if (all_guest) {
-          m.definite = false;
-          m.counting = true;
-          m.min = m.max = 1;
-        }
-      }
+      if (In(*t, {"our", "my", "her", "his", "their"}) && item.category == Category::kBedroom && !has(item.first, item.last, {"guest", "spare"}))
+        one_more = only_lesser_before(Category::kBedroom, guest).second;
       // "... a loo. First floor: master bedroom with en-suite, the main bathroom": the family bathroom is
       // neither the en-suite nor the WC named before, so one more.
       if (t->word == "the" && item.category == Category::kBathroom && has(k, item.last, {"main", "family"})) {
-        bool others = false, all_small = true;
-        for (const Mention& o : mentions_)
-          if (o.category == Category::kBathroom && o.counting && o.max != 0) {
-            others = true;
-            all_small = all_small && (items_[o.item].ensuite || has(o.first, o.last, {"wc", "loo", "toilet", "powder", "cloakroom", "lavatory"}));
-          }
-        if (others && all_small) {
-          m.definite = false;
-          m.counting = true;
-          m.min = m.max = 1;
-        }
+        const auto [any, all] = only_lesser_before(Category::kBathroom, small);
+        one_more = any && all;
+      }
+      if (one_more) {
+        m.definite = false;
+        m.counting = true;
+        m.min = m.max = 1;
       }
       // "skip the dining room", "forget the balcony", "no need for the office": none of it.
       if (negated_before(k - 1)) {
@@ -3587,7 +3574,8 @@ void Parser::Corrections() {
     const bool ends = i + 1 == size || tokens_[i + 1].punct || tokens_[i + 1].sentence != t.sentence;
     if ((In(t, {"actually", "wait", "sorry"}) && i + 1 < size && tokens_[i + 1].word == "no") ||
         (In(t, {"thought", "thoughts"}) && i > 0 && tokens_[i - 1].word == "second") ||
-        (t.word == "after" && i + 1 < size && tokens_[i + 1].word == "all" && (i + 2 == size || tokens_[i + 2].punct)) || (t.word == "instead" && (ends || (i + 1 < size && In(tokens_[i + 1], {"of", "make"})))) ||
+        (t.word == "after" && i + 1 < size && tokens_[i + 1].word == "all" && (i + 2 == size || tokens_[i + 2].punct)) ||
+        (t.word == "instead" && (ends || (i + 1 < size && In(tokens_[i + 1], {"of", "make"})))) ||
         // "scratch the rug": a piece taken back (the furnishing's to read)
         (In(t, {"scratch", "forget", "drop", "skip"}) && i + 2 < size && In(tokens_[i + 1], {"the", "that"}) && tokens_[i + 2].item >= 0 &&
          items_[tokens_[i + 2].item].kind == ItemKind::kFurniture))
