@@ -245,8 +245,8 @@ class Planning {
     for (const Wish& w : request.wishes)
       if (w.count == 0) excluded_.insert(std::string(w.category->name));
       else named_.insert(std::string(w.category->name));
-    // "Both children's rooms: 1 bed and 1 desk each": the bed asked for is the room's bed, not one beside
-    // the child's bed of the priors.
+    // "Both children's rooms: 1 bed and 1 desk each": the bed asked for is the room's child's bed (Wishes),
+    // not one more beside it.
     if (room_.category == Category::kChildrenRoom && named_.count("bed")) named_.insert("child-bed");
     Targets();
     Wishes(request);
@@ -672,7 +672,10 @@ class Planning {
     for (int w : order) {
       const Wish& wish = request.wishes[w];
       if (wish.count == 0) continue;
-      const CategoryInfo& info = *wish.category;
+      // A bed asked for in a children's room is the room's child's bed (its sizes, its pillow, the room's
+      // essential), not an adult's bed beside it.
+      const CategoryInfo* child_bed = room_.category == Category::kChildrenRoom && wish.category->name == "bed" ? FindCategory("child-bed") : nullptr;
+      const CategoryInfo& info = child_bed ? *child_bed : *wish.category;
       if (wish.count < 0) {
         notes_.push_back("the request asks for " + std::to_string(wish.count) + " x " + std::string(info.name) +
                          ": a count below zero is no count; none added for it");
