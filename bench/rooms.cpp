@@ -9,6 +9,7 @@
 // --failing lists every room whose check fails and why; --type furnishes only rooms of one type; --text
 // furnishes every villa with that request's wishes; --only furnishes only the villas of those indices (0 is
 // villa-000000). The seed 2027 is the default: no test uses it.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -104,6 +105,7 @@ int main(int argc, char** argv) {
   int reach_rooms = 0, rooms_reachable = 0, reach_zones = 0, zones_reachable = 0, removed = 0;
   physics::StabilityCount stability;
   int starts_inside = 0, physics_removed = 0, furnished_rooms = 0;
+  std::map<std::string, int> physics_taken;  // category: pieces the physics check took out (the first of each removal)
   int beds = 0, short_beds = 0;  // adult beds, and those shorter or narrower than a single (0.9 x 1.95 m)
   double physics_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
@@ -149,6 +151,12 @@ int main(int argc, char** argv) {
           lines.push_back(v.name + " " + o.id + ": starts " + FormatFixed(1000.0 * o.motion.start_depth, 1) + " mm inside " +
                           o.motion.start_against);
     for (const solver::RoomReport& r : furnished->rooms) {
+      if (r.solve)
+        for (const solver::ActionResult& a : r.solve->actions)
+          if (a.status != solver::ActionStatus::kRefused && a.action.reason.rfind("physics:", 0) == 0) {
+            const std::string id = a.action.id, tail = id.substr(id.rfind('/') + 1);
+            ++physics_taken[tail.substr(0, tail.rfind('-'))];
+          }
       if (!r.asked || !r.functional) continue;
       by_type[std::string(CategoryName(r.category))].Add(r);
       total.Add(r);
@@ -177,6 +185,14 @@ int main(int argc, char** argv) {
   std::printf("physics (2 s in Bullet): %d/%d free objects strict (1 cm, 0.1 rad), %d loose (20 cm, 8 deg), %d start inside "
               "another; %d optional pieces that moved taken out; settle %.2f s a room\n",
               stability.strict, stability.free, stability.loose, starts_inside, physics_removed, furnished_rooms ? physics_seconds / furnished_rooms : 0.0);
+  if (!physics_taken.empty()) {
+    std::vector<std::pair<int, std::string>> most;
+    for (const auto& [category, n] : physics_taken) most.push_back({-n, category});
+    std::sort(most.begin(), most.end());
+    std::string line = "taken out by physics, by category:";
+    for (const auto& [n, category] : most) line += " " + category + " " + std::to_string(-n);
+    std::printf("%s\n", line.c_str());
+  }
   if (failing) {
     std::printf("\nrooms whose functional check fails, and objects that start inside another (%zu):\n", lines.size());
     for (const std::string& l : lines) std::printf("  %s\n", l.c_str());

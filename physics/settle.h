@@ -66,8 +66,12 @@ struct SettleResult {
 // The convex parts of a mesh: the vertices of each piece joined through shared vertex indices, open pieces
 // joined where they meet (pieces of fewer than 4 vertices or no volume are dropped); a piece that is a
 // stack of prisms (a tray with a rim; an imported one within 3 degrees and 2 mm) in its convex prisms
-// (mesh/convex_parts.h), not its hull.
-std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh);
+// (mesh/convex_parts.h), not its hull. With `guides`, a piece that does not fill its hull to 90 % (an
+// imported bed in one piece, whose headboard, rails and footboard span a wedge over the mattress) is cut by
+// up to 5 levels of planes across its axes, each at its vertices' or the guide boxes' levels (what starts
+// inside it), where a cut most shrinks the sum of its sides' hulls (by at least 2 litres). Settle cuts only
+// the bodies that another body starts inside, guided by those bodies' boxes.
+std::vector<std::vector<Vec3>> ConnectedPieces(const TriangleMesh& mesh, const std::vector<Box3>* guides = nullptr);
 
 Result<SettleResult> Settle(const std::vector<TriangleMesh>& statics, const std::vector<SettleBody>& bodies,
                             const SettleOptions& options = {});

@@ -869,6 +869,11 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
   // middle left the second none beside it, and it lay mid-bed), turned a quarter where they are too wide.
   const bool at_back = state.objects[b.object].category == "pillow";
   const bool on_bed = at_back && layer.parent >= 0 && OneOf(state.objects[layer.parent].category, {"bed", "child-bed"});
+  // Where a bed's mattress stops 20 cm or more short of its box's head, the model has pillows or a bolster
+  // of its own there (Sweet Home 3D beds): ours lie 10 cm clear of the mattress's end, past their slope (an
+  // imported bed's pillows rise 4 cm within 6 mm of it, and ours started inside them).
+  const double head = on_bed ? 0.5 * state.objects[layer.parent].asset.size.y * layer.frame.scale : 0.0;
+  const double head_gap = on_bed && head - y1 >= 0.2 ? 0.1 : 0.006;
   if (at_back && layer.parent >= 0) {
     int n = 0;
     for (int c : state.children[layer.parent]) n += state.objects[c].category == "pillow";
@@ -879,7 +884,7 @@ std::vector<Candidate> ChildCandidates(const Layer& layer, int self, const RoomS
       const double pitch = (x1 - x0) / n;
       for (int k = 0; k < n; ++k) {
         const double x = std::clamp(x0 + (k + 0.5) * pitch, x0 + ex + 0.006, x1 - ex - 0.006);
-        out.push_back({x, y1 - ey - 0.006, b.p[2], yaw, -1, 0.05 * k + (yaw != 0.0 ? 0.3 : 0.0)});
+        out.push_back({x, y1 - ey - head_gap, b.p[2], yaw, -1, 0.05 * k + (yaw != 0.0 ? 0.3 : 0.0)});
       }
     }
   }

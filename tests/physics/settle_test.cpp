@@ -145,6 +145,32 @@ TEST_CASE("A tray modelled as one piece holds what lies in it: its convex parts,
   CHECK(settled->bodies[0].strict);
 }
 
+TEST_CASE("A bed modelled in one piece holds a pillow at its head: its hollows cut out where the pillow lies", "[physics]") {
+  // A 2 x 1.5 m bed in one closed piece, as imported models are: its profile (a 1 m headboard, a 0.3 m base
+  // and a 0.6 m footboard) extruded across its width, the headboard's top rising 0.2 m toward one side and
+  // bevelled 3 cm toward the bed (no stack of prisms). Its hull is a wedge over the base; the pillow at the head starts 0.4 m inside it.
+  const Ring profile{{0, 0}, {2, 0}, {2, 0.6}, {1.95, 0.6}, {1.95, 0.3}, {0.05, 0.3}, {0.05, 1.0}, {0, 1.0}};
+  const TriangleMesh flat = ExtrudePlan(profile, {}, 0.0, 1.5);
+  TriangleMesh bed;
+  for (const Vec3& v : flat.vertices) bed.vertices.push_back({v.x, v.z, v.y + (v.y > 0.9 ? 0.2 * v.z / 1.5 - (v.x > 0.01 ? 0.03 : 0.0) : 0.0)});
+  for (const auto& t : flat.triangles) bed.AddTriangle(t[0], t[2], t[1]);  // (x, y, z) -> (x, z, y) mirrors
+  REQUIRE(bed.SignedVolume() == Approx(1.5 * (2 * 0.3 + 0.05 * 0.7 + 0.05 * 0.3) + 0.05 * 0.1 * 1.5 - 0.5 * 0.05 * 0.03 * 1.5).epsilon(1e-6));
+  REQUIRE(ConnectedPieces(bed).size() == 1);  // uncut: its hull
+  const TriangleMesh pillow = Box({0.1, 0.5, 0.3}, {0.6, 1.0, 0.45});
+  const std::vector<Box3> guides{pillow.Bounds()};
+  const auto parts = ConnectedPieces(bed, &guides);
+  CHECK(parts.size() >= 3);  // headboard, base, footboard at least
+  CHECK(parts.size() <= 32);
+  auto settled = Settle(kFloor, {Body("bed", bed), Body("pillow", pillow)});
+  REQUIRE(settled.ok());
+  const SettleResult& r = *settled;
+  CHECK(r.bodies[0].parts == static_cast<int>(parts.size()));  // the settle cut the bed the pillow starts in
+  CHECK(r.bodies[1].start_depth < 0.002);
+  CHECK(r.starts_inside == 0);
+  CHECK(r.bodies[0].strict);
+  CHECK(r.bodies[1].strict);
+}
+
 TEST_CASE("A washbasin against a wall is welded (plumbed and bolted), the toilet beside it is free", "[physics][cli]") {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("villa_physics_weld_" + std::to_string(::getpid()));
   const testing::CliRun furnished =

@@ -18,6 +18,8 @@ std::shared_ptr<AssetMesh> Wrap(TriangleMesh mesh) {
   return asset;
 }
 
+}  // namespace
+
 ProblemObject Make(const std::string& name, AssetRecord record, TriangleMesh mesh) {
   ProblemObject o;
   o.id = "r/" + name;
@@ -26,6 +28,8 @@ ProblemObject Make(const std::string& name, AssetRecord record, TriangleMesh mes
   o.mesh = Wrap(std::move(mesh));
   return o;
 }
+
+namespace {
 
 // A wall slab outside the free floor along a -> b (room on the left), clear height tall, reaching round
 // the convex corners at its ends (so the slabs close the room) but not past an inner corner.

@@ -17,6 +17,8 @@ TriangleMesh BoxMesh(Vec3 min, Vec3 max);
 AssetRecord BoxRecord(const std::string& category, double w, double d, double h, bool top = false, double top_clear = 0.6);
 
 // Objects. Ids are "<room>/<name>" with room "r".
+// An object of `record` and `mesh` (its category the record's).
+ProblemObject Make(const std::string& name, AssetRecord record, TriangleMesh mesh);
 ProblemObject BoxObject(const std::string& name, double w, double d, double h, bool top = false);
 // A table: a 4 cm top and four 5 cm legs; support surface = the top.
 ProblemObject TableObject(const std::string& name, double w, double d, double h);
