@@ -198,24 +198,22 @@ void CutIntoHulls(const Soup& soup, const std::array<Vec3, 3>& axes, const std::
                   int depth, double enough, std::vector<std::vector<Vec3>>& out) {
   const CutCost whole = HullCost(CornersOf(soup, 300), probes);
   CutCost best = whole;
-  Vec3 best_axis;
-  double best_at = 0.0;
+  std::pair<Soup, Soup> best_sides;  // the best cut's two sides, kept
   if (depth > 0 && whole.volume > enough) {
     for (const Vec3& axis : axes)
       for (double at : CutLevels(soup, axis, guides, 8)) {
-        const auto [below, above] = CutSoup(soup, axis, at);
-        const CutCost a = HullCost(CornersOf(below, 300), probes), b = HullCost(CornersOf(above, 300), probes);
+        std::pair<Soup, Soup> sides = CutSoup(soup, axis, at);
+        const CutCost a = HullCost(CornersOf(sides.first, 300), probes), b = HullCost(CornersOf(sides.second, 300), probes);
         const CutCost sum{a.held + b.held, a.volume + b.volume};
-        if (sum < best) best = sum, best_axis = axis, best_at = at;
+        if (sum < best) best = sum, best_sides = std::move(sides);
       }
   }
   if (best.held == whole.held && whole.volume - best.volume < enough) {
     out.push_back(CornersOf(soup));
     return;
   }
-  const auto [below, above] = CutSoup(soup, best_axis, best_at);
-  CutIntoHulls(below, axes, guides, probes, depth - 1, enough, out);
-  CutIntoHulls(above, axes, guides, probes, depth - 1, enough, out);
+  CutIntoHulls(best_sides.first, axes, guides, probes, depth - 1, enough, out);
+  CutIntoHulls(best_sides.second, axes, guides, probes, depth - 1, enough, out);
 }
 
 std::vector<std::vector<Vec3>> HullParts(const TriangleMesh& piece, const std::vector<Box3>& guides) {
